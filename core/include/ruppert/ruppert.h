@@ -1,0 +1,242 @@
+// ruppert — 2D quality triangle meshing by Delaunay refinement.
+//
+// This header is the manual. Everything a caller can use is declared here, with the layout of every
+// buffer. Conventions that hold throughout:
+//   * Coordinates are interleaved doubles: points = { x0, y0, x1, y1, ... }.
+//   * Indices are 0-based uint32 unless a field says otherwise.
+//   * Triangles are counter-clockwise (positive orientation in a y-up frame).
+//   * Edge i of triangle t is the edge opposite its vertex triangles[3t+i], i.e. it runs from
+//     triangles[3t+(i+1)%3] to triangles[3t+(i+2)%3]; neighbors[3t+i] is the triangle across it.
+//   * Sentinels are named constants (kNoNeighbor, kNoInputSegment), never bare -1.
+//   * Errors are thrown as ruppert::Error with a stable ErrorCode and a message naming the item
+//     (index and value). Nothing here calls exit() or keeps global state.
+//
+// Chapter references (Cheng, Dey & Shewchuk, "Delaunay Mesh Generation", ch. 6) are given as §6.x.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <iosfwd>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ruppert {
+
+// ---------------------------------------------------------------------------------------------
+// Sentinels
+// ---------------------------------------------------------------------------------------------
+inline constexpr std::int32_t kNoNeighbor = -1;      // neighbors[]: edge on the domain boundary
+inline constexpr std::int32_t kNoInputSegment = -1;  // segmentIds[]: convex-hull edge added by us
+inline constexpr std::uint64_t kAutoSteinerBudget = std::numeric_limits<std::uint64_t>::max();
+
+// ---------------------------------------------------------------------------------------------
+// Errors
+// ---------------------------------------------------------------------------------------------
+enum class ErrorCode : int {
+  EmptyInput = 1,          // no points at all
+  NonFiniteCoordinate,     // NaN or +-Inf in points, holes or regions
+  CoordinateRange,         // a coordinate whose magnitude the exact predicates cannot handle
+  IndexOutOfRange,         // a segment refers to a point that does not exist
+  DegenerateInput,         // fewer than 3 distinct points, or all points collinear
+  HoleOnSegment,           // a hole seed lies exactly on a segment or vertex
+  InvalidRegion,           // a region with NaN/negative max area, or seed on a segment
+  InvalidOption,           // min angle out of [0, 60], negative max area, ...
+  ParseError,              // malformed .poly/.node/.json text (line and field named)
+  IoError,                 // a file could not be read or written
+  TooLarge,                // a count that cannot be allocated (e.g. 10^12 points declared)
+  Cancelled,               // the progress callback asked to stop (only thrown before a mesh exists)
+  MalformedInput,          // wrong shape: odd-length coordinate arrays, non-integer indices, wrong types
+  Internal,                // a bug: please report the input
+};
+
+// Stable upper-case name, e.g. "INDEX_OUT_OF_RANGE"; used as MeshError.code in JavaScript.
+const char* errorCodeName(ErrorCode code);
+
+class Error : public std::runtime_error {
+ public:
+  Error(ErrorCode code, const std::string& message) : std::runtime_error(message), code_(code) {}
+  ErrorCode code() const { return code_; }
+
+ private:
+  ErrorCode code_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Input: a planar straight-line graph (PLC)
+// ---------------------------------------------------------------------------------------------
+struct Region {
+  double x = 0, y = 0;      // seed point inside the region
+  double attribute = 0;     // copied to every triangle of the region (Mesh::triangleAttributes)
+  double maxArea = 0;       // <= 0: no area bound in this region; otherwise an upper bound
+};
+
+struct Plc {
+  std::vector<double> points;           // x0, y0, x1, y1, ...
+  std::vector<std::uint32_t> segments;  // a0, b0, a1, b1, ... indices into points
+  std::vector<double> holes;            // hole seeds: hx0, hy0, hx1, hy1, ...
+  std::vector<Region> regions;
+  // Carried through for Triangle-format round trips; may be empty.
+  std::vector<std::int32_t> pointMarkers;    // one per point, or empty
+  std::vector<std::int32_t> segmentMarkers;  // one per segment, or empty
+  int indexBase = 0;  // 0 or 1: the index base the file used; writers print indices in this base
+};
+
+// ---------------------------------------------------------------------------------------------
+// Options
+// ---------------------------------------------------------------------------------------------
+enum class Placement : std::uint8_t {
+  Circumcenter = 0,  // Ruppert's rule (§6.2)
+  OffCenter = 1,     // Üngör's off-centers (§6.8): fewer triangles at the same angle
+};
+
+enum class Variant : std::uint8_t {
+  Constrained = 0,   // constrained Delaunay refinement (§6.7): no triangles outside the domain
+  BoundingBox = 1,   // Ruppert's original: conforming Delaunay mesh of an enclosing box (§6.3, Fig 6.16)
+};
+
+struct Progress {
+  std::uint64_t insertedVertices = 0;
+  std::uint64_t triangles = 0;
+  double worstAngle = 0;  // degrees: smallest angle among triangles still queued as bad
+};
+
+struct Options {
+  // Minimum angle in degrees, in [0, 60]. 0 and maxArea <= 0 and no size function: plain CDT.
+  // Angles up to 60 are accepted; above ~34 completion is not guaranteed and the result says why.
+  double minAngle = 30.0;
+  double maxArea = 0.0;  // <= 0: no global area bound
+  // Optional size field: max triangle area at (x, y); return <= 0 or +inf for "no bound here".
+  std::function<double(double x, double y)> sizeFunction;
+  // Budget of Steiner vertices. kAutoSteinerBudget: a default proportional to the input that
+  // reasonable inputs never reach. Running out is not an error: complete becomes false.
+  std::uint64_t maxSteiner = kAutoSteinerBudget;
+  Placement placement = Placement::OffCenter;
+  Variant variant = Variant::Constrained;
+  bool convexHull = false;  // mesh the whole convex hull, not only what segments enclose
+  bool autoHoles = false;   // with no hole seeds: regions at odd nesting depth are domain, even are holes
+  bool trace = false;       // record Mesh::events (every insertion, for step-by-step replay)
+  // Called every few thousand insertions; return false to stop early (complete=false, "cancelled").
+  std::function<bool(const Progress&)> onProgress;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Output
+// ---------------------------------------------------------------------------------------------
+enum class VertexKind : std::uint8_t {
+  Input = 0,         // an input point that the mesh uses
+  SegmentSplit = 1,  // inserted on a segment (encroachment midpoint or concentric-shell split)
+  Interior = 2,      // circumcenter of a skinny or large triangle
+  OffCenter = 3,     // off-center of a skinny triangle (§6.8)
+  Intersection = 4,  // where two input segments cross (repair of the input)
+  Unused = 5,        // an input point no triangle uses: a merged duplicate, or outside the domain
+};
+
+// What the input repair did; the mesh is valid, but the caller should know.
+enum class NoticeKind : std::uint8_t {
+  DuplicatePoint,      // a = duplicate point index, b = the point it was merged into
+  ZeroLengthSegment,   // a = segment index (dropped)
+  DuplicateSegment,    // a = segment index, b = the earlier identical segment (dropped)
+  VertexOnSegment,     // a = segment index, b = point index lying in its interior (split there)
+  SegmentsCross,       // a, b = the two segment indices; x, y = the crossing point (both split)
+  SegmentsOverlap,     // a, b = the two segment indices sharing a collinear piece
+  HoleOutsideDomain,   // a = hole index: it lies outside the domain and removes nothing
+  RegionOutsideDomain, // a = region index
+  NothingEnclosed,     // the segments enclose no region: the convex hull was meshed instead
+};
+
+struct Notice {
+  NoticeKind kind;
+  std::int64_t a = -1, b = -1;
+  double x = 0, y = 0;
+  std::string message;  // human-readable, names indices and values
+};
+
+// Why a refinement did not reach every bound.
+enum class ReasonKind : std::uint8_t {
+  SmallInputAngle,  // triangles nestled in an input angle < 60 deg cannot be fixed (§6.6)
+  SeditiousEdge,    // triangles whose shortest edge is seditious are left alone on purpose (§6.6)
+  SteinerBudget,    // maxSteiner reached
+  PrecisionFloor,   // an edge would become shorter than doubles can place points on
+  Cancelled,        // onProgress returned false
+};
+
+struct Reason {
+  ReasonKind kind;
+  std::uint64_t count = 0;  // how many triangles or subsegments remain because of it
+  std::string message;
+};
+
+struct Stats {
+  std::uint64_t vertices = 0;  // vertices used by triangles
+  std::uint64_t triangles = 0;
+  double minAngle = 0, maxAngle = 0;  // degrees, over all triangles
+  std::vector<std::uint64_t> angleHistogram;  // 180 bins of 1 degree over all 3 angles of every triangle
+  std::uint64_t inputVertices = 0, segmentVertices = 0, interiorVertices = 0, offCenterVertices = 0,
+                intersectionVertices = 0;
+  std::uint64_t rejectedCircumcenters = 0;
+  double lfsIntegral = 0;  // estimate of the integral of 1/lfs^2 over the domain (§6.5); 0 if not computed
+  double trianglesPerLfsIntegral = 0;
+  double milliseconds = 0;  // wall time of triangulate()
+};
+
+enum class EventKind : std::uint8_t {
+  SegmentSplit = 0,  // a subsegment (a,b) encroached by vertex `by` was split at (x, y)
+  Circumcenter = 1,  // circumcenter of skinny/large triangle (t0,t1,t2) inserted at (x, y)
+  OffCenter = 2,     // off-center of triangle (t0,t1,t2) inserted at (x, y)
+  Rejected = 3,      // circumcenter (cx, cy) of (t0,t1,t2) encroached subsegment (a,b): it was split at (x, y)
+};
+
+struct Event {
+  EventKind kind;
+  std::uint32_t vertex = 0;          // id of the vertex inserted
+  double x = 0, y = 0;               // where
+  std::uint32_t a = 0, b = 0;        // subsegment endpoints (SegmentSplit, Rejected)
+  std::int64_t by = -1;              // encroaching vertex (SegmentSplit), -1 if none
+  std::uint32_t t0 = 0, t1 = 0, t2 = 0;  // skinny triangle's vertices (Circumcenter, OffCenter, Rejected)
+  double cx = 0, cy = 0;             // rejected circumcenter (Rejected)
+};
+
+struct Mesh {
+  std::vector<double> points;             // input points first, same indices; then new vertices
+  std::vector<std::uint32_t> triangles;   // 3 vertex indices per triangle, CCW
+  std::vector<std::int32_t> neighbors;    // 3 per triangle, see conventions; kNoNeighbor on the boundary
+  std::vector<std::uint32_t> segments;    // 2 per subsegment: every input segment is a chain of these
+  std::vector<std::int32_t> segmentIds;   // 1 per subsegment: input segment index, or kNoInputSegment
+  std::vector<std::uint8_t> vertexKinds;  // 1 per point: VertexKind
+  std::vector<double> triangleAttributes; // 1 per triangle: its region's attribute (0 outside regions)
+  std::vector<std::int32_t> pointMarkers; // 1 per point if the input had markers (new points: 0 / 1 on segments)
+  int indexBase = 0;                      // copied from the input, for writers
+  bool complete = true;                   // every bound met, except the chapter's exemptions
+  std::vector<Reason> reasons;            // why not complete (empty when complete)
+  std::vector<Notice> notices;            // repairs made to the input
+  Stats stats;
+  std::vector<Event> events;              // only with Options::trace
+};
+
+// Mesh a PLC. Throws ruppert::Error on input that cannot be repaired.
+Mesh triangulate(const Plc& plc, const Options& options = {});
+
+// ---------------------------------------------------------------------------------------------
+// Readers and writers (Triangle's .node/.poly/.ele, JSON, SVG)
+// ---------------------------------------------------------------------------------------------
+// .poly: Triangle's format (comments '#', 0- or 1-based indices, attributes, markers, holes, regions).
+Plc readPoly(std::istream& in, const std::string& name = "<poly>");
+// .node: points only (attributes and markers allowed).
+Plc readNode(std::istream& in, const std::string& name = "<node>");
+// JSON: { "points": [x0,y0,...], "segments": [a0,b0,...], "holes": [x,y,...],
+//         "regions": [{"x":..,"y":..,"attribute":..,"maxArea":..}] }
+Plc readJson(std::istream& in, const std::string& name = "<json>");
+// By extension: .poly, .node or .json. Throws IoError if unreadable.
+Plc readFile(const std::string& path);
+
+// Writers print coordinates with 17 significant digits (they read back bit-exact) and indices in
+// mesh.indexBase.
+void writeNode(std::ostream& out, const Mesh& mesh);
+void writeEle(std::ostream& out, const Mesh& mesh);
+void writePoly(std::ostream& out, const Mesh& mesh, const Plc& input);  // subsegments + input holes/regions
+void writeJson(std::ostream& out, const Mesh& mesh, const Plc& input);  // input JSON shape + "triangles" etc.
+void writeSvg(std::ostream& out, const Mesh& mesh);
+
+}  // namespace ruppert

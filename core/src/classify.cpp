@@ -1,0 +1,176 @@
+// Deciding which triangles form the domain (§6.7: the mesh stores no triangles outside it).
+//
+// Flood fills that never cross a constrained edge:
+//   exterior  from the triangles touching the bounding-box corners;
+//   holes     from the triangle containing each hole seed;
+//   autoHoles (no seeds given): nesting depth = number of constrained edges crossed from the exterior
+//             (a 0-1 breadth-first search); odd depth is domain, even depth is a hole;
+//   regions   from each region seed: attribute and max area for every triangle reached.
+// Triangles outside the domain are then deleted and their neighbours' twins cleared, so every
+// boundary edge of what remains is a constrained edge.
+#include <algorithm>
+#include <deque>
+#include <string>
+
+#include "mesh_state.h"
+#include "predicates.h"
+
+namespace ruppert::detail {
+namespace {
+
+void flood(Triangulation& t, std::uint32_t seed, std::vector<std::uint8_t>& out, std::uint8_t value) {
+  std::vector<std::uint32_t> stack{seed};
+  const std::uint8_t before = out[seed];
+  out[seed] = value;
+  while (!stack.empty()) {
+    const std::uint32_t u = stack.back();
+    stack.pop_back();
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t h = 3 * u + i;
+      if (t.con[h] != kFree || t.twin[h] == kNone) continue;
+      const std::uint32_t w = t.twin[h] / 3;
+      if (out[w] != before) continue;
+      out[w] = value;
+      stack.push_back(w);
+    }
+  }
+}
+
+// The triangle containing a seed, or an error if the seed sits on a constrained edge or a vertex.
+std::uint32_t seedTriangle(MeshState& m, double x, double y, ErrorCode code, const std::string& what) {
+  Triangulation& t = m.tri;
+  const double p[2] = {x, y};
+  std::uint32_t start = kNone;
+  for (std::uint32_t s = 0; s < t.slotCount() && start == kNone; ++s)
+    if (t.alive(s)) start = s;
+  const Location loc = t.locate(p, start);
+  switch (loc.kind) {
+    case Location::InTriangle:
+      return loc.tri;
+    case Location::OnEdge:
+      if (t.con[loc.edge] == kFree) return loc.tri;
+      throw Error(code, what + " lies exactly on a segment; move it inside the region it should mark");
+    case Location::OnVertex:
+      throw Error(code, what + " lies exactly on points[" + std::to_string(loc.vertex) + "]");
+    default:
+      return kNone;  // outside the box: certainly outside the domain
+  }
+}
+
+std::string at(const MeshState& m, double x, double y) {
+  return "(" + formatNumber(x / m.input.scale) + ", " + formatNumber(y / m.input.scale) + ")";
+}
+
+}  // namespace
+
+enum : std::uint8_t { kUnknown = 0, kOutside = 1 };
+
+// Marks every triangle outside the domain (exterior, holes, even nesting depth) as kOutside.
+std::vector<std::uint8_t> outsideTriangles(MeshState& m) {
+  Triangulation& t = m.tri;
+  const std::uint32_t slots = t.slotCount();
+  std::vector<std::uint8_t> state(slots, kUnknown);
+  for (std::uint32_t s = 0; s < slots; ++s)
+    if (!t.alive(s)) state[s] = kOutside;
+  for (std::uint32_t s = 0; s < slots; ++s) {
+    if (!t.alive(s) || state[s] != kUnknown) continue;
+    for (int i = 0; i < 3; ++i)
+      if (t.tv[3 * s + i] >= m.boxFirst && t.tv[3 * s + i] < m.boxFirst + 4) {
+        flood(t, s, state, kOutside);
+        break;
+      }
+  }
+  const Plc& plc = *m.plc;
+  const auto& holes = m.input.holes;
+  if (holes.empty() && m.options->autoHoles) {
+    // Depth by 0-1 BFS from the exterior; crossing a constrained edge costs one.
+    std::vector<std::uint32_t> depth(slots, kNone);
+    std::deque<std::uint32_t> dq;
+    for (std::uint32_t s = 0; s < slots; ++s)
+      if (t.alive(s) && state[s] == kOutside) depth[s] = 0, dq.push_back(s);
+    while (!dq.empty()) {
+      const std::uint32_t u = dq.front();
+      dq.pop_front();
+      for (std::uint32_t i = 0; i < 3; ++i) {
+        const std::uint32_t h = 3 * u + i;
+        if (t.twin[h] == kNone) continue;
+        const std::uint32_t w = t.twin[h] / 3;
+        const std::uint32_t d = depth[u] + (t.con[h] != kFree ? 1 : 0);
+        if (d >= depth[w]) continue;
+        depth[w] = d;
+        if (t.con[h] != kFree) dq.push_back(w); else dq.push_front(w);
+      }
+    }
+    for (std::uint32_t s = 0; s < slots; ++s)
+      if (t.alive(s) && state[s] == kUnknown && depth[s] % 2 == 0) state[s] = kOutside;
+  }
+  for (std::size_t k = 0; k < holes.size() / 2; ++k) {
+    const std::string what = "holes[" + std::to_string(k) + "] at " + at(m, holes[2 * k], holes[2 * k + 1]);
+    const std::uint32_t s = seedTriangle(m, holes[2 * k], holes[2 * k + 1], ErrorCode::HoleOnSegment, what);
+    if (s == kNone || state[s] == kOutside) {
+      Notice n{NoticeKind::HoleOutsideDomain, static_cast<std::int64_t>(k), -1, plc.holes[2 * k], plc.holes[2 * k + 1], ""};
+      n.message = what + " is outside the domain; it removes nothing";
+      m.notices.push_back(std::move(n));
+      continue;
+    }
+    flood(t, s, state, kOutside);
+  }
+  return state;
+}
+
+void classifyTriangles(MeshState& m) {
+  Triangulation& t = m.tri;
+  const std::size_t noticesBefore = m.notices.size();
+  std::vector<std::uint8_t> state = outsideTriangles(m);
+  const bool empty = std::find(state.begin(), state.end(), kUnknown) == state.end();
+  if (empty && !m.plc->segments.empty() && !m.options->convexHull) {
+    // Open polylines only (like Triangle's box.poly): an empty mesh helps nobody. Mesh the hull,
+    // with the segments inside it, and say so.
+    m.notices.resize(noticesBefore);
+    insertHull(m);
+    Notice n{NoticeKind::NothingEnclosed, -1, -1, 0, 0,
+             "the segments and holes leave no region enclosed; the convex hull of the points was meshed instead"};
+    m.notices.push_back(std::move(n));
+    state = outsideTriangles(m);
+  }
+  const std::uint32_t slots = t.slotCount();
+  const Plc& plc = *m.plc;
+  m.attribute.assign(slots, 0.0);
+  m.maxArea.assign(slots, m.input.maxArea);
+  std::vector<std::uint8_t> reached(slots, 0);
+  for (std::size_t k = 0; k < m.input.regions.size(); ++k) {
+    const Region& r = m.input.regions[k];
+    const std::string what = "regions[" + std::to_string(k) + "] at " + at(m, r.x, r.y);
+    const std::uint32_t s = seedTriangle(m, r.x, r.y, ErrorCode::InvalidRegion, what);
+    if (s == kNone || state[s] == kOutside) {
+      Notice n{NoticeKind::RegionOutsideDomain, static_cast<std::int64_t>(k), -1, plc.regions[k].x, plc.regions[k].y, ""};
+      n.message = what + " is outside the domain; it has no effect";
+      m.notices.push_back(std::move(n));
+      continue;
+    }
+    std::fill(reached.begin(), reached.end(), 0);
+    flood(t, s, reached, 1);
+    for (std::uint32_t u = 0; u < slots; ++u) {
+      if (!reached[u]) continue;
+      m.attribute[u] = r.attribute;
+      if (r.maxArea > 0) m.maxArea[u] = m.maxArea[u] > 0 ? std::min(m.maxArea[u], r.maxArea) : r.maxArea;
+    }
+  }
+
+  // Delete everything outside; the corners of the box go with it.
+  for (std::uint32_t s = 0; s < slots; ++s) {
+    if (!t.alive(s) || state[s] != kOutside) continue;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t g = t.twin[3 * s + i];
+      if (g != kNone) t.twin[g] = kNone;
+      t.twin[3 * s + i] = kNone;
+    }
+    t.killTriangle(s);
+  }
+  for (std::uint32_t v = 0; v < t.vertexCount(); ++v) t.vtri[v] = kNone;
+  for (std::uint32_t s = 0; s < slots; ++s)
+    if (t.alive(s))
+      for (int i = 0; i < 3; ++i) t.vtri[t.tv[3 * s + i]] = s;
+}
+
+}  // namespace ruppert::detail

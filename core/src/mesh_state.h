@@ -1,0 +1,43 @@
+// Everything the stages (build, constrain, classify, refine, output) share about one meshing run.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "prepare_input.h"
+#include "ruppert/ruppert.h"
+#include "triangulation.h"
+
+namespace ruppert::detail {
+
+struct MeshState {
+  const Plc* plc = nullptr;
+  const Options* options = nullptr;
+  PreparedInput input;
+  Triangulation tri;
+  std::vector<VertexKind> kind;              // per vertex
+  std::vector<std::int32_t> onSegment;       // per vertex: input segment it was inserted on, or -1
+  std::uint32_t inputCount = 0;              // vertices [0, inputCount) are the input points
+  std::uint32_t boxFirst = kNone;            // 4 bounding-box corners start here (kNone: removed)
+  std::vector<Notice> notices;
+  // Per triangle slot, valid after classification.
+  std::vector<double> attribute;
+  std::vector<double> maxArea;               // scaled; 0 = none
+  std::size_t segmentCount() const { return plc->segments.size() / 2; }
+
+  std::uint32_t addVertex(double x, double y, VertexKind k, std::int32_t segment) {
+    kind.push_back(k);
+    onSegment.push_back(segment);
+    return tri.addVertex(x, y);
+  }
+  // Input coordinates of an internal point, for messages.
+  double userX(double x) const { return x / input.scale; }
+};
+
+// Stages, in order.
+void buildDelaunay(MeshState& m);          // box corners + every distinct input point
+void insertHull(MeshState& m);             // convex hull edges as constraints (no segments / convexHull)
+void insertSegments(MeshState& m);         // input segments, repairing crossings and overlaps
+void classifyTriangles(MeshState& m);      // remove exterior and holes; regions' attributes and areas
+
+}  // namespace ruppert::detail

@@ -1,0 +1,186 @@
+#include "prepare_input.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <random>
+#include <string>
+
+#include "predicates.h"
+
+namespace ruppert::detail {
+
+std::string formatNumber(double v) {
+  char buf[40];
+  for (int digits = 6; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    if (std::strtod(buf, nullptr) == v || std::isnan(v)) break;
+  }
+  return buf;
+}
+
+namespace {
+
+[[noreturn]] void fail(ErrorCode code, const std::string& message) { throw Error(code, message); }
+
+void checkOptions(const Options& o) {
+  if (!(o.minAngle >= 0 && o.minAngle <= 60))
+    fail(ErrorCode::InvalidOption, "minAngle = " + formatNumber(o.minAngle) + " is outside [0, 60] degrees");
+  if (std::isnan(o.maxArea) || o.maxArea < 0)
+    fail(ErrorCode::InvalidOption,
+         "maxArea = " + formatNumber(o.maxArea) + " must be a positive area (or 0 for no bound)");
+}
+
+// Hilbert index of (x, y) on a 2^16 x 2^16 grid: consecutive points in this order are close,
+// which keeps point-location walks short.
+std::uint32_t hilbertKey(std::uint32_t x, std::uint32_t y) {
+  std::uint32_t d = 0;
+  for (std::uint32_t s = 1u << 15; s > 0; s >>= 1) {
+    const std::uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
+    d += s * s * ((3 * rx) ^ ry);
+    if (ry == 0) {  // rotate the quadrant so the curve stays continuous
+      if (rx == 1) {
+        x = s - 1 - (x & (s - 1)) + (x & ~(s - 1));
+        y = s - 1 - (y & (s - 1)) + (y & ~(s - 1));
+      }
+      std::swap(x, y);
+    }
+  }
+  return d;
+}
+
+}  // namespace
+
+PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<Notice>& notices) {
+  checkOptions(options);
+  if (plc.points.size() % 2 != 0)
+    fail(ErrorCode::MalformedInput,
+         "points has odd length " + std::to_string(plc.points.size()) + " (expected x0, y0, x1, y1, ...)");
+  if (plc.segments.size() % 2 != 0)
+    fail(ErrorCode::MalformedInput, "segments has odd length " + std::to_string(plc.segments.size()) +
+                                        " (expected a0, b0, a1, b1, ...)");
+  if (plc.holes.size() % 2 != 0)
+    fail(ErrorCode::MalformedInput, "holes has odd length " + std::to_string(plc.holes.size()));
+  const std::size_t n = plc.points.size() / 2;
+  if (n == 0) fail(ErrorCode::EmptyInput, "the input has no points");
+  if (n > 0x3FFFFFFFu) fail(ErrorCode::TooLarge, "too many points: " + std::to_string(n));
+
+  double maxAbs = 0;
+  auto checkFinite = [&](double v, const std::string& what) {
+    if (!std::isfinite(v)) fail(ErrorCode::NonFiniteCoordinate, what + " = " + formatNumber(v) + " is not finite");
+    maxAbs = std::max(maxAbs, std::fabs(v));
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    checkFinite(plc.points[2 * i], "points[" + std::to_string(i) + "].x");
+    checkFinite(plc.points[2 * i + 1], "points[" + std::to_string(i) + "].y");
+  }
+  for (std::size_t k = 0; k < plc.segments.size(); ++k) {
+    if (plc.segments[k] >= n)
+      fail(ErrorCode::IndexOutOfRange, "segments[" + std::to_string(k / 2) + "] refers to point " +
+                                           std::to_string(plc.segments[k]) + " but there are " +
+                                           std::to_string(n) + " points");
+  }
+  for (std::size_t i = 0; i < plc.holes.size() / 2; ++i) {
+    checkFinite(plc.holes[2 * i], "holes[" + std::to_string(i) + "].x");
+    checkFinite(plc.holes[2 * i + 1], "holes[" + std::to_string(i) + "].y");
+  }
+  for (std::size_t i = 0; i < plc.regions.size(); ++i) {
+    const Region& r = plc.regions[i];
+    checkFinite(r.x, "regions[" + std::to_string(i) + "].x");
+    checkFinite(r.y, "regions[" + std::to_string(i) + "].y");
+    if (std::isnan(r.attribute))
+      fail(ErrorCode::InvalidRegion, "regions[" + std::to_string(i) + "].attribute is NaN");
+    if (std::isnan(r.maxArea) || r.maxArea < 0)
+      fail(ErrorCode::InvalidRegion, "regions[" + std::to_string(i) + "].maxArea = " + formatNumber(r.maxArea) +
+                                         " must be a positive area (or 0 for no bound)");
+  }
+
+  PreparedInput out;
+  // Scale by 2^(1-e) where maxAbs = m * 2^e, m in [0.5, 1): the largest magnitude lands in [1, 2).
+  if (maxAbs > 0) {
+    int e = 0;
+    std::frexp(maxAbs, &e);
+    out.scale = std::ldexp(1.0, 1 - e);
+  }
+  auto scaled = [&](double v, const std::string& what) {
+    const double s = v * out.scale;
+    if (!isSafeCoordinate(s))
+      fail(ErrorCode::CoordinateRange,
+           what + " = " + formatNumber(v) + " is nonzero but over 2^128 times smaller than the largest coordinate " +
+               formatNumber(maxAbs) + "; exact arithmetic cannot resolve such a range");
+    return s;
+  };
+  out.xy.resize(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    out.xy[2 * i] = scaled(plc.points[2 * i], "points[" + std::to_string(i) + "].x");
+    out.xy[2 * i + 1] = scaled(plc.points[2 * i + 1], "points[" + std::to_string(i) + "].y");
+  }
+  for (std::size_t i = 0; i < plc.holes.size(); ++i)
+    out.holes.push_back(scaled(plc.holes[i], "holes[" + std::to_string(i / 2) + "]"));
+  for (std::size_t i = 0; i < plc.regions.size(); ++i) {
+    Region r = plc.regions[i];
+    r.x = scaled(r.x, "regions[" + std::to_string(i) + "].x");
+    r.y = scaled(r.y, "regions[" + std::to_string(i) + "].y");
+    r.maxArea = r.maxArea * out.scale * out.scale;
+    out.regions.push_back(r);
+  }
+  out.maxArea = std::isinf(options.maxArea) ? 0 : options.maxArea * out.scale * out.scale;
+
+  // Merge duplicates: sort by coordinates, the lowest index of each run represents it.
+  std::vector<std::uint32_t> order(n);
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    if (out.xy[2 * a] != out.xy[2 * b]) return out.xy[2 * a] < out.xy[2 * b];
+    if (out.xy[2 * a + 1] != out.xy[2 * b + 1]) return out.xy[2 * a + 1] < out.xy[2 * b + 1];
+    return a < b;
+  });
+  out.representative.resize(n);
+  std::vector<std::uint32_t> distinct;
+  distinct.reserve(n);
+  for (std::size_t k = 0; k < n;) {
+    std::size_t j = k + 1;
+    while (j < n && out.xy[2 * order[j]] == out.xy[2 * order[k]] &&
+           out.xy[2 * order[j] + 1] == out.xy[2 * order[k] + 1])
+      ++j;
+    const std::uint32_t rep = order[k];  // lowest index thanks to the tie-break
+    distinct.push_back(rep);
+    for (std::size_t m = k; m < j; ++m) {
+      out.representative[order[m]] = rep;
+      if (order[m] != rep) {
+        Notice nt{NoticeKind::DuplicatePoint, order[m], rep, plc.points[2 * rep], plc.points[2 * rep + 1], ""};
+        nt.message = "points[" + std::to_string(order[m]) + "] duplicates points[" + std::to_string(rep) + "] (" +
+                     formatNumber(nt.x) + ", " + formatNumber(nt.y) + "); merged";
+        notices.push_back(std::move(nt));
+      }
+    }
+    k = j;
+  }
+
+  // Biased randomised insertion order (BRIO): random rounds of doubling size, each sorted along a
+  // Hilbert curve. Randomness bounds the expected work; the curve keeps walks short.
+  std::mt19937_64 rng(0x5EED5EEDull ^ distinct.size());
+  std::shuffle(distinct.begin(), distinct.end(), rng);
+  double minX = HUGE_VAL, minY = HUGE_VAL, maxX = -HUGE_VAL, maxY = -HUGE_VAL;
+  for (std::uint32_t v : distinct) {
+    minX = std::min(minX, out.xy[2 * v]), maxX = std::max(maxX, out.xy[2 * v]);
+    minY = std::min(minY, out.xy[2 * v + 1]), maxY = std::max(maxY, out.xy[2 * v + 1]);
+  }
+  const double span = std::max(maxX - minX, maxY - minY);
+  const double toGrid = span > 0 ? 65535.0 / span : 0;
+  std::vector<std::uint32_t> key(n);
+  for (std::uint32_t v : distinct)
+    key[v] = hilbertKey(static_cast<std::uint32_t>((out.xy[2 * v] - minX) * toGrid),
+                        static_cast<std::uint32_t>((out.xy[2 * v + 1] - minY) * toGrid));
+  std::size_t end = distinct.size();
+  while (end > 0) {
+    const std::size_t begin = end > 256 ? end / 2 : 0;
+    std::sort(distinct.begin() + begin, distinct.begin() + end,
+              [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+    end = begin;
+  }
+  out.insertionOrder = std::move(distinct);
+  return out;
+}
+
+}  // namespace ruppert::detail

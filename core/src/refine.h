@@ -1,0 +1,23 @@
+// Delaunay refinement of a classified constrained Delaunay triangulation (§6.2-6.6, 6.8).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "mesh_state.h"
+
+namespace ruppert::detail {
+
+struct RefineOutcome {
+  std::vector<Reason> reasons;       // empty: every bound met (up to the chapter's exemptions)
+  std::vector<Event> events;         // internal vertex ids and scaled coordinates until mapped
+  std::uint64_t rejected = 0;        // rejected circumcenters / off-centers
+  double lfsIntegral = 0;
+};
+
+// True when the options ask for any refinement (angle, area or size function).
+bool refinementRequested(const MeshState& m);
+
+RefineOutcome refine(MeshState& m);
+
+}  // namespace ruppert::detail

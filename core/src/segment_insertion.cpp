@@ -1,0 +1,256 @@
+// Inserting segments into the triangulation as constrained edges, repairing the input on the way:
+// a vertex lying in a segment's interior splits it there; two segments that cross are both split at
+// their intersection point (a new vertex); collinear overlaps share their common subsegments.
+//
+// One segment a-b at a time: walk from a towards b collecting the edges the segment crosses, then
+// flip them away (Sloan's method: flip any crossing edge whose quadrilateral is strictly convex; the
+// others wait their turn), mark a-b constrained, and restore the constrained Delaunay property by
+// Lawson flips on the edges the flips created.
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "mesh_state.h"
+#include "predicates.h"
+
+namespace ruppert::detail {
+namespace {
+
+struct Task {
+  std::uint32_t a, b;
+  std::int32_t id;
+};
+
+std::string segName(std::int32_t id) { return "segments[" + std::to_string(id) + "]"; }
+
+class SegmentInserter {
+ public:
+  explicit SegmentInserter(MeshState& m) : m_(m), t_(m.tri) {}
+
+  void insert(std::uint32_t a, std::uint32_t b, std::int32_t id) {
+    tasks_.push_back({a, b, id});
+    while (!tasks_.empty()) {
+      const Task task = tasks_.back();
+      tasks_.pop_back();
+      if (task.a != task.b) insertOne(task.a, task.b, task.id);
+    }
+  }
+
+ private:
+  MeshState& m_;
+  Triangulation& t_;
+  std::vector<Task> tasks_;
+  std::uint64_t repairs_ = 0;
+
+  void constrain(std::uint32_t h, std::int32_t id) {
+    const std::int32_t old = t_.con[h];
+    if (old == kFree || old == kHullEdge || old == id) {
+      t_.con[h] = id;
+      if (t_.twin[h] != kNone) t_.con[t_.twin[h]] = id;
+      return;
+    }
+    if (id < 0) return;  // a hull edge over an input segment: the input segment keeps it
+    // Two input segments share this edge: the earlier segment keeps it; report once per pair.
+    const Plc& plc = *m_.plc;
+    const auto& rep = m_.input.representative;
+    const std::uint32_t a0 = rep[plc.segments[2 * old]], b0 = rep[plc.segments[2 * old + 1]];
+    const std::uint32_t a1 = rep[plc.segments[2 * id]], b1 = rep[plc.segments[2 * id + 1]];
+    const bool same = (a0 == a1 && b0 == b1) || (a0 == b1 && b0 == a1);
+    for (const Notice& n : m_.notices)
+      if ((n.kind == NoticeKind::DuplicateSegment || n.kind == NoticeKind::SegmentsOverlap) && n.a == id && n.b == old)
+        return;
+    Notice n{same ? NoticeKind::DuplicateSegment : NoticeKind::SegmentsOverlap, id, old, 0, 0, ""};
+    n.message = same ? segName(id) + " duplicates " + segName(old) + "; merged"
+                     : segName(id) + " overlaps " + segName(old) + " along a collinear piece; they share it";
+    m_.notices.push_back(std::move(n));
+  }
+
+  void vertexOnSegment(std::uint32_t w, std::int32_t id) {
+    if (id < 0 || w >= m_.inputCount) return;  // hull edges and repair vertices need no report
+    Notice n{NoticeKind::VertexOnSegment, id, w, t_.xy[2 * w] / m_.input.scale, t_.xy[2 * w + 1] / m_.input.scale, ""};
+    n.message = "points[" + std::to_string(w) + "] lies inside " + segName(id) + "; the segment is split there";
+    m_.notices.push_back(std::move(n));
+  }
+
+  void insertOne(std::uint32_t a, std::uint32_t b, std::int32_t id) {
+    std::uint32_t h = t_.findEdge(a, b);
+    if (h != kNone) {
+      constrain(h, id);
+      return;
+    }
+    const double* pa = t_.pt(a);
+    const double* pb = t_.pt(b);
+    // Find the triangle at a whose corner contains the direction to b.
+    std::uint32_t cross = kNone;  // first crossed half-edge, oriented right -> left of a->b
+    const std::uint32_t start = t_.vtri[a];
+    std::uint32_t tri = start;
+    for (std::uint32_t guard = 0;; ++guard) {
+      if (guard > t_.slotCount()) throw Error(ErrorCode::Internal, "lost around a vertex of " + segName(id));
+      const std::uint32_t i = t_.tv[3 * tri] == a ? 0 : t_.tv[3 * tri + 1] == a ? 1 : 2;
+      const std::uint32_t v1 = t_.tv[3 * tri + (i + 1) % 3], v2 = t_.tv[3 * tri + (i + 2) % 3];
+      const double o1 = orient2d(pa, pb, t_.pt(v1)), o2 = orient2d(pa, pb, t_.pt(v2));
+      if (o1 == 0 && aheadOf(a, b, v1)) return splitAt(a, b, v1, id);
+      if (o2 == 0 && aheadOf(a, b, v2)) return splitAt(a, b, v2, id);
+      if (o1 < 0 && o2 > 0) {
+        cross = 3 * tri + i;
+        break;
+      }
+      const std::uint32_t g = t_.twin[3 * tri + (i + 2) % 3];  // rotate across a -> v1
+      if (g == kNone) throw Error(ErrorCode::Internal, "segment walk left the triangulation at " + segName(id));
+      tri = g / 3;
+    }
+    // Walk across the triangles the segment passes through.
+    std::vector<std::uint32_t> crossed;  // vertex pairs of crossed edges
+    for (;;) {
+      if (t_.con[cross] != kFree) return crossConstraint(a, b, id, cross);
+      crossed.push_back(t_.origin(cross));
+      crossed.push_back(t_.dest(cross));
+      const std::uint32_t g = t_.twin[cross];
+      if (g == kNone) throw Error(ErrorCode::Internal, segName(id) + " leaves the triangulation");
+      const std::uint32_t w = t_.apex(g);
+      if (w == b) break;
+      const double o = orient2d(pa, pb, t_.pt(w));
+      if (o == 0) return splitAt(a, b, w, id);
+      cross = o > 0 ? next3(g) : prev3(g);
+    }
+    flipAway(a, b, crossed);
+    h = t_.findEdge(a, b);
+    if (h == kNone) throw Error(ErrorCode::Internal, "flips did not recover " + segName(id));
+    constrain(h, id);
+    t_.legalize(newEdges_);
+  }
+
+  // True if v lies on the ray from a through b, beyond a.
+  bool aheadOf(std::uint32_t a, std::uint32_t b, std::uint32_t v) const {
+    const double* pa = t_.pt(a);
+    const double* pb = t_.pt(b);
+    const double* pv = t_.pt(v);
+    return (pv[0] - pa[0]) * (pb[0] - pa[0]) + (pv[1] - pa[1]) * (pb[1] - pa[1]) > 0;
+  }
+
+  void splitAt(std::uint32_t a, std::uint32_t b, std::uint32_t w, std::int32_t id) {
+    vertexOnSegment(w, id);
+    tasks_.push_back({w, b, id});
+    tasks_.push_back({a, w, id});
+  }
+
+  // Segment a-b (id) crosses the constrained edge `h` (another segment): split both at the crossing.
+  void crossConstraint(std::uint32_t a, std::uint32_t b, std::int32_t id, std::uint32_t h) {
+    if (++repairs_ > 4 * static_cast<std::uint64_t>(m_.segmentCount()) * m_.segmentCount() + 1000)
+      throw Error(ErrorCode::Internal, "too many crossing repairs near " + segName(id));
+    const std::uint32_t l = t_.origin(h), r = t_.dest(h);
+    const std::int32_t other = t_.con[h];
+    const double* pa = t_.pt(a);
+    const double* pb = t_.pt(b);
+    const double da = orient2d(t_.pt(l), t_.pt(r), pa), db = orient2d(t_.pt(l), t_.pt(r), pb);
+    double s = da / (da - db);
+    if (!(s > 0 && s < 1)) s = 0.5;
+    const double q[2] = {pa[0] + s * (pb[0] - pa[0]), pa[1] + s * (pb[1] - pa[1])};
+    // Free the crossed edge, insert the crossing point as an ordinary vertex, then re-insert all four
+    // pieces as constraints (the point is rounded, so it need not lie exactly on either segment).
+    t_.con[h] = kFree;
+    if (t_.twin[h] != kNone) t_.con[t_.twin[h]] = kFree;
+    const Location loc = t_.locate(q, h / 3);
+    std::uint32_t w;
+    if (loc.kind == Location::OnVertex) {
+      w = loc.vertex;
+    } else if (loc.kind == Location::InTriangle || loc.kind == Location::OnEdge) {
+      w = m_.addVertex(q[0], q[1], VertexKind::Intersection, -1);
+      if (!t_.insertVertex(w, loc))
+        throw Error(ErrorCode::Internal, "could not insert the crossing of " + segName(id));
+    } else {
+      throw Error(ErrorCode::Internal, "could not locate the crossing of " + segName(id));
+    }
+    if (id >= 0 && other >= 0) {
+      Notice n{NoticeKind::SegmentsCross, std::min(id, other), std::max(id, other), q[0] / m_.input.scale,
+               q[1] / m_.input.scale, ""};
+      n.message = segName(n.a) + " and " + segName(n.b) + " cross at (" + formatNumber(n.x) + ", " +
+                  formatNumber(n.y) + "); both are split there";
+      m_.notices.push_back(std::move(n));
+    }
+    tasks_.push_back({w, b, id});
+    tasks_.push_back({a, w, id});
+    tasks_.push_back({w, r, other});
+    tasks_.push_back({l, w, other});
+  }
+
+  std::vector<std::uint32_t> newEdges_;
+
+  void flipAway(std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t>& crossed) {
+    const double* pa = t_.pt(a);
+    const double* pb = t_.pt(b);
+    std::deque<std::pair<std::uint32_t, std::uint32_t>> queue;
+    for (std::size_t k = 0; k < crossed.size(); k += 2) queue.emplace_back(crossed[k], crossed[k + 1]);
+    newEdges_.clear();
+    const std::uint64_t limit = 1000 + 100ull * queue.size() * queue.size();
+    for (std::uint64_t step = 0; !queue.empty(); ++step) {
+      if (step > limit) throw Error(ErrorCode::Internal, "segment recovery did not converge");
+      const auto [u, v] = queue.front();
+      queue.pop_front();
+      const std::uint32_t h = t_.findEdge(u, v);
+      if (h == kNone) continue;
+      const std::uint32_t x = t_.apex(h), y = t_.apex(t_.twin[h]);
+      const double ox = orient2d(t_.pt(x), t_.pt(y), t_.pt(u)), oy = orient2d(t_.pt(x), t_.pt(y), t_.pt(v));
+      if (!((ox > 0 && oy < 0) || (ox < 0 && oy > 0))) {  // not strictly convex: try again later
+        queue.emplace_back(u, v);
+        continue;
+      }
+      t_.flip(h);
+      const double sx = orient2d(pa, pb, t_.pt(x)), sy = orient2d(pa, pb, t_.pt(y));
+      if ((sx > 0 && sy < 0) || (sx < 0 && sy > 0)) {
+        queue.emplace_back(x, y);
+      } else {
+        newEdges_.push_back(x);
+        newEdges_.push_back(y);
+      }
+    }
+  }
+};
+
+}  // namespace
+
+void insertHull(MeshState& m) {
+  // Andrew's monotone chain on the distinct points with exact orientation; collinear points on the
+  // hull are skipped here and picked up by segment insertion (they split the hull edge).
+  std::vector<std::uint32_t> pts(m.input.insertionOrder);
+  const Triangulation& t = m.tri;
+  std::sort(pts.begin(), pts.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return t.xy[2 * a] != t.xy[2 * b] ? t.xy[2 * a] < t.xy[2 * b] : t.xy[2 * a + 1] < t.xy[2 * b + 1];
+  });
+  std::vector<std::uint32_t> hull;
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::size_t base = hull.size();
+    for (std::uint32_t p : pts) {
+      while (hull.size() >= base + 2 &&
+             orient2d(t.pt(hull[hull.size() - 2]), t.pt(hull.back()), t.pt(p)) <= 0)
+        hull.pop_back();
+      hull.push_back(p);
+    }
+    hull.pop_back();  // the last point starts the other chain
+    std::reverse(pts.begin(), pts.end());
+  }
+  SegmentInserter inserter(m);
+  for (std::size_t k = 0; k < hull.size(); ++k) inserter.insert(hull[k], hull[(k + 1) % hull.size()], kHullEdge);
+}
+
+void insertSegments(MeshState& m) {
+  SegmentInserter inserter(m);
+  const Plc& plc = *m.plc;
+  const auto& rep = m.input.representative;
+  for (std::size_t s = 0; s < plc.segments.size() / 2; ++s) {
+    const std::uint32_t a = rep[plc.segments[2 * s]], b = rep[plc.segments[2 * s + 1]];
+    const std::int32_t id = static_cast<std::int32_t>(s);
+    if (a == b) {
+      Notice n{NoticeKind::ZeroLengthSegment, id, -1, 0, 0, ""};
+      n.message = segName(id) + " joins points[" + std::to_string(plc.segments[2 * s]) + "] and points[" +
+                  std::to_string(plc.segments[2 * s + 1]) + "], which coincide; it is dropped";
+      m.notices.push_back(std::move(n));
+      continue;
+    }
+    inserter.insert(a, b, id);
+  }
+}
+
+}  // namespace ruppert::detail

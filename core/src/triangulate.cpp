@@ -1,0 +1,139 @@
+// ruppert::triangulate: the pipeline (§6.1's generic Delaunay refinement, constrained as in §6.7).
+//   prepare (validate, scale, merge duplicates) -> Delaunay of the points -> constraints (hull,
+//   segments, with repairs) -> classify (exterior, holes, regions) -> refine (§6.2-6.6, 6.8) -> output.
+#include <chrono>
+#include <cmath>
+
+#include "mesh_state.h"
+#include "refine.h"
+
+namespace ruppert {
+
+namespace detail {
+namespace {
+
+// The three angles of triangle (a, b, c) in degrees.
+void triangleAngles(const double* a, const double* b, const double* c, double out[3]) {
+  const double* p[3] = {a, b, c};
+  for (int i = 0; i < 3; ++i) {
+    const double* o = p[i];
+    const double* u = p[(i + 1) % 3];
+    const double* w = p[(i + 2) % 3];
+    const double ux = u[0] - o[0], uy = u[1] - o[1], wx = w[0] - o[0], wy = w[1] - o[1];
+    out[i] = std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) * (180.0 / M_PI);
+  }
+}
+
+Mesh assemble(MeshState& m) {
+  Mesh mesh;
+  const Triangulation& t = m.tri;
+  const Plc& plc = *m.plc;
+  const std::uint32_t corners = m.boxFirst == kNone ? 0 : 4;
+  auto outIndex = [&](std::uint32_t v) { return v < m.inputCount ? v : v - corners; };
+  const std::uint32_t outVertices = t.vertexCount() - corners;
+
+  mesh.points.resize(2 * outVertices);
+  mesh.vertexKinds.resize(outVertices);
+  const double inv = 1.0 / m.input.scale;  // a power of two: exact
+  for (std::uint32_t v = 0; v < t.vertexCount(); ++v) {
+    if (corners && v >= m.boxFirst && v < m.boxFirst + 4) continue;
+    const std::uint32_t o = outIndex(v);
+    if (v < m.inputCount) {
+      mesh.points[2 * o] = plc.points[2 * v];  // bit-identical to the input
+      mesh.points[2 * o + 1] = plc.points[2 * v + 1];
+      mesh.vertexKinds[o] = static_cast<std::uint8_t>(t.vtri[v] == kNone ? VertexKind::Unused : VertexKind::Input);
+    } else {
+      mesh.points[2 * o] = t.xy[2 * v] * inv;
+      mesh.points[2 * o + 1] = t.xy[2 * v + 1] * inv;
+      mesh.vertexKinds[o] = static_cast<std::uint8_t>(m.kind[v]);
+    }
+  }
+  if (!plc.pointMarkers.empty()) {
+    mesh.pointMarkers.resize(outVertices, 0);
+    for (std::uint32_t v = 0; v < m.inputCount && v < plc.pointMarkers.size(); ++v)
+      mesh.pointMarkers[v] = plc.pointMarkers[v];
+    for (std::uint32_t v = m.inputCount + corners; v < t.vertexCount(); ++v)
+      mesh.pointMarkers[outIndex(v)] = m.onSegment[v] >= 0 || m.kind[v] == VertexKind::Intersection ? 1 : 0;
+  }
+
+  std::vector<std::uint32_t> slotToTri(t.slotCount(), kNone);
+  std::uint32_t count = 0;
+  for (std::uint32_t s = 0; s < t.slotCount(); ++s)
+    if (t.alive(s)) slotToTri[s] = count++;
+  mesh.triangles.resize(3 * count);
+  mesh.neighbors.resize(3 * count);
+  mesh.triangleAttributes.resize(count);
+  Stats& st = mesh.stats;
+  st.angleHistogram.assign(180, 0);
+  st.minAngle = count ? 180 : 0;
+  st.maxAngle = 0;
+  for (std::uint32_t s = 0; s < t.slotCount(); ++s) {
+    if (!t.alive(s)) continue;
+    const std::uint32_t o = slotToTri[s];
+    for (int i = 0; i < 3; ++i) {
+      mesh.triangles[3 * o + i] = outIndex(t.tv[3 * s + i]);
+      const std::uint32_t g = t.twin[3 * s + i];
+      mesh.neighbors[3 * o + i] = g == kNone ? kNoNeighbor : static_cast<std::int32_t>(slotToTri[g / 3]);
+      const std::uint32_t h = 3 * s + i;
+      if (t.con[h] != kFree && (g == kNone || h < g)) {
+        mesh.segments.push_back(outIndex(t.origin(h)));
+        mesh.segments.push_back(outIndex(t.dest(h)));
+        mesh.segmentIds.push_back(t.con[h] >= 0 ? t.con[h] : kNoInputSegment);
+      }
+    }
+    mesh.triangleAttributes[o] = m.attribute.empty() ? 0.0 : m.attribute[s];
+    double ang[3];
+    triangleAngles(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2]), ang);
+    for (double a : ang) {
+      st.minAngle = std::min(st.minAngle, a);
+      st.maxAngle = std::max(st.maxAngle, a);
+      st.angleHistogram[std::min<std::size_t>(179, static_cast<std::size_t>(a))]++;
+    }
+  }
+  st.triangles = count;
+  for (std::uint8_t k : mesh.vertexKinds) {
+    switch (static_cast<VertexKind>(k)) {
+      case VertexKind::Input: st.inputVertices++; break;
+      case VertexKind::SegmentSplit: st.segmentVertices++; break;
+      case VertexKind::Interior: st.interiorVertices++; break;
+      case VertexKind::OffCenter: st.offCenterVertices++; break;
+      case VertexKind::Intersection: st.intersectionVertices++; break;
+      case VertexKind::Unused: break;
+    }
+  }
+  st.vertices = st.inputVertices + st.segmentVertices + st.interiorVertices + st.offCenterVertices +
+                st.intersectionVertices;
+  mesh.indexBase = plc.indexBase;
+  mesh.notices = std::move(m.notices);
+  return mesh;
+}
+
+}  // namespace
+}  // namespace detail
+
+Mesh triangulate(const Plc& plc, const Options& options) {
+  using namespace detail;
+  const auto start = std::chrono::steady_clock::now();
+  MeshState m;
+  m.plc = &plc;
+  m.options = &options;
+  m.input = prepareInput(plc, options, m.notices);
+  buildDelaunay(m);
+  if (plc.segments.empty() || options.convexHull) insertHull(m);
+  insertSegments(m);
+  classifyTriangles(m);
+  RefineOutcome outcome;
+  if (refinementRequested(m)) outcome = refine(m);
+  Mesh mesh = assemble(m);
+  mesh.complete = outcome.reasons.empty();
+  mesh.reasons = std::move(outcome.reasons);
+  mesh.events = std::move(outcome.events);
+  mesh.stats.rejectedCircumcenters = outcome.rejected;
+  mesh.stats.lfsIntegral = outcome.lfsIntegral;
+  mesh.stats.trianglesPerLfsIntegral = outcome.lfsIntegral > 0 ? mesh.stats.triangles / outcome.lfsIntegral : 0;
+  mesh.stats.milliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return mesh;
+}
+
+}  // namespace ruppert

@@ -1,0 +1,285 @@
+#include "triangulation.h"
+
+#include "predicates.h"
+
+namespace ruppert::detail {
+
+std::uint32_t Triangulation::addVertex(double x, double y) {
+  xy.push_back(x);
+  xy.push_back(y);
+  vtri.push_back(kNone);
+  scratch_.push_back(kNone);
+  return vertexCount() - 1;
+}
+
+std::uint32_t Triangulation::newTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+  std::uint32_t t;
+  if (!freeSlots.empty()) {
+    t = freeSlots.back();
+    freeSlots.pop_back();
+  } else {
+    t = slotCount();
+    tv.resize(tv.size() + 3);
+    twin.resize(twin.size() + 3);
+    con.resize(con.size() + 3);
+    mark_.push_back(0);
+  }
+  tv[3 * t] = a;
+  tv[3 * t + 1] = b;
+  tv[3 * t + 2] = c;
+  for (int i = 0; i < 3; ++i) {
+    twin[3 * t + i] = kNone;
+    con[3 * t + i] = kFree;
+  }
+  vtri[a] = vtri[b] = vtri[c] = t;
+  return t;
+}
+
+void Triangulation::killTriangle(std::uint32_t t) {
+  tv[3 * t] = tv[3 * t + 1] = tv[3 * t + 2] = kNone;
+  freeSlots.push_back(t);
+}
+
+void Triangulation::link(std::uint32_t h, std::uint32_t g) {
+  if (h != kNone) twin[h] = g;
+  if (g != kNone) twin[g] = h;
+}
+
+std::uint32_t Triangulation::nextStamp() const {
+  stamp_ += 2;  // two values per search: stamp_ = inside the cavity, stamp_ + 1 = tested, outside
+  if (stamp_ >= 0xFFFFFFF0u) {
+    std::fill(mark_.begin(), mark_.end(), 0);
+    stamp_ = 2;
+  }
+  return stamp_;
+}
+
+Location Triangulation::locate(const double* p, std::uint32_t start) const {
+  Location loc;
+  std::uint32_t t = start;
+  // A visibility walk can cycle in a constrained triangulation; starting each step at a random edge
+  // makes cycles vanish with probability one. The bound only guards against bugs.
+  const std::uint64_t maxSteps = 64 + 4ull * slotCount();
+  for (std::uint64_t step = 0; step < maxSteps; ++step) {
+    rng_ ^= rng_ << 13;
+    rng_ ^= rng_ >> 7;
+    rng_ ^= rng_ << 17;
+    const std::uint32_t r = static_cast<std::uint32_t>(rng_ % 3);
+    double o[3];
+    bool moved = false;
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      const std::uint32_t i = (r + k) % 3;
+      const std::uint32_t h = 3 * t + i;
+      o[i] = orient2d(pt(origin(h)), pt(dest(h)), p);
+      if (o[i] < 0) {
+        if (twin[h] == kNone) {
+          loc.kind = Location::Outside;
+          loc.tri = t;
+          loc.edge = h;
+          return loc;
+        }
+        t = twin[h] / 3;
+        moved = true;
+        break;
+      }
+    }
+    if (moved) continue;
+    loc.tri = t;
+    int zeros = 0;
+    std::uint32_t zi = 0, zj = 0;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      if (o[i] == 0) {
+        (zeros == 0 ? zi : zj) = i;
+        ++zeros;
+      }
+    }
+    if (zeros == 0) {
+      loc.kind = Location::InTriangle;
+    } else if (zeros == 1) {
+      loc.kind = Location::OnEdge;
+      loc.edge = 3 * t + zi;
+    } else {
+      loc.kind = Location::OnVertex;
+      loc.vertex = tv[3 * t + (3 - zi - zj)];
+    }
+    return loc;
+  }
+  loc.kind = Location::Lost;
+  return loc;
+}
+
+std::uint32_t Triangulation::findEdge(std::uint32_t a, std::uint32_t b) const {
+  const std::uint32_t start = vtri[a];
+  if (start == kNone) return kNone;
+  auto corner = [&](std::uint32_t t) { return tv[3 * t] == a ? 0u : tv[3 * t + 1] == a ? 1u : 2u; };
+  // In triangle t with a at corner i: half-edge 3t+(i+2)%3 runs a -> tv[i+1] ("out"),
+  // half-edge 3t+(i+1)%3 runs tv[i+2] -> a ("in").
+  auto check = [&](std::uint32_t t) -> std::uint32_t {
+    const std::uint32_t i = corner(t);
+    if (tv[3 * t + (i + 1) % 3] == b) return 3 * t + (i + 2) % 3;
+    if (tv[3 * t + (i + 2) % 3] == b) {
+      const std::uint32_t in = 3 * t + (i + 1) % 3;
+      return twin[in] != kNone ? twin[in] : in;
+    }
+    return kNone;
+  };
+  // Rotate around a across "out" edges; if the mesh boundary stops us, rotate the other way too.
+  std::uint32_t t = start;
+  for (;;) {
+    const std::uint32_t h = check(t);
+    if (h != kNone) return h;
+    const std::uint32_t g = twin[3 * t + (corner(t) + 2) % 3];
+    if (g == kNone) break;
+    t = g / 3;
+    if (t == start) return kNone;
+  }
+  t = start;
+  for (;;) {
+    const std::uint32_t g = twin[3 * t + (corner(t) + 1) % 3];
+    if (g == kNone) return kNone;
+    t = g / 3;
+    if (t == start) return kNone;
+    const std::uint32_t h = check(t);
+    if (h != kNone) return h;
+  }
+}
+
+//            c                        c
+//           / \                      /|\                                     .
+//      CA  /   \  DC            CA  / | \  DC
+//         /  T  \                  /  |  \                                   .
+//        a ----- d   (edge b-c)   a U | T d   becomes edge a-d: T = (a,b,d), U = (a,d,c)
+//         \  U  /                  \  |  /                                   .
+//      AB  \   /  BD            AB  \ | /  BD
+//           \ /                      \|/
+//            b                        b
+// (left: before, T = (a,b,c) owns half-edge h = b->c, U = (d,c,b) its twin; drawn schematically)
+void Triangulation::flip(std::uint32_t h) {
+  const std::uint32_t g = twin[h];
+  const std::uint32_t T = h / 3, U = g / 3;
+  const std::uint32_t a = tv[h], b = tv[next3(h)], c = tv[prev3(h)], d = tv[g];
+  const std::uint32_t ca = twin[next3(h)], ab = twin[prev3(h)], bd = twin[next3(g)], dc = twin[prev3(g)];
+  const std::int32_t cca = con[next3(h)], cab = con[prev3(h)], cbd = con[next3(g)], cdc = con[prev3(g)];
+  tv[3 * T] = a, tv[3 * T + 1] = b, tv[3 * T + 2] = d;
+  tv[3 * U] = a, tv[3 * U + 1] = d, tv[3 * U + 2] = c;
+  link(3 * T + 0, bd), con[3 * T + 0] = cbd;
+  link(3 * T + 1, 3 * U + 2), con[3 * T + 1] = kFree, con[3 * U + 2] = kFree;
+  link(3 * T + 2, ab), con[3 * T + 2] = cab;
+  link(3 * U + 0, dc), con[3 * U + 0] = cdc;
+  link(3 * U + 1, ca), con[3 * U + 1] = cca;
+  vtri[a] = vtri[b] = vtri[d] = T;
+  vtri[c] = U;
+}
+
+void Triangulation::cavity(const double* p, const Location& loc, std::vector<std::uint32_t>& tris,
+                           std::vector<std::uint32_t>& boundary) const {
+  tris.clear();
+  boundary.clear();
+  const std::uint32_t in = nextStamp(), out = in + 1;
+  std::uint32_t split = kNone, splitTwin = kNone;
+  tris.push_back(loc.tri);
+  mark_[loc.tri] = in;
+  if (loc.kind == Location::OnEdge) {
+    split = loc.edge;
+    splitTwin = twin[split];
+    if (splitTwin != kNone) {
+      tris.push_back(splitTwin / 3);
+      mark_[splitTwin / 3] = in;
+    }
+  }
+  // The list grows while we scan it: a breadth-first search over the cavity.
+  for (std::size_t k = 0; k < tris.size(); ++k) {
+    const std::uint32_t t = tris[k];
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t h = 3 * t + i;
+      if (h == split || h == splitTwin) continue;
+      const std::uint32_t g = twin[h];
+      if (g == kNone || con[h] != kFree) {
+        boundary.push_back(h);
+        continue;
+      }
+      const std::uint32_t u = g / 3;
+      if (mark_[u] == in) continue;
+      if (mark_[u] != out &&
+          incircle(pt(tv[3 * u]), pt(tv[3 * u + 1]), pt(tv[3 * u + 2]), p) > 0) {
+        mark_[u] = in;
+        tris.push_back(u);
+      } else {
+        mark_[u] = out;
+        boundary.push_back(h);
+      }
+    }
+  }
+}
+
+bool Triangulation::insertVertex(std::uint32_t v, const Location& loc, std::vector<std::uint32_t>* newTris) {
+  static thread_local std::vector<std::uint32_t> tris, boundary;
+  struct Side { std::uint32_t u, w, outer; std::int32_t c; };
+  static thread_local std::vector<Side> sides;
+  const double* p = pt(v);
+  cavity(p, loc, tris, boundary);
+  sides.clear();
+  for (std::uint32_t h : boundary) {
+    const std::uint32_t u = origin(h), w = dest(h);
+    if (!(orient2d(pt(u), pt(w), p) > 0)) return false;
+    sides.push_back({u, w, twin[h], con[h]});
+  }
+  std::uint32_t sa = kNone, sb = kNone;
+  std::int32_t splitCon = kFree;
+  if (loc.kind == Location::OnEdge) {
+    sa = origin(loc.edge);
+    sb = dest(loc.edge);
+    splitCon = con[loc.edge];
+  }
+  for (std::uint32_t t : tris) killTriangle(t);
+  if (newTris) newTris->clear();
+  // Fan of new triangles {v, u, w}: edge 0 (u->w) faces the old outside, edge 1 (w->v) and
+  // edge 2 (v->u) face the neighbouring new triangles.
+  const std::size_t first = sides.size();
+  static thread_local std::vector<std::uint32_t> made;
+  made.resize(first);
+  for (std::size_t k = 0; k < sides.size(); ++k) {
+    const Side& s = sides[k];
+    const std::uint32_t t = newTriangle(v, s.u, s.w);
+    made[k] = t;
+    link(3 * t, s.outer);
+    con[3 * t] = s.c;
+    scratch_[s.u] = t;
+    if (newTris) newTris->push_back(t);
+  }
+  for (std::size_t k = 0; k < sides.size(); ++k) {
+    const std::uint32_t t = made[k];
+    const std::uint32_t nb = scratch_[sides[k].w];
+    if (nb != kNone) link(3 * t + 1, 3 * nb + 2);
+  }
+  for (const Side& s : sides) scratch_[s.u] = kNone;
+  if (splitCon != kFree) {
+    for (std::uint32_t t : made) {
+      if (tv[3 * t + 1] == sa || tv[3 * t + 1] == sb) con[3 * t + 2] = splitCon;
+      if (tv[3 * t + 2] == sa || tv[3 * t + 2] == sb) con[3 * t + 1] = splitCon;
+    }
+  }
+  return true;
+}
+
+void Triangulation::legalize(std::vector<std::uint32_t>& stack) {
+  // The stack holds vertex pairs (a, b) flattened: edges may move between slots as we flip.
+  while (stack.size() >= 2) {
+    const std::uint32_t b = stack.back();
+    stack.pop_back();
+    const std::uint32_t a = stack.back();
+    stack.pop_back();
+    const std::uint32_t h = findEdge(a, b);
+    if (h == kNone || con[h] != kFree || twin[h] == kNone) continue;
+    const std::uint32_t t = h / 3;
+    const std::uint32_t d = apex(twin[h]);
+    if (incircle(pt(tv[3 * t]), pt(tv[3 * t + 1]), pt(tv[3 * t + 2]), pt(d)) > 0) {
+      const std::uint32_t x = apex(h), y = origin(h), z = dest(h);
+      flip(h);
+      const std::uint32_t edges[8] = {x, y, y, d, d, z, z, x};
+      stack.insert(stack.end(), edges, edges + 8);
+    }
+  }
+}
+
+}  // namespace ruppert::detail

@@ -1,0 +1,89 @@
+// The mutable triangulation every stage works on: flat arrays (structure of arrays), half-edges as
+// 3*triangle+i, constrained edges flagged per half-edge.
+//
+// Terminology used throughout the core:
+//   triangle t   vertices tv[3t], tv[3t+1], tv[3t+2], counter-clockwise; tv[3t] == kNone: a free slot.
+//   half-edge h  3t+i: the edge of t opposite its vertex tv[3t+i], from tv[3t+(i+1)%3] to tv[3t+(i+2)%3].
+//   twin[h]      the same edge seen from the neighbouring triangle, or kNone on the mesh boundary.
+//   con[h]       which constraint the edge carries: kFree, an input segment index (>= 0), or kHullEdge.
+//                Both half-edges of an edge always carry the same value.
+//   vtri[v]      some live triangle that has v as a vertex (kNone for vertices not in the mesh).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace ruppert::detail {
+
+inline constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+inline constexpr std::int32_t kFree = -1;      // con[h]: not a subsegment
+inline constexpr std::int32_t kHullEdge = -2;  // con[h]: convex-hull or bounding-box edge added by us
+
+inline std::uint32_t next3(std::uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; }
+inline std::uint32_t prev3(std::uint32_t h) { return h % 3 == 0 ? h + 2 : h - 1; }
+
+// Where a point lies relative to the triangulation (result of locate()).
+struct Location {
+  enum Kind { InTriangle, OnEdge, OnVertex, Outside, Lost } kind = Lost;
+  std::uint32_t tri = kNone;   // containing triangle (InTriangle), or a triangle of the edge/vertex
+  std::uint32_t edge = kNone;  // half-edge (OnEdge; Outside: the boundary half-edge crossed last)
+  std::uint32_t vertex = kNone;  // OnVertex
+};
+
+class Triangulation {
+ public:
+  std::vector<double> xy;          // vertex coordinates x0,y0,x1,y1,...
+  std::vector<std::uint32_t> tv;   // 3 per triangle slot
+  std::vector<std::uint32_t> twin; // 3 per triangle slot
+  std::vector<std::int32_t> con;   // 3 per triangle slot
+  std::vector<std::uint32_t> vtri; // 1 per vertex
+  std::vector<std::uint32_t> freeSlots;
+
+  std::uint32_t vertexCount() const { return static_cast<std::uint32_t>(xy.size() / 2); }
+  std::uint32_t slotCount() const { return static_cast<std::uint32_t>(tv.size() / 3); }
+  bool alive(std::uint32_t t) const { return tv[3 * t] != kNone; }
+  const double* pt(std::uint32_t v) const { return &xy[2 * v]; }
+  std::uint32_t origin(std::uint32_t h) const { return tv[next3(h)]; }  // start of half-edge h
+  std::uint32_t dest(std::uint32_t h) const { return tv[prev3(h)]; }    // end of half-edge h
+  std::uint32_t apex(std::uint32_t h) const { return tv[h]; }          // vertex opposite h
+
+  std::uint32_t addVertex(double x, double y);
+  std::uint32_t newTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+  void killTriangle(std::uint32_t t);
+  void link(std::uint32_t h, std::uint32_t g);  // make h and g twins (either may be kNone)
+
+  // Walk from triangle `start` towards p. Stochastic visibility walk; bounded number of steps.
+  Location locate(const double* p, std::uint32_t start) const;
+
+  // A half-edge of the edge {a, b}: a->b when that side exists, else b->a; kNone if no such edge.
+  std::uint32_t findEdge(std::uint32_t a, std::uint32_t b) const;
+
+  // Flip the edge h (must be free and have a twin; the quad must be strictly convex).
+  // Afterwards h's triangle is (apex(h), origin(h), d) and the new diagonal runs apex(h)-d.
+  void flip(std::uint32_t h);
+
+  // Bowyer-Watson insertion of vertex v located at `loc` (InTriangle or OnEdge). The cavity is the
+  // set of triangles, connected to the start without crossing constrained edges, whose open
+  // circumdisk contains v. On a constrained edge (OnEdge with con != kFree) the edge is split and
+  // both halves keep the constraint. Returns false, changing nothing, if a new triangle would not be
+  // strictly counter-clockwise (v on the cavity boundary: possible only for rounded points).
+  // newTris receives the triangles created (may be null).
+  bool insertVertex(std::uint32_t v, const Location& loc, std::vector<std::uint32_t>* newTris = nullptr);
+
+  // Cavity computation without modifying anything (the first half of insertVertex). Returns the
+  // boundary half-edges (outer side twins are looked up from the cavity triangles' half-edges).
+  void cavity(const double* p, const Location& loc, std::vector<std::uint32_t>& tris,
+              std::vector<std::uint32_t>& boundary) const;
+
+  // Restore the constrained Delaunay property by Lawson flips starting from the given half-edges.
+  void legalize(std::vector<std::uint32_t>& stack);
+
+ private:
+  mutable std::vector<std::uint32_t> mark_;   // per-slot stamp for cavity search
+  mutable std::uint32_t stamp_ = 0;
+  std::vector<std::uint32_t> scratch_;        // per-vertex: new triangle whose boundary edge starts there
+  mutable std::uint64_t rng_ = 0x9E3779B97F4A7C15ull;
+  std::uint32_t nextStamp() const;
+};
+
+}  // namespace ruppert::detail
