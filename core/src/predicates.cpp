@@ -20,8 +20,22 @@
 #include "predicates.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <utility>
+
+// The error-free transformations need every operation rounded separately: a fused multiply-add formed
+// by the compiler would silently break twoProduct and split. The build passes -ffp-contract=off; clang
+// also honours the standard pragma, which guards builds that forget the flag.
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+
+// Each double operation must be rounded to double once; x87 extended-precision evaluation
+// (FLT_EVAL_METHOD != 0, e.g. 32-bit x86 without SSE2) would round twice.
+#if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0
+#error "predicates.cpp needs double arithmetic evaluated in double precision (FLT_EVAL_METHOD == 0)"
+#endif
 
 #if defined(__FAST_MATH__)
 #error "predicates.cpp needs strict IEEE arithmetic: do not compile it with -ffast-math"
@@ -237,19 +251,12 @@ double orient2d(const double* a, const double* b, const double* c) {
   const double detRight = (a[1] - c[1]) * (b[0] - c[0]);
   const double det = detLeft - detRight;
 
-  // In the safe range a computed product is zero only if a difference is exactly zero, and otherwise
-  // has the exact sign. When the two products do not have the same strict sign there is no
-  // cancellation, so the sign of det is already exact.
-  if (detLeft > 0) {
-    if (detRight <= 0) return det;
-  } else if (detLeft < 0) {
-    if (detRight >= 0) return det;
-  } else {
-    return det;
-  }
-
   const double errBound = kOrientBound * (std::fabs(detLeft) + std::fabs(detRight));
-  if (RUPPERT_LIKELY(det > errBound || -det > errBound)) return det;
+  // One well-predicted branch on |det| (testing det > bound || -det > bound would branch on the sign).
+  if (RUPPERT_LIKELY(std::fabs(det) > errBound)) return det;
+  // In the safe range a computed product is zero only when a difference is exactly zero, so a zero
+  // bound means both products, and the determinant, are exactly zero (e.g. repeated points).
+  if (errBound == 0) return 0.0;
   return orient2dExact(a, b, c);
 }
 
@@ -301,7 +308,8 @@ double incircle(const double* a, const double* b, const double* c, const double*
                            (std::fabs(cdxady) + std::fabs(adxcdy)) * bLift +
                            (std::fabs(adxbdy) + std::fabs(bdxady)) * cLift;
   const double errBound = kIncircleBound * permanent;
-  if (RUPPERT_LIKELY(det > errBound || -det > errBound)) return det;
+  if (RUPPERT_LIKELY(std::fabs(det) > errBound)) return det;
+  if (errBound == 0) return 0.0;  // every monomial of the determinant is exactly zero
   return incircleExact(a, b, c, d);
 }
 

@@ -18,6 +18,10 @@
 namespace ruppert::detail {
 namespace {
 
+// Internal coordinates lie within (-2, 2), where a double's spacing is at most 2^-52: a crossing
+// closer than this to a vertex is taken to be that vertex.
+constexpr double kSnap = 0x1p-40;
+
 struct Task {
   std::uint32_t a, b;
   std::int32_t id;
@@ -142,26 +146,29 @@ class SegmentInserter {
       throw Error(ErrorCode::Internal, "too many crossing repairs near " + segName(id));
     const std::uint32_t l = t_.origin(h), r = t_.dest(h);
     const std::int32_t other = t_.con[h];
-    const double* pa = t_.pt(a);
-    const double* pb = t_.pt(b);
-    const double da = orient2d(t_.pt(l), t_.pt(r), pa), db = orient2d(t_.pt(l), t_.pt(r), pb);
-    double s = da / (da - db);
-    if (!(s > 0 && s < 1)) s = 0.5;
-    const double q[2] = {pa[0] + s * (pb[0] - pa[0]), pa[1] + s * (pb[1] - pa[1])};
-    // Free the crossed edge, insert the crossing point as an ordinary vertex, then re-insert all four
-    // pieces as constraints (the point is rounded, so it need not lie exactly on either segment).
+    double q[2];
+    crossingPoint(a, b, id, l, r, other, q);
+    // A crossing within rounding distance of an existing vertex (typically the crossing of a third
+    // segment through the same point) is that vertex: a second vertex 1e-16 away would only leave
+    // needle triangles behind.
+    std::uint32_t w = kNone;
+    for (std::uint32_t c : {l, r, a, b})
+      if (w == kNone && std::fabs(t_.xy[2 * c] - q[0]) <= kSnap && std::fabs(t_.xy[2 * c + 1] - q[1]) <= kSnap) w = c;
+    // Free the crossed edge, insert the crossing point where it lies (it is rounded, so it need not
+    // be exactly on either segment), then rebuild both constraints through it.
     t_.con[h] = kFree;
     if (t_.twin[h] != kNone) t_.con[t_.twin[h]] = kFree;
-    const Location loc = t_.locate(q, h / 3);
-    std::uint32_t w;
-    if (loc.kind == Location::OnVertex) {
-      w = loc.vertex;
-    } else if (loc.kind == Location::InTriangle || loc.kind == Location::OnEdge) {
-      w = m_.addVertex(q[0], q[1], VertexKind::Intersection, -1);
-      if (!t_.insertVertex(w, loc))
-        throw Error(ErrorCode::Internal, "could not insert the crossing of " + segName(id));
-    } else {
-      throw Error(ErrorCode::Internal, "could not locate the crossing of " + segName(id));
+    if (w == kNone) {
+      const Location loc = t_.locate(q, h / 3);
+      if (loc.kind == Location::OnVertex) {
+        w = loc.vertex;
+      } else {
+        w = m_.addVertex(q[0], q[1], VertexKind::Intersection, -1);
+        if ((loc.kind != Location::InTriangle && loc.kind != Location::OnEdge) || !t_.insertVertex(w, loc))
+          throw Error(ErrorCode::Internal, "could not insert the crossing of " + segName(id) + " at (" +
+                                               formatNumber(q[0] / m_.input.scale) + ", " +
+                                               formatNumber(q[1] / m_.input.scale) + ")");
+      }
     }
     if (id >= 0 && other >= 0) {
       Notice n{NoticeKind::SegmentsCross, std::min(id, other), std::max(id, other), q[0] / m_.input.scale,
@@ -174,6 +181,51 @@ class SegmentInserter {
     tasks_.push_back({a, w, id});
     tasks_.push_back({w, r, other});
     tasks_.push_back({l, w, other});
+  }
+
+  // Where segment `id` (now the piece a-b) crosses segment `other` (the piece l-r). Computed from
+  // the two whole input segments, lower index first, so the point does not depend on the order
+  // of insertion.
+  void crossingPoint(std::uint32_t a, std::uint32_t b, std::int32_t id, std::uint32_t l, std::uint32_t r,
+                     std::int32_t other, double q[2]) const {
+    std::uint32_t p0 = a, p1 = b, q0 = l, q1 = r;
+    if (id >= 0 && other >= 0) {
+      const Plc& plc = *m_.plc;
+      const auto& rep = m_.input.representative;
+      // Canonical by geometry, not by index: the same crossing gets the same rounding however the
+      // input is ordered or numbered.
+      auto less = [&](std::uint32_t u, std::uint32_t v) {
+        return t_.xy[2 * u] != t_.xy[2 * v] ? t_.xy[2 * u] < t_.xy[2 * v] : t_.xy[2 * u + 1] < t_.xy[2 * v + 1];
+      };
+      p0 = rep[plc.segments[2 * id]], p1 = rep[plc.segments[2 * id + 1]];
+      q0 = rep[plc.segments[2 * other]], q1 = rep[plc.segments[2 * other + 1]];
+      if (less(p1, p0)) std::swap(p0, p1);
+      if (less(q1, q0)) std::swap(q0, q1);
+      if (less(q0, p0) || (q0 == p0 && less(q1, p1))) std::swap(p0, q0), std::swap(p1, q1);
+    }
+    auto intersect = [&](std::uint32_t u0, std::uint32_t u1, std::uint32_t w0, std::uint32_t w1, double out[2]) {
+      const double* pa = t_.pt(u0);
+      const double* pb = t_.pt(u1);
+      const double da = orient2d(t_.pt(w0), t_.pt(w1), pa), db = orient2d(t_.pt(w0), t_.pt(w1), pb);
+      const double s = da / (da - db);
+      if (!(s >= 0 && s <= 1)) return false;
+      out[0] = pa[0] + s * (pb[0] - pa[0]);
+      out[1] = pa[1] + s * (pb[1] - pa[1]);
+      return true;
+    };
+    // The whole-segment crossing is used only if it lies on both pieces (up to rounding); after
+    // earlier repairs bent a chain, the pieces' own crossing is the right one.
+    auto within = [&](const double* p, std::uint32_t u, std::uint32_t w) {
+      const double* pu = t_.pt(u);
+      const double* pw = t_.pt(w);
+      return p[0] >= std::min(pu[0], pw[0]) - kSnap && p[0] <= std::max(pu[0], pw[0]) + kSnap &&
+             p[1] >= std::min(pu[1], pw[1]) - kSnap && p[1] <= std::max(pu[1], pw[1]) + kSnap &&
+             std::fabs(orient2d(pu, pw, p)) <= kSnap * std::hypot(pw[0] - pu[0], pw[1] - pu[1]);
+    };
+    if (intersect(p0, p1, q0, q1, q) && within(q, a, b) && within(q, l, r)) return;
+    if (intersect(a, b, l, r, q)) return;
+    q[0] = (t_.xy[2 * a] + t_.xy[2 * b]) / 2;  // degenerate: the walk said they cross; use the middle
+    q[1] = (t_.xy[2 * a + 1] + t_.xy[2 * b + 1]) / 2;
   }
 
   std::vector<std::uint32_t> newEdges_;
@@ -239,6 +291,21 @@ void insertSegments(MeshState& m) {
   SegmentInserter inserter(m);
   const Plc& plc = *m.plc;
   const auto& rep = m.input.representative;
+  // Identical segments (after merging duplicate points) are found up front: inserted twice, a
+  // crossing of both would be computed twice with different rounding.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keys;
+  keys.reserve(plc.segments.size() / 2);
+  for (std::size_t s = 0; s < plc.segments.size() / 2; ++s) {
+    std::uint64_t a = rep[plc.segments[2 * s]], b = rep[plc.segments[2 * s + 1]];
+    if (a > b) std::swap(a, b);
+    keys.emplace_back(a << 32 | b, static_cast<std::uint32_t>(s));
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::int64_t> duplicateOf(plc.segments.size() / 2, -1);
+  for (std::size_t k = 1; k < keys.size(); ++k)
+    if (keys[k].first == keys[k - 1].first)
+      duplicateOf[keys[k].second] = duplicateOf[keys[k - 1].second] >= 0 ? duplicateOf[keys[k - 1].second]
+                                                                          : keys[k - 1].second;
   for (std::size_t s = 0; s < plc.segments.size() / 2; ++s) {
     const std::uint32_t a = rep[plc.segments[2 * s]], b = rep[plc.segments[2 * s + 1]];
     const std::int32_t id = static_cast<std::int32_t>(s);
@@ -249,8 +316,17 @@ void insertSegments(MeshState& m) {
       m.notices.push_back(std::move(n));
       continue;
     }
+    if (duplicateOf[s] >= 0) {
+      Notice n{NoticeKind::DuplicateSegment, id, duplicateOf[s], 0, 0, ""};
+      n.message = segName(id) + " duplicates " + segName(static_cast<std::int32_t>(duplicateOf[s])) + "; merged";
+      m.notices.push_back(std::move(n));
+      continue;
+    }
     inserter.insert(a, b, id);
   }
+  // Repairs free and rebuild constraints; a last Lawson pass over every edge guarantees the
+  // result is constrained Delaunay whatever order the repairs happened in.
+  m.tri.legalizeAll();
 }
 
 }  // namespace ruppert::detail

@@ -125,9 +125,21 @@ Mesh triangulate(const Plc& plc, const Options& options) {
   RefineOutcome outcome;
   if (refinementRequested(m)) outcome = refine(m);
   Mesh mesh = assemble(m);
-  mesh.complete = outcome.reasons.empty();
+  // The chapter's exemptions (§6.6) are reported but do not make the mesh incomplete.
+  mesh.complete = true;
+  for (const Reason& r : outcome.reasons)
+    if (r.kind != ReasonKind::SmallInputAngle && r.kind != ReasonKind::SeditiousEdge) mesh.complete = false;
   mesh.reasons = std::move(outcome.reasons);
   mesh.events = std::move(outcome.events);
+  const std::uint32_t corners = m.boxFirst == kNone ? 0 : 4;
+  auto outIndex = [&](std::uint32_t v) { return v < m.inputCount ? v : v - corners; };
+  const double inv = 1.0 / m.input.scale;
+  for (Event& e : mesh.events) {
+    e.vertex = outIndex(e.vertex), e.a = outIndex(e.a), e.b = outIndex(e.b);
+    e.t0 = outIndex(e.t0), e.t1 = outIndex(e.t1), e.t2 = outIndex(e.t2);
+    if (e.by >= 0) e.by = outIndex(static_cast<std::uint32_t>(e.by));
+    e.x *= inv, e.y *= inv, e.cx *= inv, e.cy *= inv;
+  }
   mesh.stats.rejectedCircumcenters = outcome.rejected;
   mesh.stats.lfsIntegral = outcome.lfsIntegral;
   mesh.stats.trianglesPerLfsIntegral = outcome.lfsIntegral > 0 ? mesh.stats.triangles / outcome.lfsIntegral : 0;

@@ -109,6 +109,11 @@ Location Triangulation::locate(const double* p, std::uint32_t start) const {
 }
 
 std::uint32_t Triangulation::findEdge(std::uint32_t a, std::uint32_t b) const {
+  const std::uint32_t h = findEdgeFrom(a, b);
+  return h != kNone ? h : findEdgeFrom(b, a);
+}
+
+std::uint32_t Triangulation::findEdgeFrom(std::uint32_t a, std::uint32_t b) const {
   const std::uint32_t start = vtri[a];
   if (start == kNone) return kNone;
   auto corner = [&](std::uint32_t t) { return tv[3 * t] == a ? 0u : tv[3 * t + 1] == a ? 1u : 2u; };
@@ -212,18 +217,27 @@ void Triangulation::cavity(const double* p, const Location& loc, std::vector<std
   }
 }
 
-bool Triangulation::insertVertex(std::uint32_t v, const Location& loc, std::vector<std::uint32_t>* newTris) {
+bool Triangulation::insertVertex(std::uint32_t v, const Location& loc, std::vector<std::uint32_t>* newTris,
+                                 std::vector<std::uint32_t>* parents) {
   static thread_local std::vector<std::uint32_t> tris, boundary;
-  struct Side { std::uint32_t u, w, outer; std::int32_t c; };
+  struct Side { std::uint32_t u, w, outer, from; std::int32_t c; };
   static thread_local std::vector<Side> sides;
   const double* p = pt(v);
   cavity(p, loc, tris, boundary);
   sides.clear();
+  bool ok = true;
   for (std::uint32_t h : boundary) {
     const std::uint32_t u = origin(h), w = dest(h);
-    if (!(orient2d(pt(u), pt(w), p) > 0)) return false;
-    sides.push_back({u, w, twin[h], con[h]});
+    // A vertex twice on the boundary (the domain touching itself there) would break the fan.
+    if (!(orient2d(pt(u), pt(w), p) > 0) || scratch_[u] != kNone) {
+      ok = false;
+      break;
+    }
+    scratch_[u] = 0;
+    sides.push_back({u, w, twin[h], h / 3, con[h]});
   }
+  for (const Side& s : sides) scratch_[s.u] = kNone;
+  if (!ok) return false;
   std::uint32_t sa = kNone, sb = kNone;
   std::int32_t splitCon = kFree;
   if (loc.kind == Location::OnEdge) {
@@ -233,6 +247,7 @@ bool Triangulation::insertVertex(std::uint32_t v, const Location& loc, std::vect
   }
   for (std::uint32_t t : tris) killTriangle(t);
   if (newTris) newTris->clear();
+  if (parents) parents->clear();
   // Fan of new triangles {v, u, w}: edge 0 (u->w) faces the old outside, edge 1 (w->v) and
   // edge 2 (v->u) face the neighbouring new triangles.
   const std::size_t first = sides.size();
@@ -246,6 +261,7 @@ bool Triangulation::insertVertex(std::uint32_t v, const Location& loc, std::vect
     con[3 * t] = s.c;
     scratch_[s.u] = t;
     if (newTris) newTris->push_back(t);
+    if (parents) parents->push_back(s.from);
   }
   for (std::size_t k = 0; k < sides.size(); ++k) {
     const std::uint32_t t = made[k];
@@ -279,6 +295,24 @@ void Triangulation::legalize(std::vector<std::uint32_t>& stack) {
       const std::uint32_t edges[8] = {x, y, y, d, d, z, z, x};
       stack.insert(stack.end(), edges, edges + 8);
     }
+  }
+}
+
+void Triangulation::legalizeAll() {
+  std::vector<std::uint32_t> stack;
+  for (std::uint32_t h = 0; h < tv.size(); ++h)
+    if (alive(h / 3) && twin[h] != kNone && h < twin[h]) stack.push_back(h);
+  while (!stack.empty()) {
+    const std::uint32_t h = stack.back();
+    stack.pop_back();
+    const std::uint32_t t = h / 3;
+    if (!alive(t) || con[h] != kFree || twin[h] == kNone) continue;
+    const std::uint32_t g = twin[h];
+    if (!(incircle(pt(tv[3 * t]), pt(tv[3 * t + 1]), pt(tv[3 * t + 2]), pt(apex(g))) > 0)) continue;
+    const std::uint32_t u = g / 3;
+    flip(h);
+    // flip() keeps the slots: the four outer edges are now T's edges 0, 2 and U's edges 0, 1.
+    stack.push_back(3 * t), stack.push_back(3 * t + 2), stack.push_back(3 * u), stack.push_back(3 * u + 1);
   }
 }
 

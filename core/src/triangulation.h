@@ -56,6 +56,8 @@ class Triangulation {
   Location locate(const double* p, std::uint32_t start) const;
 
   // A half-edge of the edge {a, b}: a->b when that side exists, else b->a; kNone if no such edge.
+  // Searches the triangles around a, then around b. At a vertex where the domain touches itself
+  // the triangles around it form several fans and only vtri's fan is searched.
   std::uint32_t findEdge(std::uint32_t a, std::uint32_t b) const;
 
   // Flip the edge h (must be free and have a twin; the quad must be strictly convex).
@@ -67,8 +69,11 @@ class Triangulation {
   // circumdisk contains v. On a constrained edge (OnEdge with con != kFree) the edge is split and
   // both halves keep the constraint. Returns false, changing nothing, if a new triangle would not be
   // strictly counter-clockwise (v on the cavity boundary: possible only for rounded points).
-  // newTris receives the triangles created (may be null).
-  bool insertVertex(std::uint32_t v, const Location& loc, std::vector<std::uint32_t>* newTris = nullptr);
+  // newTris receives the triangles created and parents, for each, the (now freed) cavity slot it
+  // replaces on the same side of the cavity boundary: per-triangle data is inherited from there
+  // (cavities never cross constrained edges, so a cavity lies in one region). Either may be null.
+  bool insertVertex(std::uint32_t v, const Location& loc, std::vector<std::uint32_t>* newTris = nullptr,
+                    std::vector<std::uint32_t>* parents = nullptr);
 
   // Cavity computation without modifying anything (the first half of insertVertex). Returns the
   // boundary half-edges (outer side twins are looked up from the cavity triangles' half-edges).
@@ -77,6 +82,8 @@ class Triangulation {
 
   // Restore the constrained Delaunay property by Lawson flips starting from the given half-edges.
   void legalize(std::vector<std::uint32_t>& stack);
+  // Lawson flips over every free edge until all are locally Delaunay (converges to the CDT).
+  void legalizeAll();
 
  private:
   mutable std::vector<std::uint32_t> mark_;   // per-slot stamp for cavity search
@@ -84,6 +91,7 @@ class Triangulation {
   std::vector<std::uint32_t> scratch_;        // per-vertex: new triangle whose boundary edge starts there
   mutable std::uint64_t rng_ = 0x9E3779B97F4A7C15ull;
   std::uint32_t nextStamp() const;
+  std::uint32_t findEdgeFrom(std::uint32_t a, std::uint32_t b) const;
 };
 
 }  // namespace ruppert::detail

@@ -208,8 +208,9 @@ struct Mesh {
   std::vector<double> triangleAttributes; // 1 per triangle: its region's attribute (0 outside regions)
   std::vector<std::int32_t> pointMarkers; // 1 per point if the input had markers (new points: 0 / 1 on segments)
   int indexBase = 0;                      // copied from the input, for writers
-  bool complete = true;                   // every bound met, except the chapter's exemptions
-  std::vector<Reason> reasons;            // why not complete (empty when complete)
+  bool complete = true;                   // every bound met, except the chapter's exemptions (§6.6)
+  std::vector<Reason> reasons;            // what is unmet and why; SmallInputAngle / SeditiousEdge
+                                          // entries are exemptions and may appear when complete
   std::vector<Notice> notices;            // repairs made to the input
   Stats stats;
   std::vector<Event> events;              // only with Options::trace

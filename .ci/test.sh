@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# The whole CI: install what is needed, then run every test suite.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+bash .ci/setup.sh
+
+# Debian's emcc needs Debian's JavaScript modules (acorn) on NODE_PATH.
+export NODE_PATH="${NODE_PATH:+$NODE_PATH:}/usr/share/nodejs"
+
+if [[ -f package.json ]] && node -e 'process.exit(require("./package.json").scripts?.test ? 0 : 1)'; then
+  npm test
+else
+  bash tests/run-native.sh
+fi

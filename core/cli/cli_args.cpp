@@ -1,0 +1,167 @@
+// Parsing of the `ruppert` command line. See helpText() for the options.
+#include "cli_args.h"
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace ruppert::cli {
+
+bool parseStrictDouble(const std::string& text, double& value) {
+  // strtod skips leading blanks and stops at junk; insisting on the whole string rejects both.
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0]))) return false;
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size() && std::isfinite(value);
+}
+
+bool parseStrictCount(const std::string& text, std::uint64_t& value) {
+  if (text.empty()) return false;
+  for (char c : text) {
+    if (c < '0' || c > '9') return false;
+  }
+  errno = 0;
+  value = std::strtoull(text.c_str(), nullptr, 10);
+  return errno != ERANGE;
+}
+
+const char* usageLine() {
+  return "usage: ruppert [--min-angle DEG] [--max-area A] [--max-steiner N] [-o BASE] "
+         "[--format triangle|json|svg] [--quiet] [--stats] [--trace FILE] "
+         "[--placement offcenter|circumcenter] [--variant cdt|box] [--convex-hull] [--auto-holes] "
+         "[--help] [--version] INPUT";
+}
+
+std::string helpText() {
+  return std::string(usageLine()) +
+         "\n\n"
+         "Quality triangle mesh of a planar straight-line graph by Delaunay refinement (Ruppert).\n"
+         "INPUT is a Triangle .poly or .node file, or a .json file {\"points\": [...], \"segments\": [...], ...}.\n"
+         "\n"
+         "  --min-angle DEG      smallest angle to reach, 0..60 (default 30; above ~34 may not complete)\n"
+         "  --max-area A         largest triangle area (default: no bound)\n"
+         "                       --min-angle 0 without --max-area gives the plain constrained Delaunay mesh\n"
+         "  --max-steiner N      at most N new vertices (default: automatic)\n"
+         "  -o BASE              write the mesh: BASE.node, BASE.ele, BASE.poly (triangle format),\n"
+         "                       BASE.json (json) or BASE.svg (svg); without -o only the summary is printed\n"
+         "  --format F           triangle (default), json or svg\n"
+         "  --placement P        offcenter (default) or circumcenter\n"
+         "  --variant V          cdt (default: constrained, no triangles outside the domain) or box\n"
+         "                       (Ruppert's original: conforming mesh of an enclosing box)\n"
+         "  --convex-hull        mesh the whole convex hull, not only what segments enclose\n"
+         "  --auto-holes         without hole seeds: regions at even nesting depth become holes\n"
+         "  --stats              print statistics (vertex kinds, angle histogram, size optimality)\n"
+         "  --trace FILE         write every insertion as JSON lines to FILE\n"
+         "  --quiet              no summary and no warnings (errors and --stats still print)\n"
+         "  --help, --version\n"
+         "\n"
+         "Exit status: 0 success, 1 invalid input, 2 usage error, 3 output could not be written.\n";
+}
+
+namespace {
+
+// Splits "--name=value" so both "--min-angle 20" and "--min-angle=20" work.
+struct Arg {
+  std::string name;
+  std::string inlineValue;
+  bool hasInlineValue = false;
+};
+
+Arg split(const std::string& text) {
+  Arg arg;
+  const std::size_t eq = text.find('=');
+  if (text.rfind("--", 0) == 0 && eq != std::string::npos) {
+    arg.name = text.substr(0, eq);
+    arg.inlineValue = text.substr(eq + 1);
+    arg.hasInlineValue = true;
+  } else {
+    arg.name = text;
+  }
+  return arg;
+}
+
+}  // namespace
+
+CliArgs parseArgs(const std::vector<std::string>& args) {
+  CliArgs out;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const Arg arg = split(args[i]);
+    const std::string& name = arg.name;
+    auto value = [&]() -> std::string {
+      if (arg.hasInlineValue) return arg.inlineValue;
+      if (i + 1 >= args.size()) throw UsageError(name + " needs a value");
+      return args[++i];
+    };
+    auto number = [&]() {
+      const std::string v = value();
+      double d = 0;
+      if (!parseStrictDouble(v, d)) throw UsageError(name + ": '" + v + "' is not a number");
+      return d;
+    };
+    auto flag = [&]() {
+      if (arg.hasInlineValue) throw UsageError(name + " takes no value");
+      return true;
+    };
+
+    if (name == "--min-angle") {
+      out.options.minAngle = number();
+      if (out.options.minAngle < 0 || out.options.minAngle > 60) {
+        throw UsageError("--min-angle must be between 0 and 60 degrees");
+      }
+    } else if (name == "--max-area") {
+      out.options.maxArea = number();
+      if (out.options.maxArea < 0) throw UsageError("--max-area must not be negative");
+    } else if (name == "--max-steiner") {
+      const std::string v = value();
+      if (!parseStrictCount(v, out.options.maxSteiner)) {
+        throw UsageError("--max-steiner: '" + v + "' is not a non-negative integer");
+      }
+    } else if (name == "-o" || name == "--output") {
+      out.outputBase = value();
+      if (out.outputBase.empty()) throw UsageError(name + " needs a non-empty BASE");
+    } else if (name == "--format") {
+      const std::string v = value();
+      if (v == "triangle") out.format = OutputFormat::Triangle;
+      else if (v == "json") out.format = OutputFormat::Json;
+      else if (v == "svg") out.format = OutputFormat::Svg;
+      else throw UsageError("--format: '" + v + "' is not one of triangle, json, svg");
+    } else if (name == "--placement") {
+      const std::string v = value();
+      if (v == "offcenter") out.options.placement = Placement::OffCenter;
+      else if (v == "circumcenter") out.options.placement = Placement::Circumcenter;
+      else throw UsageError("--placement: '" + v + "' is not one of offcenter, circumcenter");
+    } else if (name == "--variant") {
+      const std::string v = value();
+      if (v == "cdt") out.options.variant = Variant::Constrained;
+      else if (v == "box") out.options.variant = Variant::BoundingBox;
+      else throw UsageError("--variant: '" + v + "' is not one of cdt, box");
+    } else if (name == "--trace") {
+      out.tracePath = value();
+      if (out.tracePath.empty()) throw UsageError("--trace needs a non-empty FILE");
+      out.options.trace = true;
+    } else if (name == "--quiet" || name == "-q") {
+      out.quiet = flag();
+    } else if (name == "--stats") {
+      out.stats = flag();
+    } else if (name == "--convex-hull") {
+      out.options.convexHull = flag();
+    } else if (name == "--auto-holes") {
+      out.options.autoHoles = flag();
+    } else if (name == "--help" || name == "-h") {
+      out.help = flag();
+    } else if (name == "--version") {
+      out.version = flag();
+    } else if (name.size() > 1 && name[0] == '-') {
+      throw UsageError("unknown option '" + name + "'");
+    } else {
+      if (!out.input.empty()) throw UsageError("more than one INPUT ('" + out.input + "' and '" + name + "')");
+      if (name.empty()) throw UsageError("INPUT must not be empty");
+      out.input = args[i];
+    }
+  }
+  if (out.input.empty() && !out.help && !out.version) throw UsageError("missing INPUT");
+  return out;
+}
+
+}  // namespace ruppert::cli

@@ -1,0 +1,575 @@
+// Constrained Delaunay refinement: Ruppert's algorithm as in Cheng, Dey & Shewchuk, "Delaunay Mesh
+// Generation", chapter 6, with
+//   §6.2  encroachment = a vertex in a subsegment's closed diametral disk; encroached subsegments are
+//         split first; a skinny triangle's circumcenter is rejected if it encroaches a subsegment,
+//         which is split instead;
+//   §6.3  a queue of encroached subsegments and bucketed bad-triangle queues (worst first), both
+//         lazily invalidated; only new triangles and their edges are checked; O(1) encroachment test
+//         (the angle opposite a subsegment is >= 90 degrees);
+//   §6.4  size bounds: triangles larger than the region's / global / user-function area are split too;
+//   §6.6  concentric-shell splitting of subsegments at acute input corners; triangles nestled in a
+//         small input angle and triangles whose shortest edge is seditious are not split;
+//   §6.7  the CDT holds only the domain, so refinement never leaves it;
+//   §6.8  off-centers (Üngör): the new vertex sits on the shortest edge's bisector, no farther than
+//         where the triangle it forms with that edge just meets the bound.
+// Termination for any input: besides §6.6, a Steiner budget and a floor on subsegment length below
+// which doubles cannot place new points; hitting either ends refinement with complete = false.
+//
+// Terminology: "subsegment" = constrained edge (con != kFree); "corner" = an input or intersection
+// vertex where two constrained edges meet at less than 90 degrees; rho = circumradius / shortest edge.
+#include "refine.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "predicates.h"
+
+namespace ruppert::detail {
+
+bool refinementRequested(const MeshState& m) {
+  const Options& o = *m.options;
+  bool regionArea = false;
+  for (const Region& r : m.input.regions) regionArea = regionArea || r.maxArea > 0;
+  return o.minAngle > 0 || o.maxArea > 0 || regionArea || static_cast<bool>(o.sizeFunction);
+}
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kLengthFloor = 0x1p-40;  // internal units; coordinates lie within (-2, 2)
+constexpr int kBuckets = 64;              // bad-triangle priority classes by smallest angle
+
+struct BadTriangle {
+  std::uint32_t slot, a, b, c;
+};
+
+double dist(const double* p, const double* q) { return std::hypot(p[0] - q[0], p[1] - q[1]); }
+
+// Smallest angle in radians at each corner, and which corner has it.
+struct Shape {
+  double minAngle;     // radians
+  int minCorner;       // index 0..2 of the vertex with the smallest angle
+  int shortestEdge;    // index of the edge (opposite vertex) that is shortest
+  double shortest;     // its length
+  double area;
+};
+
+Shape shapeOf(const double* p0, const double* p1, const double* p2) {
+  const double* p[3] = {p0, p1, p2};
+  Shape s{10, 0, 0, HUGE_VAL, 0};
+  for (int i = 0; i < 3; ++i) {
+    const double* o = p[i];
+    const double* u = p[(i + 1) % 3];
+    const double* w = p[(i + 2) % 3];
+    const double ux = u[0] - o[0], uy = u[1] - o[1], wx = w[0] - o[0], wy = w[1] - o[1];
+    const double cross = ux * wy - uy * wx;
+    const double ang = std::atan2(std::fabs(cross), ux * wx + uy * wy);
+    if (ang < s.minAngle) s.minAngle = ang, s.minCorner = i;
+    const double len = std::hypot(u[0] - w[0], u[1] - w[1]);
+    if (len < s.shortest) s.shortest = len, s.shortestEdge = i;
+    s.area = 0.5 * std::fabs(cross);
+  }
+  return s;
+}
+
+class Refiner {
+ public:
+  explicit Refiner(MeshState& m) : m_(m), t_(m.tri), o_(*m.options) {
+    theta_ = o_.minAngle * kPi / 180.0;
+    scale2_ = m.input.scale * m.input.scale;
+    buckets_.resize(kBuckets);
+  }
+
+  RefineOutcome run() {
+    markCorners();
+    setBudget();
+    // Initial queues: every subsegment and every triangle (linear in the mesh size, §6.3).
+    for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
+      if (!t_.alive(s)) continue;
+      checkTriangle(s);
+      for (std::uint32_t i = 0; i < 3; ++i) checkSubsegment(3 * s + i);
+    }
+    bool stop = false;
+    while (!stop) {
+      while (!encroached_.empty() && !stop) {
+        const EdgeRef e = encroached_.back();
+        encroached_.pop_back();
+        const std::uint32_t h = edgeOf(e);
+        if (h == kNone || t_.con[h] == kFree || !isEncroached(h)) continue;
+        splitSubsegment(h, nullptr, nullptr);
+        stop = outOfBudget();
+      }
+      if (stop) break;
+      BadTriangle bt;
+      if (!popWorst(bt)) break;
+      if (!t_.alive(bt.slot) || t_.tv[3 * bt.slot] != bt.a || t_.tv[3 * bt.slot + 1] != bt.b ||
+          t_.tv[3 * bt.slot + 2] != bt.c)
+        continue;  // stale entry: the triangle is gone
+      splitTriangle(bt);
+      stop = outOfBudget();
+    }
+    finish();
+    return std::move(out_);
+  }
+
+ private:
+  MeshState& m_;
+  Triangulation& t_;
+  const Options& o_;
+  RefineOutcome out_;
+  double theta_ = 0;  // radians
+  double scale2_ = 1;
+  std::uint64_t budget_ = 0, inserted_ = 0;
+  bool cancelled_ = false, budgetHit_ = false;
+  std::uint64_t floorHits_ = 0;
+  struct EdgeRef {
+    std::uint32_t a, b, hint;  // endpoints and a half-edge that was the edge when queued
+  };
+  std::vector<EdgeRef> encroached_;
+  std::vector<std::vector<BadTriangle>> buckets_;
+  int lowestBucket_ = kBuckets;
+  std::vector<std::uint8_t> corner_;  // per vertex: acute input corner (concentric shells apply)
+  std::vector<std::uint32_t> newTris_, parents_;
+  std::vector<double> inheritA_, inheritM_;
+
+  // ---- set-up --------------------------------------------------------------------------------
+  void markCorners() {
+    // Directions of the constrained edges around each input / intersection vertex; a corner is
+    // acute when two of them are less than 90 degrees apart.
+    corner_.assign(t_.vertexCount(), 0);
+    std::vector<std::vector<double>> dirs(t_.vertexCount());
+    for (std::uint32_t h = 0; h < t_.tv.size(); ++h) {
+      if (!t_.alive(h / 3) || t_.con[h] == kFree) continue;
+      const std::uint32_t a = t_.origin(h), b = t_.dest(h);
+      if (t_.twin[h] != kNone && t_.twin[h] < h) continue;  // each edge once
+      for (int k = 0; k < 2; ++k) {
+        const std::uint32_t v = k ? b : a, w = k ? a : b;
+        if (m_.kind[v] != VertexKind::Input && m_.kind[v] != VertexKind::Intersection) continue;
+        dirs[v].push_back(std::atan2(t_.xy[2 * w + 1] - t_.xy[2 * v + 1], t_.xy[2 * w] - t_.xy[2 * v]));
+      }
+    }
+    for (std::uint32_t v = 0; v < dirs.size(); ++v) {
+      auto& d = dirs[v];
+      if (d.size() < 2) continue;
+      std::sort(d.begin(), d.end());
+      for (std::size_t i = 0; i < d.size(); ++i) {
+        double gap = (i + 1 < d.size() ? d[i + 1] : d[0] + 2 * kPi) - d[i];
+        if (gap < kPi / 2 - 1e-12) corner_[v] = 1;
+      }
+    }
+  }
+
+  void setBudget() {
+    if (o_.maxSteiner != kAutoSteinerBudget) {
+      budget_ = o_.maxSteiner;
+      return;
+    }
+    // Generous for any reasonable input: a million, plus a thousand per input vertex, plus eight
+    // vertices per unit of area bound (a mesh of area A with triangles of area a needs ~A/(2a)).
+    double estimate = 1e6 + 1000.0 * m_.inputCount;
+    for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
+      if (!t_.alive(s) || m_.maxArea[s] <= 0) continue;
+      const Shape sh = shapeOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
+      estimate += 8 * sh.area / m_.maxArea[s];
+    }
+    if (o_.sizeFunction) estimate += 1e8;
+    budget_ = static_cast<std::uint64_t>(std::min(estimate, 4e9));
+  }
+
+  // ---- tests ---------------------------------------------------------------------------------
+  // Closed diametral disk test: v encroaches (a, b) iff the angle avb is at least 90 degrees.
+  bool encroaches(const double* v, const double* a, const double* b) const {
+    return (a[0] - v[0]) * (b[0] - v[0]) + (a[1] - v[1]) * (b[1] - v[1]) <= 0;
+  }
+  // O(1) test of Exercise 1: the subsegment h is encroached iff an apex on either side sees it at
+  // 90 degrees or more.
+  bool isEncroached(std::uint32_t h) const {
+    const double* a = t_.pt(t_.origin(h));
+    const double* b = t_.pt(t_.dest(h));
+    if (encroaches(t_.pt(t_.apex(h)), a, b)) return true;
+    const std::uint32_t g = t_.twin[h];
+    return g != kNone && encroaches(t_.pt(t_.apex(g)), a, b);
+  }
+  void checkSubsegment(std::uint32_t h) {
+    if (t_.con[h] == kFree) return;
+    if (encroaches(t_.pt(t_.apex(h)), t_.pt(t_.origin(h)), t_.pt(t_.dest(h))))
+      encroached_.push_back({t_.origin(h), t_.dest(h), h});
+  }
+
+  // The half-edge for a queued edge: the remembered one if it still is that edge, else a search.
+  // (The search alone is not enough: at a vertex where the domain touches itself, rotating around
+  // the vertex cannot reach every triangle.)
+  std::uint32_t edgeOf(const EdgeRef& e) const {
+    const std::uint32_t t = e.hint / 3;
+    if (t_.alive(t))
+      for (std::uint32_t i = 0; i < 3; ++i) {
+        const std::uint32_t h = 3 * t + i;
+        const std::uint32_t o = t_.origin(h), d = t_.dest(h);
+        if ((o == e.a && d == e.b) || (o == e.b && d == e.a)) return h;
+      }
+    return t_.findEdge(e.a, e.b);
+  }
+
+  double maxAreaAt(std::uint32_t s, const Shape& sh) const {
+    double bound = m_.maxArea[s];
+    if (o_.sizeFunction) {
+      const double* p0 = t_.pt(t_.tv[3 * s]);
+      const double* p1 = t_.pt(t_.tv[3 * s + 1]);
+      const double* p2 = t_.pt(t_.tv[3 * s + 2]);
+      const double cx = (p0[0] + p1[0] + p2[0]) / 3 / m_.input.scale;
+      const double cy = (p0[1] + p1[1] + p2[1]) / 3 / m_.input.scale;
+      const double user = o_.sizeFunction(cx, cy);
+      if (std::isfinite(user) && user > 0) bound = bound > 0 ? std::min(bound, user * scale2_) : user * scale2_;
+    }
+    (void)sh;
+    return bound;
+  }
+
+  bool isSkinny(const Shape& sh) const { return theta_ > 0 && sh.minAngle < theta_ * (1 - 1e-12); }
+
+  void checkTriangle(std::uint32_t s) {
+    const Shape sh = shapeOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
+    const double bound = maxAreaAt(s, sh);
+    const bool large = bound > 0 && sh.area > bound;
+    if (!isSkinny(sh) && !large) return;
+    // Worst first: bucket by smallest angle (0..60 degrees), too-large-but-shapely ones last.
+    int k = isSkinny(sh) ? static_cast<int>(sh.minAngle / (kPi / 3) * (kBuckets - 1)) : kBuckets - 1;
+    k = std::clamp(k, 0, kBuckets - 1);
+    buckets_[k].push_back({s, t_.tv[3 * s], t_.tv[3 * s + 1], t_.tv[3 * s + 2]});
+    lowestBucket_ = std::min(lowestBucket_, k);
+  }
+
+  bool popWorst(BadTriangle& out) {
+    while (lowestBucket_ < kBuckets) {
+      auto& b = buckets_[lowestBucket_];
+      if (!b.empty()) {
+        out = b.back();
+        b.pop_back();
+        return true;
+      }
+      ++lowestBucket_;
+    }
+    return false;
+  }
+
+  bool outOfBudget() {
+    if (inserted_ >= budget_) {
+      budgetHit_ = true;
+      return true;
+    }
+    if (o_.onProgress && (inserted_ & 4095) == 0 && inserted_ > 0) {
+      Progress p;
+      p.insertedVertices = inserted_;
+      p.triangles = t_.slotCount() - t_.freeSlots.size();
+      p.worstAngle = lowestBucket_ < kBuckets ? 60.0 * lowestBucket_ / (kBuckets - 1) : o_.minAngle;
+      if (!o_.onProgress(p)) {
+        cancelled_ = true;
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // ---- exemptions (§6.6) -------------------------------------------------------------------------
+  // The triangle's smallest angle is an input angle: both edges at that corner are subsegments.
+  bool nestledInInputAngle(std::uint32_t s, const Shape& sh) const {
+    const std::uint32_t i = static_cast<std::uint32_t>(sh.minCorner);
+    return t_.con[3 * s + (i + 1) % 3] != kFree && t_.con[3 * s + (i + 2) % 3] != kFree;
+  }
+
+  // Shortest edge u-w is seditious: u and w split two different segments that meet at a vertex z at
+  // less than 60 degrees, at the same distance from z (the same concentric shell).
+  bool seditious(std::uint32_t s, const Shape& sh) const {
+    const std::uint32_t h = 3 * s + static_cast<std::uint32_t>(sh.shortestEdge);
+    const std::uint32_t u = t_.origin(h), w = t_.dest(h);
+    if (m_.kind[u] != VertexKind::SegmentSplit || m_.kind[w] != VertexKind::SegmentSplit) return false;
+    const std::int32_t su = m_.onSegment[u], sw = m_.onSegment[w];
+    if (su < 0 || sw < 0 || su == sw) return false;
+    const Plc& plc = *m_.plc;
+    const auto& rep = m_.input.representative;
+    const std::uint32_t a0 = rep[plc.segments[2 * su]], a1 = rep[plc.segments[2 * su + 1]];
+    const std::uint32_t b0 = rep[plc.segments[2 * sw]], b1 = rep[plc.segments[2 * sw + 1]];
+    std::uint32_t z = kNone, ea = kNone, eb = kNone;
+    if (a0 == b0) z = a0, ea = a1, eb = b1;
+    else if (a0 == b1) z = a0, ea = a1, eb = b0;
+    else if (a1 == b0) z = a1, ea = a0, eb = b1;
+    else if (a1 == b1) z = a1, ea = a0, eb = b0;
+    if (z == kNone) return false;
+    const double* pz = t_.pt(z);
+    const double ax = t_.xy[2 * ea] - pz[0], ay = t_.xy[2 * ea + 1] - pz[1];
+    const double bx = t_.xy[2 * eb] - pz[0], by = t_.xy[2 * eb + 1] - pz[1];
+    const double angle = std::atan2(std::fabs(ax * by - ay * bx), ax * bx + ay * by);
+    if (angle >= kPi / 3) return false;
+    const double du = dist(pz, t_.pt(u)), dw = dist(pz, t_.pt(w));
+    return std::fabs(du - dw) <= 1e-6 * std::max(du, dw);
+  }
+
+  // ---- insertion ---------------------------------------------------------------------------------
+  // Insert vertex v at `loc`; new triangles inherit region data and are checked; their
+  // subsegments are checked for encroachment. False (nothing changed) if the insertion would
+  // create an inverted triangle (rounding at the precision limit).
+  bool insertAt(std::uint32_t v, const Location& loc) {
+    if (!t_.insertVertex(v, loc, &newTris_, &parents_)) return false;
+    ++inserted_;
+    if (m_.attribute.size() < t_.slotCount()) {
+      m_.attribute.resize(t_.slotCount(), 0);
+      m_.maxArea.resize(t_.slotCount(), 0);
+    }
+    inheritA_.resize(newTris_.size());
+    inheritM_.resize(newTris_.size());
+    for (std::size_t k = 0; k < newTris_.size(); ++k)
+      inheritA_[k] = m_.attribute[parents_[k]], inheritM_[k] = m_.maxArea[parents_[k]];
+    for (std::size_t k = 0; k < newTris_.size(); ++k)
+      m_.attribute[newTris_[k]] = inheritA_[k], m_.maxArea[newTris_[k]] = inheritM_[k];
+    for (std::uint32_t s : newTris_) {
+      checkTriangle(s);
+      for (std::uint32_t i = 0; i < 3; ++i) checkSubsegment(3 * s + i);
+      // The outer edge's far side is an old triangle: its apex may now encroach nothing new, but a
+      // split subsegment's halves need checking from both sides.
+      const std::uint32_t g = t_.twin[3 * s];
+      if (g != kNone) checkSubsegment(g);
+    }
+    return true;
+  }
+
+  // Split subsegment h (§6.2, §6.6). `by` = the encroaching vertex if known, for the trace.
+  // Returns false if it cannot be split (precision floor).
+  bool splitSubsegment(std::uint32_t h, const BadTriangle* bt, const double* rejected) {
+    const std::uint32_t a = t_.origin(h), b = t_.dest(h);
+    // Copies: adding a vertex below may reallocate the coordinate array.
+    const double pa[2] = {t_.xy[2 * a], t_.xy[2 * a + 1]};
+    const double pb[2] = {t_.xy[2 * b], t_.xy[2 * b + 1]};
+    const double len = dist(pa, pb);
+    if (len < kLengthFloor) {
+      ++floorHits_;
+      return false;
+    }
+    // Concentric shells: measured from an acute corner, the piece next to it gets a power-of-two
+    // length in (len/3, 2len/3], so equal pieces on neighbouring segments do not encroach each other.
+    double f = 0.5;
+    const bool ca = corner_[a] != 0, cb = corner_[b] != 0;
+    if (ca != cb) {
+      const double d = std::exp2(std::floor(std::log2(2.0 * len / 3.0)));
+      f = ca ? d / len : 1.0 - d / len;
+    }
+    const double x = pa[0] + f * (pb[0] - pa[0]), y = pa[1] + f * (pb[1] - pa[1]);
+    const std::int32_t segment = t_.con[h] >= 0 ? t_.con[h] : -1;
+    const std::uint32_t v = m_.addVertex(x, y, VertexKind::SegmentSplit, segment);
+    corner_.push_back(0);
+    Location loc;
+    loc.kind = Location::OnEdge;
+    loc.tri = h / 3;
+    loc.edge = h;
+    if ((x == pa[0] && y == pa[1]) || (x == pb[0] && y == pb[1]) || !insertAt(v, loc)) {
+      // Not placeable: the new vertex stays unused (kind Unused) so output stays consistent.
+      m_.kind[v] = VertexKind::Unused;
+      ++floorHits_;
+      return false;
+    }
+    if (o_.trace) {
+      Event e;
+      e.kind = rejected ? EventKind::Rejected : EventKind::SegmentSplit;
+      e.vertex = v, e.x = x, e.y = y, e.a = a, e.b = b;
+      if (rejected && bt) e.t0 = bt->a, e.t1 = bt->b, e.t2 = bt->c, e.cx = rejected[0], e.cy = rejected[1];
+      out_.events.push_back(e);
+    }
+    return true;
+  }
+
+  // Straight walk from the centroid of triangle s towards p. Stops at the first subsegment in the
+  // way (blocked = its half-edge), else returns p's location.
+  Location walk(std::uint32_t s, const double* p, std::uint32_t& blocked) const {
+    blocked = kNone;
+    const double* q0 = t_.pt(t_.tv[3 * s]);
+    const double* q1 = t_.pt(t_.tv[3 * s + 1]);
+    const double* q2 = t_.pt(t_.tv[3 * s + 2]);
+    const double o[2] = {(q0[0] + q1[0] + q2[0]) / 3, (q0[1] + q1[1] + q2[1]) / 3};
+    std::uint32_t t = s;
+    for (std::uint32_t step = 0; step < 100000; ++step) {
+      std::uint32_t exit = kNone, fallback = kNone;
+      double ori[3];
+      for (std::uint32_t i = 0; i < 3; ++i) {
+        const std::uint32_t h = 3 * t + i;
+        ori[i] = orient2d(t_.pt(t_.origin(h)), t_.pt(t_.dest(h)), p);
+        if (ori[i] < 0) {
+          if (fallback == kNone) fallback = h;
+          const double su = orient2d(o, p, t_.pt(t_.origin(h))), sv = orient2d(o, p, t_.pt(t_.dest(h)));
+          if (exit == kNone && ((su >= 0 && sv <= 0) || (su <= 0 && sv >= 0))) exit = h;
+        }
+      }
+      if (exit == kNone) exit = fallback;
+      if (exit == kNone) {
+        Location loc;
+        loc.tri = t;
+        int zeros = 0;
+        std::uint32_t zi = 0, zj = 0;
+        for (std::uint32_t i = 0; i < 3; ++i)
+          if (ori[i] == 0) (zeros++ == 0 ? zi : zj) = i;
+        if (zeros == 0) loc.kind = Location::InTriangle;
+        else if (zeros == 1) loc.kind = Location::OnEdge, loc.edge = 3 * t + zi;
+        else loc.kind = Location::OnVertex, loc.vertex = t_.tv[3 * t + (3 - zi - zj)];
+        return loc;
+      }
+      if (t_.con[exit] != kFree || t_.twin[exit] == kNone) {
+        blocked = exit;
+        return Location{};
+      }
+      t = t_.twin[exit] / 3;
+    }
+    return Location{};
+  }
+
+  void splitTriangle(const BadTriangle& bt) {
+    const std::uint32_t s = bt.slot;
+    const double* p[3] = {t_.pt(bt.a), t_.pt(bt.b), t_.pt(bt.c)};
+    const Shape sh = shapeOf(p[0], p[1], p[2]);
+    const bool skinny = isSkinny(sh);
+    if (skinny && (nestledInInputAngle(s, sh) || seditious(s, sh))) {
+      const double bound = maxAreaAt(s, sh);
+      if (!(bound > 0 && sh.area > bound)) return;  // left alone on purpose; counted in finish()
+    }
+    if (sh.shortest < kLengthFloor) {
+      ++floorHits_;
+      return;
+    }
+    // Circumcenter, relative to p[0] for accuracy.
+    const double bx = p[1][0] - p[0][0], by = p[1][1] - p[0][1];
+    const double cx = p[2][0] - p[0][0], cy = p[2][1] - p[0][1];
+    const double d = 2 * (bx * cy - by * cx);
+    if (!(d > 0)) {
+      ++floorHits_;
+      return;
+    }
+    const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+    double cc[2] = {p[0][0] + (cy * b2 - by * c2) / d, p[0][1] + (bx * c2 - cx * b2) / d};
+    double target[2] = {cc[0], cc[1]};
+    VertexKind kind = VertexKind::Interior;
+    if (skinny && o_.placement == Placement::OffCenter) {
+      // Off-center: on the bisector of the shortest edge, where the isosceles triangle on that edge
+      // has apex angle exactly theta (so it just meets the bound).
+      const int e = sh.shortestEdge;
+      const double* u = p[(e + 1) % 3];
+      const double* w = p[(e + 2) % 3];
+      const double mx = (u[0] + w[0]) / 2, my = (u[1] + w[1]) / 2;
+      const double toC = std::hypot(cc[0] - mx, cc[1] - my);
+      const double hOff = (sh.shortest / 2) / std::tan(theta_ / 2);
+      if (hOff < toC && toC > 0) {
+        target[0] = mx + (cc[0] - mx) * (hOff / toC);
+        target[1] = my + (cc[1] - my) * (hOff / toC);
+        kind = VertexKind::OffCenter;
+      }
+    }
+    std::uint32_t blocked;
+    Location loc = walk(s, target, blocked);
+    if (blocked != kNone) {
+      // The new vertex would lie beyond a subsegment: that subsegment is encroached (Prop. 6.2).
+      reject(bt, blocked, target);
+      return;
+    }
+    if (loc.kind == Location::Lost || loc.kind == Location::OnVertex) {
+      ++floorHits_;
+      return;
+    }
+    if (loc.kind == Location::OnEdge && t_.con[loc.edge] != kFree) {
+      reject(bt, loc.edge, target);
+      return;
+    }
+    // Reject if the new vertex would encroach a subsegment on its cavity's boundary (§6.2, §6.3).
+    t_.cavity(target, loc, cavityTris_, cavityBoundary_);
+    bool rejectedAny = false;
+    for (std::uint32_t h : cavityBoundary_) {
+      if (t_.con[h] == kFree) continue;
+      if (encroaches(target, t_.pt(t_.origin(h)), t_.pt(t_.dest(h)))) {
+        rejectPairs_.push_back({t_.origin(h), t_.dest(h), h});
+        rejectedAny = true;
+      }
+    }
+    if (rejectedAny) {
+      ++out_.rejected;
+      bool splitSome = false;
+      for (const EdgeRef& e : rejectPairs_) {
+        const std::uint32_t h = edgeOf(e);
+        if (h != kNone && t_.con[h] != kFree) splitSome = splitSubsegment(h, &bt, target) || splitSome;
+      }
+      rejectPairs_.clear();
+      if (splitSome) requeue(bt);
+      return;
+    }
+    const std::uint32_t v = m_.addVertex(target[0], target[1], kind, -1);
+    corner_.push_back(0);
+    if (!insertAt(v, loc)) {
+      m_.kind[v] = VertexKind::Unused;
+      ++floorHits_;
+      return;
+    }
+    if (o_.trace) {
+      Event e;
+      e.kind = kind == VertexKind::OffCenter ? EventKind::OffCenter : EventKind::Circumcenter;
+      e.vertex = v, e.x = target[0], e.y = target[1], e.t0 = bt.a, e.t1 = bt.b, e.t2 = bt.c;
+      out_.events.push_back(e);
+    }
+  }
+
+  void reject(const BadTriangle& bt, std::uint32_t h, const double* target) {
+    ++out_.rejected;
+    if (splitSubsegment(h, &bt, target)) requeue(bt);
+  }
+
+  // The triangle survives a rejection unless the split destroyed it; keep it queued (§6.3).
+  void requeue(const BadTriangle& bt) {
+    if (t_.alive(bt.slot) && t_.tv[3 * bt.slot] == bt.a && t_.tv[3 * bt.slot + 1] == bt.b &&
+        t_.tv[3 * bt.slot + 2] == bt.c)
+      checkTriangle(bt.slot);
+  }
+
+  std::vector<std::uint32_t> cavityTris_, cavityBoundary_;
+  std::vector<EdgeRef> rejectPairs_;
+
+  // ---- result ------------------------------------------------------------------------------------
+  void finish() {
+    std::uint64_t nestled = 0, sedition = 0, otherSkinny = 0, large = 0;
+    for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
+      if (!t_.alive(s)) continue;
+      const Shape sh = shapeOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
+      const double bound = maxAreaAt(s, sh);
+      if (bound > 0 && sh.area > bound * (1 + 1e-9)) ++large;
+      if (!isSkinny(sh)) continue;
+      if (nestledInInputAngle(s, sh)) ++nestled;
+      else if (seditious(s, sh)) ++sedition;
+      else ++otherSkinny;
+    }
+    auto add = [&](ReasonKind k, std::uint64_t n, const std::string& msg) {
+      out_.reasons.push_back(Reason{k, n, msg});
+    };
+    const std::uint64_t unmet = otherSkinny + large;
+    if (cancelled_)
+      add(ReasonKind::Cancelled, unmet, "refinement was cancelled; " + std::to_string(unmet) +
+                                            " triangle(s) do not meet the bounds");
+    else if (budgetHit_)
+      add(ReasonKind::SteinerBudget, unmet, "the Steiner budget of " + std::to_string(budget_) +
+                                                " vertices was reached; " + std::to_string(unmet) +
+                                                " triangle(s) do not meet the bounds");
+    else if (unmet > 0 || floorHits_ > 0)
+      add(ReasonKind::PrecisionFloor, unmet,
+          std::to_string(unmet) + " triangle(s) could not be improved: " + std::to_string(floorHits_) +
+              " insertion(s) were refused because the new vertex would be closer than double precision can "
+              "resolve, or its cavity would wrap around a vertex where the domain touches itself");
+    if (nestled)
+      add(ReasonKind::SmallInputAngle, nestled, std::to_string(nestled) +
+          " triangle(s) sit in input angles smaller than the bound; no vertex can fix them (section 6.6)");
+    if (sedition)
+      add(ReasonKind::SeditiousEdge, sedition, std::to_string(sedition) +
+          " triangle(s) have a seditious shortest edge between segments meeting at under 60 degrees; "
+          "left alone so refinement terminates (section 6.6)");
+  }
+};
+
+}  // namespace
+
+RefineOutcome refine(MeshState& m) {
+  Refiner r(m);
+  return r.run();
+}
+
+}  // namespace ruppert::detail

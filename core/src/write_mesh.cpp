@@ -1,0 +1,301 @@
+// Writers: Triangle's .node/.ele/.poly, JSON and SVG.
+//
+// Coordinates are printed with %.17g: 17 significant digits identify every double uniquely, so a
+// written file reads back bit-exact (strtod rounds correctly). Triangle formats print indices in
+// mesh.indexBase so a 1-based input yields 1-based output. JSON indices are always 0-based, as the
+// JSON shape in ruppert.h defines them (JavaScript indexes typed arrays from 0).
+// Nothing here prints "nan": JSON writes null for a non-finite value, and the text formats refuse a
+// non-finite coordinate (Internal error) before writing a byte.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "ruppert/ruppert.h"
+
+namespace ruppert {
+namespace {
+
+// %.17g of a finite value.
+std::string real(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+std::string jsonReal(double v) { return std::isfinite(v) ? real(v) : "null"; }
+
+int baseOf(const Mesh& mesh) { return mesh.indexBase == 1 ? 1 : 0; }
+
+std::size_t pointCount(const Mesh& mesh) { return mesh.points.size() / 2; }
+
+void requireFinite(const std::vector<double>& values, const char* what) {
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (!std::isfinite(values[i])) {
+      throw Error(ErrorCode::Internal, std::string("cannot write a non-finite coordinate: ") + what + "[" +
+                                           std::to_string(i) + "] = " + real(values[i]));
+    }
+  }
+}
+
+// Marker per point: the mesh's own when it has one per point; otherwise Triangle's convention of 1 for
+// vertices on a (sub)segment and 0 elsewhere.
+std::vector<std::int32_t> pointMarkers(const Mesh& mesh) {
+  const std::size_t n = pointCount(mesh);
+  if (mesh.pointMarkers.size() == n) return mesh.pointMarkers;
+  std::vector<std::int32_t> markers(n, 0);
+  for (std::uint32_t v : mesh.segments) {
+    if (v < n) markers[v] = 1;
+  }
+  return markers;
+}
+
+void writePoints(std::ostream& out, const Mesh& mesh) {
+  requireFinite(mesh.points, "points");
+  const std::vector<std::int32_t> markers = pointMarkers(mesh);
+  const std::size_t base = static_cast<std::size_t>(baseOf(mesh));
+  out << pointCount(mesh) << " 2 0 1\n";
+  for (std::size_t i = 0; i < pointCount(mesh); ++i) {
+    out << (i + base) << ' ' << real(mesh.points[2 * i]) << ' ' << real(mesh.points[2 * i + 1]) << ' '
+        << markers[i] << '\n';
+  }
+}
+
+bool anyNonZero(const std::vector<double>& values) {
+  return std::any_of(values.begin(), values.end(), [](double v) { return v != 0; });
+}
+
+// JSON string with the escapes RFC 8259 requires.
+std::string jsonString(const std::string& s) {
+  std::string out = "\"";
+  for (char ch : s) {
+    const unsigned char c = static_cast<unsigned char>(ch);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += ch;
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+    } else {
+      out += ch;
+    }
+  }
+  return out + "\"";
+}
+
+template <typename T, typename Format>
+void jsonArray(std::ostream& out, const char* key, const std::vector<T>& values, Format format) {
+  out << "  \"" << key << "\": [";
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i) out << ',';
+    out << format(values[i]);
+  }
+  out << "]";
+}
+
+template <typename T>
+std::string integer(T v) { return std::to_string(v); }
+
+const char* reasonName(ReasonKind kind) {
+  switch (kind) {
+    case ReasonKind::SmallInputAngle: return "smallInputAngle";
+    case ReasonKind::SeditiousEdge: return "seditiousEdge";
+    case ReasonKind::SteinerBudget: return "steinerBudget";
+    case ReasonKind::PrecisionFloor: return "precisionFloor";
+    case ReasonKind::Cancelled: return "cancelled";
+  }
+  return "unknown";
+}
+
+const char* noticeName(NoticeKind kind) {
+  switch (kind) {
+    case NoticeKind::DuplicatePoint: return "duplicatePoint";
+    case NoticeKind::ZeroLengthSegment: return "zeroLengthSegment";
+    case NoticeKind::DuplicateSegment: return "duplicateSegment";
+    case NoticeKind::VertexOnSegment: return "vertexOnSegment";
+    case NoticeKind::SegmentsCross: return "segmentsCross";
+    case NoticeKind::SegmentsOverlap: return "segmentsOverlap";
+    case NoticeKind::HoleOutsideDomain: return "holeOutsideDomain";
+    case NoticeKind::RegionOutsideDomain: return "regionOutsideDomain";
+    case NoticeKind::NothingEnclosed: return "nothingEnclosed";
+  }
+  return "unknown";
+}
+
+void jsonStats(std::ostream& out, const Stats& s) {
+  out << "  \"stats\": {\"vertices\": " << s.vertices << ", \"triangles\": " << s.triangles
+      << ", \"minAngle\": " << jsonReal(s.minAngle) << ", \"maxAngle\": " << jsonReal(s.maxAngle)
+      << ", \"angleHistogram\": [";
+  for (std::size_t i = 0; i < s.angleHistogram.size(); ++i) out << (i ? "," : "") << s.angleHistogram[i];
+  out << "], \"inputVertices\": " << s.inputVertices << ", \"segmentVertices\": " << s.segmentVertices
+      << ", \"interiorVertices\": " << s.interiorVertices << ", \"offCenterVertices\": " << s.offCenterVertices
+      << ", \"intersectionVertices\": " << s.intersectionVertices
+      << ", \"rejectedCircumcenters\": " << s.rejectedCircumcenters << ", \"lfsIntegral\": " << jsonReal(s.lfsIntegral)
+      << ", \"trianglesPerLfsIntegral\": " << jsonReal(s.trianglesPerLfsIntegral)
+      << ", \"milliseconds\": " << jsonReal(s.milliseconds) << "}";
+}
+
+void finish(std::ostream& out, const char* what) {
+  out.flush();
+  if (!out) throw Error(ErrorCode::IoError, std::string("writing the ") + what + " output failed");
+}
+
+}  // namespace
+
+void writeNode(std::ostream& out, const Mesh& mesh) {
+  writePoints(out, mesh);
+  finish(out, ".node");
+}
+
+void writeEle(std::ostream& out, const Mesh& mesh) {
+  const std::size_t n = mesh.triangles.size() / 3;
+  const std::size_t base = static_cast<std::size_t>(baseOf(mesh));
+  // Region attributes are written (Triangle's -A output) only when some triangle has one.
+  const bool attributes = mesh.triangleAttributes.size() == n && anyNonZero(mesh.triangleAttributes);
+  if (attributes) requireFinite(mesh.triangleAttributes, "triangleAttributes");
+  out << n << " 3 " << (attributes ? 1 : 0) << '\n';
+  for (std::size_t t = 0; t < n; ++t) {
+    out << (t + base) << ' ' << (mesh.triangles[3 * t] + base) << ' ' << (mesh.triangles[3 * t + 1] + base) << ' '
+        << (mesh.triangles[3 * t + 2] + base);
+    if (attributes) out << ' ' << real(mesh.triangleAttributes[t]);
+    out << '\n';
+  }
+  finish(out, ".ele");
+}
+
+void writePoly(std::ostream& out, const Mesh& mesh, const Plc& input) {
+  requireFinite(input.holes, "holes");
+  for (std::size_t i = 0; i < input.regions.size(); ++i) {
+    const Region& r = input.regions[i];
+    requireFinite({r.x, r.y, r.attribute, r.maxArea}, ("regions[" + std::to_string(i) + "]").c_str());
+  }
+  writePoints(out, mesh);
+  const std::size_t base = static_cast<std::size_t>(baseOf(mesh));
+  const std::size_t n = mesh.segments.size() / 2;
+  out << n << " 1\n";
+  for (std::size_t s = 0; s < n; ++s) {
+    // Marker = input segment id + 1, so 0 (Triangle's "no marker") marks the hull edges we added.
+    const std::int64_t id = s < mesh.segmentIds.size() ? mesh.segmentIds[s] : kNoInputSegment;
+    out << (s + base) << ' ' << (mesh.segments[2 * s] + base) << ' ' << (mesh.segments[2 * s + 1] + base) << ' '
+        << (id == kNoInputSegment ? 0 : id + 1) << '\n';
+  }
+  const std::size_t holes = input.holes.size() / 2;
+  out << holes << '\n';
+  for (std::size_t h = 0; h < holes; ++h) {
+    out << (h + base) << ' ' << real(input.holes[2 * h]) << ' ' << real(input.holes[2 * h + 1]) << '\n';
+  }
+  out << input.regions.size() << '\n';
+  for (std::size_t i = 0; i < input.regions.size(); ++i) {
+    const Region& r = input.regions[i];
+    // Triangle reads a negative area as "no bound"; Plc spells that as <= 0.
+    out << (i + base) << ' ' << real(r.x) << ' ' << real(r.y) << ' ' << real(r.attribute) << ' '
+        << (r.maxArea > 0 ? real(r.maxArea) : "-1") << '\n';
+  }
+  finish(out, ".poly");
+}
+
+void writeJson(std::ostream& out, const Mesh& mesh, const Plc& input) {
+  auto number = [](double v) { return jsonReal(v); };
+  auto whole = [](auto v) { return integer(v); };
+  out << "{\n";
+  jsonArray(out, "points", mesh.points, number);
+  out << ",\n";
+  jsonArray(out, "segments", mesh.segments, whole);
+  out << ",\n";
+  jsonArray(out, "holes", input.holes, number);
+  out << ",\n  \"regions\": [";
+  for (std::size_t i = 0; i < input.regions.size(); ++i) {
+    const Region& r = input.regions[i];
+    out << (i ? ", " : "") << "{\"x\": " << jsonReal(r.x) << ", \"y\": " << jsonReal(r.y)
+        << ", \"attribute\": " << jsonReal(r.attribute) << ", \"maxArea\": " << jsonReal(r.maxArea) << "}";
+  }
+  out << "],\n";
+  jsonArray(out, "triangles", mesh.triangles, whole);
+  out << ",\n";
+  jsonArray(out, "neighbors", mesh.neighbors, whole);
+  out << ",\n";
+  jsonArray(out, "segmentIds", mesh.segmentIds, whole);
+  out << ",\n";
+  jsonArray(out, "vertexKinds", mesh.vertexKinds, [](std::uint8_t v) { return integer(static_cast<int>(v)); });
+  out << ",\n";
+  jsonArray(out, "triangleAttributes", mesh.triangleAttributes, number);
+  out << ",\n  \"complete\": " << (mesh.complete ? "true" : "false") << ",\n  \"reasons\": [";
+  for (std::size_t i = 0; i < mesh.reasons.size(); ++i) {
+    const Reason& r = mesh.reasons[i];
+    out << (i ? ", " : "") << "{\"kind\": \"" << reasonName(r.kind) << "\", \"count\": " << r.count
+        << ", \"message\": " << jsonString(r.message) << "}";
+  }
+  out << "],\n  \"notices\": [";
+  for (std::size_t i = 0; i < mesh.notices.size(); ++i) {
+    const Notice& n = mesh.notices[i];
+    out << (i ? ", " : "") << "{\"kind\": \"" << noticeName(n.kind) << "\", \"a\": " << n.a << ", \"b\": " << n.b
+        << ", \"x\": " << jsonReal(n.x) << ", \"y\": " << jsonReal(n.y) << ", \"message\": " << jsonString(n.message)
+        << "}";
+  }
+  out << "],\n";
+  jsonStats(out, mesh.stats);
+  out << "\n}\n";
+  finish(out, "JSON");
+}
+
+void writeSvg(std::ostream& out, const Mesh& mesh) {
+  requireFinite(mesh.points, "points");
+  const std::size_t n = pointCount(mesh);
+  // Fit the view to the vertices the triangles use (an unused far-away input point would shrink the
+  // drawing to a dot); with no triangles, to all points.
+  std::vector<char> used(n, mesh.triangles.empty() ? 1 : 0);
+  for (std::uint32_t v : mesh.triangles) {
+    if (v < n) used[v] = 1;
+  }
+  double minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!used[i]) continue;
+    minX = std::min(minX, mesh.points[2 * i]);
+    maxX = std::max(maxX, mesh.points[2 * i]);
+    minY = std::min(minY, mesh.points[2 * i + 1]);
+    maxY = std::max(maxY, mesh.points[2 * i + 1]);
+  }
+  if (!(minX <= maxX)) minX = maxX = minY = maxY = 0;  // nothing to draw
+  double w = maxX - minX, h = maxY - minY;
+  const double size = std::max(w, h) > 0 ? std::max(w, h) : 1;
+  const double margin = 0.02 * size;
+  if (w <= 0) w = size;
+  if (h <= 0) h = size;
+  // SVG's y axis points down; printing -y makes the picture y-up like the mesh.
+  const double viewX = minX - margin, viewY = -maxY - margin, viewW = w + 2 * margin, viewH = h + 2 * margin;
+  const double pixels = 1000;
+  const double pixelW = viewW >= viewH ? pixels : pixels * viewW / viewH;
+  const double pixelH = viewW >= viewH ? pixels * viewH / viewW : pixels;
+  auto xy = [&mesh](std::uint32_t v) { return real(mesh.points[2 * v]) + ' ' + real(-mesh.points[2 * v + 1]); };
+
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << real(viewX) << ' ' << real(viewY) << ' '
+      << real(viewW) << ' ' << real(viewH) << "\" width=\"" << std::lround(pixelW) << "\" height=\""
+      << std::lround(pixelH) << "\">\n";
+  out << "<title>" << n << " vertices, " << mesh.triangles.size() / 3 << " triangles</title>\n";
+  // non-scaling-stroke: line widths in screen pixels whatever the coordinate scale.
+  out << "<path fill=\"#dfe9f5\" stroke=\"#3a5a80\" stroke-width=\"0.6\" stroke-linejoin=\"round\" "
+         "vector-effect=\"non-scaling-stroke\" d=\"";
+  for (std::size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
+    const std::uint32_t a = mesh.triangles[t], b = mesh.triangles[t + 1], c = mesh.triangles[t + 2];
+    if (a >= n || b >= n || c >= n) continue;
+    out << 'M' << xy(a) << 'L' << xy(b) << 'L' << xy(c) << 'Z';
+  }
+  out << "\"/>\n";
+  out << "<path fill=\"none\" stroke=\"#111\" stroke-width=\"2\" stroke-linecap=\"round\" "
+         "vector-effect=\"non-scaling-stroke\" d=\"";
+  for (std::size_t s = 0; s + 1 < mesh.segments.size(); s += 2) {
+    const std::uint32_t a = mesh.segments[s], b = mesh.segments[s + 1];
+    if (a >= n || b >= n) continue;
+    out << 'M' << xy(a) << 'L' << xy(b);
+  }
+  out << "\"/>\n</svg>\n";
+  finish(out, "SVG");
+}
+
+}  // namespace ruppert

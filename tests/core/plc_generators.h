@@ -1,0 +1,76 @@
+// Random and structured PLC generators for tests, refinement checks and fuzzing.
+//
+// Every generator is deterministic for a given seed on every platform: it draws from std::mt19937_64
+// (whose output sequence the C++ standard fixes) and maps bits to values itself, instead of using
+// std::uniform_*_distribution (whose algorithms differ between standard libraries).
+// Coordinates are dyadic (multiples of 2^-20 inside the unit square, or small integers for grids), so
+// translating by integers, scaling by powers of two and rotating by 90 degrees are exact.
+#pragma once
+
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <ruppert/ruppert.h>
+
+namespace ruppert_test {
+
+// A generated PLC and what a correct mesh of it must satisfy.
+struct GeneratedPlc {
+  ruppert::Plc plc;
+  double area = 0;  // area of the domain (the region that segments and hole seeds define)
+};
+
+// The unit square's four corners and four boundary segments, plus n random points strictly inside.
+GeneratedPlc randomPointsInSquare(std::uint64_t seed, std::size_t n);
+
+// n random points strictly inside the unit square and no segments (the domain is their convex hull;
+// area = 0, not computed).
+GeneratedPlc randomPointSet(std::uint64_t seed, std::size_t n);
+
+// A simple polygon with n vertices, star-shaped around (0.5, 0.5) (sorted random angles, random radii),
+// with up to `holes` small square holes inside it (each with a hole seed at its centre).
+GeneratedPlc randomStarPolygon(std::uint64_t seed, std::size_t n, std::size_t holes);
+
+// The unit square's boundary and random segments strictly inside it, drawn `attempts` times and kept
+// only when they touch no segment kept so far (not even at an endpoint).
+GeneratedPlc randomNonCrossingSegments(std::uint64_t seed, std::size_t attempts);
+
+// The unit square's boundary and n random segments strictly inside it, not filtered: they cross each
+// other freely (input repair must split them at intersection vertices).
+GeneratedPlc randomCrossingSegments(std::uint64_t seed, std::size_t n);
+
+// The square [0, g]^2's boundary and n random segments whose endpoints are integer grid points of
+// [0, g]^2 (boundary included). With a small g this produces every degeneracy repair must handle:
+// zero-length and duplicate segments, overlaps with each other and with the boundary, endpoints in
+// other segments' interiors, and crossings exactly at grid points or between them.
+GeneratedPlc randomGridSegments(std::uint64_t seed, std::size_t n, std::uint32_t g);
+
+// An nx-by-ny grid of points spaced `step` apart with the grid's boundary as segments between
+// neighbouring boundary points (so every boundary side is a chain of collinear points), plus, when
+// `crossLines` is set, the middle row and column as chains of segments. Every unit cell's corners are
+// cocircular: the Delaunay triangulation is maximally degenerate.
+GeneratedPlc gridPlc(std::size_t nx, std::size_t ny, double step = 1.0, bool crossLines = false);
+
+// --- exact transformations used by the metamorphic tests -------------------------------------------
+ruppert::Plc scaled(const ruppert::Plc& plc, double factor);             // points, holes, region seeds
+ruppert::Plc translated(const ruppert::Plc& plc, double dx, double dy);
+ruppert::Plc rotated90(const ruppert::Plc& plc);                         // (x, y) -> (-y, x)
+// Points permuted (newIndex[old] gives the new index) and segments reversed in order.
+ruppert::Plc permuted(const ruppert::Plc& plc, std::uint64_t seed, std::vector<std::uint32_t>* newIndex);
+// The PLC plus a copy shifted by (dx, 0).
+ruppert::Plc withShiftedCopy(const ruppert::Plc& plc, double dx);
+
+// True when closed segments pq and rs share a point (exact predicates). Used to keep generated PLCs clean.
+bool segmentsTouch(const double* p, const double* q, const double* r, const double* s);
+
+// --- real inputs ---------------------------------------------------------------------------------
+// The shared data folder (RUPPERT_SHARED_DATA from CMake), or "" when it does not exist.
+std::string sharedDataDir();
+// Sorted paths of the .poly files directly in `dir` (not in subfolders); empty if dir is missing.
+std::vector<std::string> polyFilesIn(const std::string& dir);
+// The repository's tests/fixtures folder (RUPPERT_FIXTURES from CMake).
+std::string fixturesDir();
+
+}  // namespace ruppert_test

@@ -1,0 +1,192 @@
+// The `ruppert` executable, run as a user would: exit statuses, messages and output files.
+//
+// The binary is found through RUPPERT_CLI (a path the build may define) or, failing that, beside
+// this test binary's build tree (build/tests/ruppert_tests -> build/core/ruppert). When it is not
+// there the tests say so and skip.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "ruppert/ruppert.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+#ifdef RUPPERT_FIXTURES
+const std::string kCliFixtures = std::string(RUPPERT_FIXTURES) + "/io/";
+#else
+const std::string kCliFixtures = "tests/fixtures/io/";
+#endif
+
+std::string cliPath() {
+#ifdef RUPPERT_CLI
+  return RUPPERT_CLI;
+#else
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return "";
+  return (self.parent_path().parent_path() / "core" / "ruppert").string();
+#endif
+}
+
+struct Run {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A scratch directory per test binary run.
+fs::path scratch() {
+  const fs::path dir = fs::temp_directory_path() / ("ruppert-cli-test-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+// Runs the CLI with `args` (already shell-quoted where needed).
+Run run(const std::string& args) {
+  const fs::path dir = scratch();
+  const std::string command = "'" + cliPath() + "' " + args + " >'" + (dir / "stdout").string() + "' 2>'" +
+                              (dir / "stderr").string() + "'";
+  Run r;
+  const int raw = std::system(command.c_str());
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.out = slurp(dir / "stdout");
+  r.err = slurp(dir / "stderr");
+  return r;
+}
+
+bool haveCli() {
+  if (fs::exists(cliPath())) return true;
+  WARN("ruppert executable not found at '" << cliPath() << "': skipping CLI tests");
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("cli: --help and --version succeed", "[io][cli]") {
+  if (!haveCli()) return;
+  const Run help = run("--help");
+  CHECK(help.status == 0);
+  CHECK_THAT(help.out, Catch::StartsWith("usage: ruppert"));
+  CHECK_THAT(help.out, Catch::Contains("--min-angle"));
+  const Run version = run("--version");
+  CHECK(version.status == 0);
+  CHECK_THAT(version.out, Catch::StartsWith("ruppert "));
+}
+
+TEST_CASE("cli: numbers are parsed strictly", "[io][cli]") {
+  if (!haveCli()) return;
+  // Parsing happens before --help is acted on, so these isolate the number parser.
+  CHECK(run("--max-area 5e-8 --help").status == 0);
+  CHECK(run("--min-angle 20.5 --max-steiner 100 --help").status == 0);
+  CHECK(run("--min-angle=25 --help").status == 0);
+  for (const char* bad : {"--min-angle abc", "--min-angle ''", "--min-angle 1x", "--min-angle ' 5'",
+                          "--max-area nan", "--max-area inf", "--max-steiner -1", "--max-steiner 1.5",
+                          "--min-angle 61", "--max-area -1", "--min-angle"}) {
+    INFO(bad);
+    const Run r = run(std::string(bad) + " --help");
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Catch::Contains("usage: ruppert"));
+    CHECK(r.out.empty());
+  }
+}
+
+TEST_CASE("cli: usage errors exit 2", "[io][cli]") {
+  if (!haveCli()) return;
+  for (const char* bad : {"", "--bogus x.poly", "a.poly b.poly", "--format png x.poly", "--placement middle x.poly",
+                          "--variant tree x.poly", "--stats=1 x.poly"}) {
+    INFO(bad);
+    const Run r = run(bad);
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Catch::Contains("error: ") && Catch::Contains("usage: ruppert"));
+  }
+}
+
+TEST_CASE("cli: invalid input exits 1 with the reader's message", "[io][cli]") {
+  if (!haveCli()) return;
+  const Run missing = run("'" + kCliFixtures + "no-such-input.poly'");
+  CHECK(missing.status == 1);
+  CHECK_THAT(missing.err, Catch::StartsWith("error: ") && Catch::Contains("no-such-input.poly"));
+
+  const fs::path bad = scratch() / "bad-segment.poly";
+  std::ofstream(bad) << "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1 9\n0\n";
+  const Run r = run("'" + bad.string() + "'");
+  CHECK(r.status == 1);
+  CHECK_THAT(r.err, Catch::Contains("bad-segment.poly:6: segment 1 refers to point 9 but there are 3 points"));
+  CHECK(r.out.empty());
+}
+
+TEST_CASE("cli: meshes a file, prints the summary and writes every format", "[io][cli]") {
+  if (!haveCli()) return;
+  // A square with a square hole and no area bounds, so --min-angle 0 gives the plain CDT.
+  const fs::path annulus = scratch() / "annulus.json";
+  std::ofstream(annulus) << "{\"points\": [0,0, 4,0, 4,4, 0,4, 1,1, 3,1, 3,3, 1,3],\n"
+                            " \"segments\": [0,1, 1,2, 2,3, 3,0, 4,5, 5,6, 6,7, 7,4], \"holes\": [2,2]}\n";
+  const std::string input = "'" + annulus.string() + "'";
+
+  const Run summary = run("--min-angle 0 " + input);
+  REQUIRE(summary.status == 0);
+  const std::regex line(
+      R"(ruppert: (\d+) vertices, (\d+) triangles, min angle [0-9.]+, max angle [0-9.]+, (complete|incomplete), [0-9.]+ ms\n[^]*)");
+  std::smatch m;
+  REQUIRE(std::regex_match(summary.out, m, line));
+  const unsigned long triangles = std::stoul(m[2]);
+  // The square with a square hole has 8 corners: any triangulation of that annulus has 8 triangles.
+  CHECK(triangles == 8);
+
+  const Run quiet = run("--quiet --min-angle 0 " + input);
+  CHECK(quiet.status == 0);
+  CHECK(quiet.out.empty());
+
+  const fs::path base = scratch() / "square";
+  const Run tri = run("--min-angle 0 -o '" + base.string() + "' " + input);
+  REQUIRE(tri.status == 0);
+  const ruppert::Plc written = ruppert::readFile(base.string() + ".poly");
+  const ruppert::Plc input16 = ruppert::readFile(annulus.string());
+  CHECK(written.points.size() >= input16.points.size());
+  CHECK(written.holes == input16.holes);
+  CHECK(fs::file_size(base.string() + ".node") > 0);
+  // .ele: header then one line per triangle.
+  std::ifstream ele(base.string() + ".ele");
+  std::size_t declared = 0;
+  ele >> declared;
+  CHECK(declared == triangles);
+
+  REQUIRE(run("--min-angle 0 --format json -o '" + base.string() + "' " + input).status == 0);
+  const ruppert::Plc json = ruppert::readFile(base.string() + ".json");
+  CHECK(json.points == written.points);
+  CHECK_THAT(slurp(base.string() + ".json"), Catch::Contains("\"triangles\": ["));
+
+  REQUIRE(run("--min-angle 0 --format svg -o '" + base.string() + "' " + input).status == 0);
+  CHECK_THAT(slurp(base.string() + ".svg"), Catch::StartsWith("<svg "));
+
+  const fs::path trace = scratch() / "trace.jsonl";
+  REQUIRE(run("--quiet --stats --min-angle 0 --trace '" + trace.string() + "' " + input).status == 0);
+  CHECK(fs::exists(trace));
+}
+
+TEST_CASE("cli: an unwritable output exits 3", "[io][cli]") {
+  if (!haveCli()) return;
+  const std::string input = "'" + kCliFixtures + "square-with-hole.json'";
+  const std::string nowhere = (scratch() / "no-such-dir" / "out").string();
+  const Run r = run("--min-angle 0 -o '" + nowhere + "' " + input);
+  CHECK(r.status == 3);
+  CHECK_THAT(r.err, Catch::StartsWith("error: cannot write"));
+  const Run t = run("--min-angle 0 --trace '" + nowhere + ".jsonl' " + input);
+  CHECK(t.status == 3);
+}

@@ -1,0 +1,165 @@
+// Refinement (chapter 6): validity after refinement, the angle bound with the chapter's exemptions,
+// area bounds, the Steiner budget and termination on inputs built to make refinement run away.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "plc_generators.h"
+#include "validator.h"
+
+using ruppert::Mesh;
+using ruppert::Options;
+using ruppert::Plc;
+
+namespace {
+
+// Angle exemptions of §6.6, judged from the output alone: the smallest angle sits between two
+// subsegments meeting at an input (or crossing) vertex, or the shortest edge joins two vertices on
+// different segments at the same distance from the segments' common vertex.
+bool exemptBySmallInputAngle(const Mesh& m, std::uint32_t t) {
+  double best = 1e9;
+  int corner = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double* o = &m.points[2 * m.triangles[3 * t + i]];
+    const double* u = &m.points[2 * m.triangles[3 * t + (i + 1) % 3]];
+    const double* w = &m.points[2 * m.triangles[3 * t + (i + 2) % 3]];
+    const double ux = u[0] - o[0], uy = u[1] - o[1], wx = w[0] - o[0], wy = w[1] - o[1];
+    const double a = std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy);
+    if (a < best) best = a, corner = i;
+  }
+  auto isSub = [&](std::uint32_t a, std::uint32_t b) {
+    for (std::size_t k = 0; k < m.segmentIds.size(); ++k)
+      if ((m.segments[2 * k] == a && m.segments[2 * k + 1] == b) || (m.segments[2 * k] == b && m.segments[2 * k + 1] == a))
+        return true;
+    return false;
+  };
+  const std::uint32_t z = m.triangles[3 * t + corner];
+  return isSub(z, m.triangles[3 * t + (corner + 1) % 3]) && isSub(z, m.triangles[3 * t + (corner + 2) % 3]);
+}
+
+Mesh refineChecked(const Plc& plc, const Options& o, const std::string& name) {
+  INFO(name << " at " << o.minAngle << " degrees");
+  const Mesh base = ruppert::triangulate(plc, [] { Options c; c.minAngle = 0; return c; }());
+  const Mesh mesh = ruppert::triangulate(plc, o);
+  ruppert_test::ValidateOptions v;
+  v.input = &plc;
+  v.expectedArea = ruppert_test::meshArea(base);
+  v.areaRelTol = 1e-9;
+  if (mesh.complete) {
+    v.minAngle = o.minAngle;
+    v.angleTolDeg = 1e-6;
+    // Seditious triangles are exempt too; they are reported in reasons, and only those may remain.
+    std::uint64_t seditious = 0;
+    for (const auto& r : mesh.reasons)
+      if (r.kind == ruppert::ReasonKind::SeditiousEdge) seditious += r.count;
+    v.angleExempt = [seditious](const Mesh& m, std::uint32_t t) { return exemptBySmallInputAngle(m, t) || seditious > 0; };
+  }
+  RUPPERT_REQUIRE_VALID_2(mesh, v);
+  return mesh;
+}
+
+}  // namespace
+
+TEST_CASE("refinement of every shared PLC at 20 and 30 degrees is valid and complete", "[refine]") {
+  const auto files = ruppert_test::polyFilesIn(ruppert_test::sharedDataDir());
+  if (files.empty()) WARN("shared data folder not found: refinement fixtures skipped");
+  for (const auto& file : files) {
+    const Plc plc = ruppert::readFile(file);
+    for (double angle : {20.0, 30.0}) {
+      Options o;
+      o.minAngle = angle;
+      const Mesh mesh = refineChecked(plc, o, file);
+      INFO(file << " at " << angle);
+      for (const auto& r : mesh.reasons) INFO(r.message);
+      CHECK(mesh.complete);
+    }
+  }
+}
+
+TEST_CASE("a global area bound is met by every triangle", "[refine]") {
+  Plc plc;
+  plc.points = {0, 0, 3, 0, 3, 2, 0, 2};
+  plc.segments = {0, 1, 1, 2, 2, 3, 3, 0};
+  Options o;
+  o.minAngle = 25;
+  o.maxArea = 0.01;
+  const Mesh mesh = refineChecked(plc, o, "rectangle");
+  CHECK(mesh.complete);
+  for (std::size_t t = 0; t < mesh.triangles.size() / 3; ++t) {
+    const double* a = &mesh.points[2 * mesh.triangles[3 * t]];
+    const double* b = &mesh.points[2 * mesh.triangles[3 * t + 1]];
+    const double* c = &mesh.points[2 * mesh.triangles[3 * t + 2]];
+    const double area = 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+    REQUIRE(area <= 0.01 * (1 + 1e-9));
+  }
+  CHECK(mesh.triangles.size() / 3 >= 600);  // 6 / 0.01
+}
+
+TEST_CASE("region max areas refine only their region", "[refine]") {
+  Plc plc;
+  plc.points = {0, 0, 2, 0, 2, 1, 0, 1, 1, 0, 1, 1};
+  plc.segments = {0, 4, 4, 1, 1, 2, 2, 5, 5, 3, 3, 0, 4, 5};
+  plc.regions = {{0.5, 0.5, 1, 0.001}, {1.5, 0.5, 2, 0}};
+  Options o;
+  o.minAngle = 20;
+  const Mesh mesh = refineChecked(plc, o, "two regions");
+  std::size_t left = 0, right = 0;
+  for (double a : mesh.triangleAttributes) (a == 1 ? left : right)++;
+  CHECK(left > 500);
+  CHECK(right < left / 4);
+}
+
+TEST_CASE("a tiny Steiner budget ends refinement with complete = false and the reason", "[refine]") {
+  Plc plc;
+  plc.points = {0, 0, 1, 0, 1, 1, 0, 1};
+  plc.segments = {0, 1, 1, 2, 2, 3, 3, 0};
+  Options o;
+  o.minAngle = 30;
+  o.maxArea = 1e-4;
+  o.maxSteiner = 50;
+  const Mesh mesh = ruppert::triangulate(plc, o);
+  CHECK_FALSE(mesh.complete);
+  REQUIRE_FALSE(mesh.reasons.empty());
+  CHECK(mesh.reasons[0].kind == ruppert::ReasonKind::SteinerBudget);
+  CHECK(mesh.stats.vertices <= 4 + 50);
+}
+
+TEST_CASE("small-angle fans terminate at any requested angle", "[refine]") {
+  for (double fan : {1.0, 3.0, 5.0, 10.0}) {
+    // Segments from the origin at `fan` degrees apart, closed by a polyline far away.
+    Plc plc;
+    plc.points = {0, 0};
+    const int spokes = 6;
+    for (int k = 0; k < spokes; ++k) {
+      const double a = k * fan * M_PI / 180;
+      plc.points.push_back(std::cos(a));
+      plc.points.push_back(std::sin(a));
+      plc.segments.push_back(0);
+      plc.segments.push_back(k + 1);
+      if (k > 0) {
+        plc.segments.push_back(k);
+        plc.segments.push_back(k + 1);
+      }
+    }
+    for (double angle : {20.0, 30.0, 34.0, 40.0}) {
+      Options o;
+      o.minAngle = angle;
+      o.maxSteiner = 200000;
+      const Mesh mesh = refineChecked(plc, o, "fan of " + std::to_string(fan) + " degrees");
+      CHECK(mesh.stats.vertices <= plc.points.size() / 2 + 200000);
+    }
+  }
+}
+
+TEST_CASE("thin slivers and extreme scales refine validly", "[refine]") {
+  for (double scale : {1e-9, 1.0, 1e9}) {
+    Plc plc;
+    plc.points = {0, 0, 1000 * scale, 0, 1000 * scale, 1 * scale, 0, 1 * scale};
+    plc.segments = {0, 1, 1, 2, 2, 3, 3, 0};
+    Options o;
+    o.minAngle = 30;
+    const Mesh mesh = refineChecked(plc, o, "sliver at scale " + std::to_string(scale));
+    CHECK(mesh.complete);
+  }
+}

@@ -1,0 +1,673 @@
+// Mesh validator: see validator.h for what is checked. Each check is a small function that appends
+// problems; the driver stops early only when a failed check would make later ones unsafe (an index
+// out of range would make them read out of bounds).
+#include "validator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "predicates.h"
+
+namespace ruppert_test {
+namespace {
+
+using ruppert::kNoInputSegment;
+using ruppert::kNoNeighbor;
+using ruppert::Mesh;
+using ruppert::NoticeKind;
+using ruppert::VertexKind;
+using ruppert::detail::incircle;
+using ruppert::detail::orient2d;
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::uint64_t directedKey(std::uint32_t a, std::uint32_t b) { return (std::uint64_t(a) << 32) | b; }
+std::uint64_t undirectedKey(std::uint32_t a, std::uint32_t b) {
+  return a < b ? directedKey(a, b) : directedKey(b, a);
+}
+
+std::string fmt(double v) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.17g", v);
+  return buffer;
+}
+
+// Collects problems up to a limit; later checks can ask whether it is full to stop early.
+class Problems {
+ public:
+  explicit Problems(std::size_t max) : max_(max) {}
+  template <typename... Parts>
+  void add(const Parts&... parts) {
+    ++total_;
+    if (list_.size() >= max_) return;
+    std::ostringstream out;
+    out.precision(17);
+    (out << ... << parts);
+    list_.push_back(out.str());
+  }
+  std::vector<std::string> finish() {
+    if (total_ > list_.size()) list_.push_back("... and " + std::to_string(total_ - list_.size()) + " more problems");
+    return std::move(list_);
+  }
+
+ private:
+  std::size_t max_;
+  std::size_t total_ = 0;
+  std::vector<std::string> list_;
+};
+
+// The mesh with its coordinates scaled by a power of two so that the largest magnitude lies in [1, 2):
+// exact (barring subnormals), and it brings any input scale into the predicates' safe range.
+struct Scaled {
+  const Mesh& mesh;
+  std::vector<double> xy;
+  std::size_t nt = 0, np = 0;
+  int exponent = 0;  // coordinates were multiplied by 2^-exponent
+
+  explicit Scaled(const Mesh& m) : mesh(m), nt(m.triangles.size() / 3), np(m.points.size() / 2) {
+    double maxAbs = 0;
+    for (double v : m.points)
+      if (std::isfinite(v)) maxAbs = std::max(maxAbs, std::fabs(v));
+    exponent = maxAbs > 0 ? std::ilogb(maxAbs) : 0;
+    xy.resize(m.points.size());
+    for (std::size_t i = 0; i < xy.size(); ++i) xy[i] = std::ldexp(m.points[i], -exponent);
+  }
+  const double* p(std::uint32_t v) const { return &xy[2 * std::size_t(v)]; }
+  std::uint32_t v(std::size_t t, int i) const { return mesh.triangles[3 * t + std::size_t(i)]; }
+};
+
+// Uniform grid of triangle bounding boxes for point-in-mesh queries (overlap and coverage checks).
+class TriangleGrid {
+ public:
+  explicit TriangleGrid(const Scaled& s) : s_(s) {
+    if (s.nt == 0) return;
+    lo_[0] = lo_[1] = INFINITY;
+    double hi[2] = {-INFINITY, -INFINITY};
+    for (std::uint32_t v : s.mesh.triangles)
+      for (int k = 0; k < 2; ++k) {
+        lo_[k] = std::min(lo_[k], s.p(v)[k]);
+        hi[k] = std::max(hi[k], s.p(v)[k]);
+      }
+    n_ = std::max<std::size_t>(1, std::min<std::size_t>(1024, std::size_t(std::sqrt(double(s.nt)))));
+    for (int k = 0; k < 2; ++k) size_[k] = std::max((hi[k] - lo_[k]) / double(n_), 1e-300);
+    cells_.resize(n_ * n_);
+    for (std::size_t t = 0; t < s.nt; ++t) {
+      double bl[2] = {INFINITY, INFINITY}, bh[2] = {-INFINITY, -INFINITY};
+      for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 2; ++k) {
+          bl[k] = std::min(bl[k], s.p(s.v(t, i))[k]);
+          bh[k] = std::max(bh[k], s.p(s.v(t, i))[k]);
+        }
+      const std::size_t x0 = cell(bl[0], 0), x1 = cell(bh[0], 0), y0 = cell(bl[1], 1), y1 = cell(bh[1], 1);
+      for (std::size_t y = y0; y <= y1; ++y)
+        for (std::size_t x = x0; x <= x1; ++x) cells_[y * n_ + x].push_back(std::uint32_t(t));
+    }
+  }
+
+  // Triangles whose closed region contains q (strict = open region only).
+  std::vector<std::uint32_t> containing(const double* q, bool strict) const {
+    std::vector<std::uint32_t> result;
+    if (cells_.empty() || !(q[0] >= lo_[0] && q[1] >= lo_[1])) return result;
+    const std::size_t x = cell(q[0], 0), y = cell(q[1], 1);
+    for (std::uint32_t t : cells_[y * n_ + x]) {
+      const double* a = s_.p(s_.v(t, 0));
+      const double* b = s_.p(s_.v(t, 1));
+      const double* c = s_.p(s_.v(t, 2));
+      const double o1 = orient2d(a, b, q), o2 = orient2d(b, c, q), o3 = orient2d(c, a, q);
+      const bool inside = strict ? (o1 > 0 && o2 > 0 && o3 > 0) : (o1 >= 0 && o2 >= 0 && o3 >= 0);
+      if (inside) result.push_back(t);
+    }
+    return result;
+  }
+
+ private:
+  std::size_t cell(double v, int k) const {
+    const double f = (v - lo_[k]) / size_[k];
+    if (!(f > 0)) return 0;
+    return std::min(n_ - 1, std::size_t(f));
+  }
+  const Scaled& s_;
+  double lo_[2] = {0, 0}, size_[2] = {1, 1};
+  std::size_t n_ = 0;
+  std::vector<std::vector<std::uint32_t>> cells_;
+};
+
+// --- structural checks (sizes and indices) -------------------------------------------------------
+
+bool checkSizes(const Mesh& m, Problems& out) {
+  bool ok = true;
+  auto fail = [&](const std::string& what) {
+    out.add(what);
+    ok = false;
+  };
+  if (m.points.size() % 2) fail("points.size()=" + std::to_string(m.points.size()) + " is odd");
+  if (m.triangles.size() % 3) fail("triangles.size()=" + std::to_string(m.triangles.size()) + " is not a multiple of 3");
+  if (m.neighbors.size() != m.triangles.size())
+    fail("neighbors.size()=" + std::to_string(m.neighbors.size()) + " != triangles.size()=" +
+         std::to_string(m.triangles.size()));
+  if (m.segments.size() != 2 * m.segmentIds.size())
+    fail("segments.size()=" + std::to_string(m.segments.size()) + " != 2*segmentIds.size()=" +
+         std::to_string(2 * m.segmentIds.size()));
+  if (m.vertexKinds.size() != m.points.size() / 2)
+    fail("vertexKinds.size()=" + std::to_string(m.vertexKinds.size()) + " != number of points " +
+         std::to_string(m.points.size() / 2));
+  if (m.triangleAttributes.size() != m.triangles.size() / 3)
+    fail("triangleAttributes.size()=" + std::to_string(m.triangleAttributes.size()) + " != number of triangles " +
+         std::to_string(m.triangles.size() / 3));
+  if (!m.pointMarkers.empty() && m.pointMarkers.size() != m.points.size() / 2)
+    fail("pointMarkers.size()=" + std::to_string(m.pointMarkers.size()) + " is neither 0 nor the number of points");
+  return ok;
+}
+
+bool checkIndices(const Mesh& m, std::size_t inputSegments, Problems& out) {
+  bool ok = true;
+  const std::size_t np = m.points.size() / 2, nt = m.triangles.size() / 3;
+  for (std::size_t t = 0; t < nt; ++t) {
+    const std::uint32_t a = m.triangles[3 * t], b = m.triangles[3 * t + 1], c = m.triangles[3 * t + 2];
+    if (a >= np || b >= np || c >= np) {
+      out.add("triangle ", t, " (", a, ", ", b, ", ", c, ") refers to a vertex >= ", np);
+      ok = false;
+    } else if (a == b || b == c || a == c) {
+      out.add("triangle ", t, " (", a, ", ", b, ", ", c, ") repeats a vertex");
+      ok = false;
+    }
+    for (int i = 0; i < 3; ++i) {
+      const std::int32_t n = m.neighbors[3 * t + i];
+      if (n != kNoNeighbor && (n < 0 || std::size_t(n) >= nt)) {
+        out.add("triangle ", t, " neighbour ", i, " = ", n, " is neither kNoNeighbor nor a triangle");
+        ok = false;
+      }
+    }
+  }
+  for (std::size_t s = 0; s < m.segmentIds.size(); ++s) {
+    const std::uint32_t a = m.segments[2 * s], b = m.segments[2 * s + 1];
+    if (a >= np || b >= np || a == b) {
+      out.add("subsegment ", s, " (", a, ", ", b, ") has an invalid endpoint");
+      ok = false;
+    }
+    const std::int32_t id = m.segmentIds[s];
+    if (id != kNoInputSegment && (id < 0 || (inputSegments != SIZE_MAX && std::size_t(id) >= inputSegments))) {
+      out.add("subsegment ", s, " has segmentId ", id, " which is not an input segment");
+      ok = false;
+    }
+  }
+  for (std::size_t v = 0; v < m.vertexKinds.size(); ++v)
+    if (m.vertexKinds[v] > std::uint8_t(VertexKind::Unused)) {
+      out.add("vertex ", v, " has unknown kind ", int(m.vertexKinds[v]));
+      ok = false;
+    }
+  return ok;
+}
+
+// Used vertices must have finite coordinates that the exact predicates handle after scaling.
+bool checkCoordinates(const Scaled& s, const std::vector<bool>& used, Problems& out) {
+  bool ok = true;
+  for (std::size_t v = 0; v < s.np; ++v) {
+    if (!used[v]) continue;
+    const double x = s.mesh.points[2 * v], y = s.mesh.points[2 * v + 1];
+    if (!std::isfinite(x) || !std::isfinite(y)) {
+      out.add("vertex ", v, " used by a triangle has non-finite coordinates (", fmt(x), ", ", fmt(y), ")");
+      ok = false;
+    } else if (!ruppert::detail::isSafeCoordinate(s.p(std::uint32_t(v))[0]) ||
+               !ruppert::detail::isSafeCoordinate(s.p(std::uint32_t(v))[1])) {
+      out.add("vertex ", v, " (", fmt(x), ", ", fmt(y),
+              ") is outside the exact predicates' range relative to the largest coordinate");
+    }
+  }
+  return ok;
+}
+
+// --- topology ------------------------------------------------------------------------------------
+
+struct EdgeMaps {
+  std::unordered_map<std::uint64_t, std::uint32_t> directed;  // a->b  ->  3t+i
+  std::unordered_map<std::uint64_t, std::uint32_t> subsegments;  // {a,b} -> subsegment index
+};
+
+void checkOrientation(const Scaled& s, Problems& out) {
+  for (std::size_t t = 0; t < s.nt; ++t) {
+    const double o = orient2d(s.p(s.v(t, 0)), s.p(s.v(t, 1)), s.p(s.v(t, 2)));
+    if (!(o > 0))
+      out.add("triangle ", t, " (", s.v(t, 0), ", ", s.v(t, 1), ", ", s.v(t, 2), ") is ",
+              o == 0 ? "degenerate (collinear)" : "clockwise");
+  }
+}
+
+EdgeMaps buildEdgeMaps(const Scaled& s, Problems& out) {
+  EdgeMaps maps;
+  maps.directed.reserve(3 * s.nt);
+  for (std::size_t t = 0; t < s.nt; ++t)
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = s.v(t, (i + 1) % 3), b = s.v(t, (i + 2) % 3);
+      const auto inserted = maps.directed.emplace(directedKey(a, b), std::uint32_t(3 * t + i));
+      if (!inserted.second)
+        out.add("directed edge ", a, "->", b, " belongs to triangles ", inserted.first->second / 3, " and ", t,
+                " (overlapping or inconsistently oriented triangles)");
+    }
+  const Mesh& m = s.mesh;
+  for (std::size_t k = 0; k < m.segmentIds.size(); ++k) {
+    const std::uint32_t a = m.segments[2 * k], b = m.segments[2 * k + 1];
+    const auto inserted = maps.subsegments.emplace(undirectedKey(a, b), std::uint32_t(k));
+    if (!inserted.second)
+      out.add("subsegments ", inserted.first->second, " and ", k, " are the same edge (", a, ", ", b, ")");
+    if (!maps.directed.count(directedKey(a, b)) && !maps.directed.count(directedKey(b, a)))
+      out.add("subsegment ", k, " (", a, ", ", b, ") of input segment ", m.segmentIds[k], " is not an edge of the mesh");
+  }
+  return maps;
+}
+
+void checkNeighbors(const Scaled& s, const EdgeMaps& maps, Problems& out) {
+  const Mesh& m = s.mesh;
+  for (std::size_t t = 0; t < s.nt; ++t)
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = s.v(t, (i + 1) % 3), b = s.v(t, (i + 2) % 3);
+      const std::int32_t n = m.neighbors[3 * t + i];
+      const auto twin = maps.directed.find(directedKey(b, a));
+      if (n == kNoNeighbor) {
+        if (twin != maps.directed.end())
+          out.add("triangle ", t, " edge ", i, " (", a, ", ", b, ") has no neighbour but triangle ", twin->second / 3,
+                  " shares it");
+        if (!maps.subsegments.count(undirectedKey(a, b)))
+          out.add("triangle ", t, " edge ", i, " (", a, ", ", b,
+                  ") is on the domain boundary but is not a subsegment");
+        continue;
+      }
+      if (twin == maps.directed.end() || twin->second / 3 != std::uint32_t(n)) {
+        out.add("triangle ", t, " edge ", i, " (", a, ", ", b, ") names neighbour ", n,
+                " which does not have the edge (", b, ", ", a, ")");
+        continue;
+      }
+      if (m.neighbors[twin->second] != std::int32_t(t))
+        out.add("neighbour symmetry broken: triangle ", t, " -> ", n, " across (", a, ", ", b, ") but triangle ", n,
+                " -> ", m.neighbors[twin->second]);
+    }
+}
+
+void checkDelaunay(const Scaled& s, const EdgeMaps& maps, Problems& out) {
+  const Mesh& m = s.mesh;
+  for (std::size_t t = 0; t < s.nt; ++t)
+    for (int i = 0; i < 3; ++i) {
+      const std::int32_t n = m.neighbors[3 * t + i];
+      if (n == kNoNeighbor || std::size_t(n) < t) continue;  // each interior edge once
+      const std::uint32_t a = s.v(t, (i + 1) % 3), b = s.v(t, (i + 2) % 3);
+      if (maps.subsegments.count(undirectedKey(a, b))) continue;
+      const auto twin = maps.directed.find(directedKey(b, a));
+      if (twin == maps.directed.end()) continue;  // reported by checkNeighbors
+      const std::uint32_t d = m.triangles[twin->second];  // the twin's opposite vertex
+      const double in = incircle(s.p(s.v(t, 0)), s.p(s.v(t, 1)), s.p(s.v(t, 2)), s.p(d));
+      if (in > 0)
+        out.add("edge (", a, ", ", b, ") between triangles ", t, " and ", n, " is not locally Delaunay: vertex ", d,
+                " is inside the circumcircle of triangle ", t, " (", s.v(t, 0), ", ", s.v(t, 1), ", ", s.v(t, 2), ")");
+    }
+}
+
+double cornerAngle(const double* p, const double* q, const double* r) {  // angle at p in triangle p q r
+  const double ux = q[0] - p[0], uy = q[1] - p[1], vx = r[0] - p[0], vy = r[1] - p[1];
+  return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy);
+}
+
+// Around every vertex the incident angles sum to at most 2 pi, and to exactly 2 pi when its fan is
+// closed (no boundary edge at it). A vertex wrapped twice by its triangles gives 4 pi.
+void checkVertexFans(const Scaled& s, const std::vector<bool>& used, Problems& out) {
+  std::vector<double> angleSum(s.np, 0);
+  std::vector<std::uint32_t> boundaryEdges(s.np, 0);
+  for (std::size_t t = 0; t < s.nt; ++t)
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t p = s.v(t, i), q = s.v(t, (i + 1) % 3), r = s.v(t, (i + 2) % 3);
+      angleSum[p] += cornerAngle(s.p(p), s.p(q), s.p(r));
+      if (s.mesh.neighbors[3 * t + i] == kNoNeighbor) {
+        ++boundaryEdges[q];
+        ++boundaryEdges[r];
+      }
+    }
+  for (std::size_t v = 0; v < s.np; ++v) {
+    if (!used[v]) continue;
+    if (angleSum[v] > 2 * kPi * (1 + 1e-9))
+      out.add("triangles around vertex ", v, " overlap: their angles sum to ", fmt(angleSum[v] / kPi), " pi");
+    else if (boundaryEdges[v] == 0 && std::fabs(angleSum[v] - 2 * kPi) > 1e-6)
+      out.add("vertex ", v, " is interior but its angles sum to ", fmt(angleSum[v] / kPi), " pi, not 2 pi");
+    if (boundaryEdges[v] % 2)
+      out.add("vertex ", v, " has an odd number (", boundaryEdges[v], ") of boundary edges: the boundary is not closed");
+  }
+}
+
+// No used vertex lies in the closed region of a triangle it is not a vertex of: that would be an
+// overlap or a T-junction (a vertex on another triangle's edge). Catches overlapping patches that
+// share no vertex, which the fan check cannot see. Exact: only input coordinates reach orient2d.
+void checkNoOverlap(const Scaled& s, const std::vector<bool>& used, const TriangleGrid& grid, Problems& out) {
+  for (std::size_t v = 0; v < s.np; ++v) {
+    if (!used[v]) continue;
+    for (std::uint32_t t : grid.containing(s.p(std::uint32_t(v)), false))
+      if (s.v(t, 0) != v && s.v(t, 1) != v && s.v(t, 2) != v)
+        out.add("vertex ", v, " lies inside or on the boundary of triangle ", t, " (", s.v(t, 0), ", ", s.v(t, 1),
+                ", ", s.v(t, 2), ") without being one of its vertices: overlap or T-junction");
+  }
+}
+
+// Pairs of used vertices closer than the tolerance (in the scaled frame, where the largest magnitude
+// is in [1, 2)), at least one of them added by the mesher. Sweep over vertices sorted by x.
+void checkNearDuplicates(const Scaled& s, const std::vector<bool>& used, const ValidateOptions& o, Problems& out) {
+  if (!(o.nearDuplicateRelTol > 0)) return;
+  const double eps = o.nearDuplicateRelTol;
+  const std::size_t nInput = o.input ? o.input->points.size() / 2 : 0;
+  std::vector<std::uint32_t> order;
+  for (std::size_t v = 0; v < s.np; ++v)
+    if (used[v]) order.push_back(std::uint32_t(v));
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return s.p(a)[0] < s.p(b)[0]; });
+  for (std::size_t i = 0; i < order.size(); ++i)
+    for (std::size_t j = i + 1; j < order.size() && s.p(order[j])[0] - s.p(order[i])[0] <= eps; ++j) {
+      const std::uint32_t a = order[i], b = order[j];
+      const bool added = s.mesh.vertexKinds[a] != std::uint8_t(VertexKind::Input) ||
+                         s.mesh.vertexKinds[b] != std::uint8_t(VertexKind::Input) ||
+                         (o.input && (a >= nInput || b >= nInput));
+      if (!added || std::fabs(s.p(a)[1] - s.p(b)[1]) > eps) continue;
+      out.add("vertices ", std::min(a, b), " (", fmt(s.mesh.points[2 * std::min(a, b)]), ", ",
+              fmt(s.mesh.points[2 * std::min(a, b) + 1]), ") and ", std::max(a, b), " (",
+              fmt(s.mesh.points[2 * std::max(a, b)]), ", ", fmt(s.mesh.points[2 * std::max(a, b) + 1]),
+              ") are near-duplicates (closer than ", fmt(eps), " relative to the largest coordinate)");
+    }
+}
+
+// --- vertex kinds and the input --------------------------------------------------------------------
+
+void checkVertexKinds(const Scaled& s, const std::vector<bool>& used, const ValidateOptions& o, Problems& out) {
+  const Mesh& m = s.mesh;
+  const std::size_t nInput = o.input ? o.input->points.size() / 2 : SIZE_MAX;
+  if (o.input && s.np < nInput)
+    out.add("mesh has ", s.np, " points but the input has ", nInput, " (input points must come first)");
+  for (std::size_t v = 0; v < s.np; ++v) {
+    const auto kind = VertexKind(m.vertexKinds[v]);
+    if (used[v] && kind == VertexKind::Unused) out.add("vertex ", v, " is used by a triangle but its kind is Unused");
+    if (!used[v] && kind == VertexKind::Input)
+      out.add("vertex ", v, " has kind Input but no triangle uses it (it should be Unused)");
+    if (o.input && v < nInput) {
+      if (kind != VertexKind::Input && kind != VertexKind::Unused)
+        out.add("input point ", v, " has kind ", int(kind), " (expected Input or Unused)");
+      else if (m.points[2 * v] != o.input->points[2 * v] || m.points[2 * v + 1] != o.input->points[2 * v + 1])
+        out.add("input point ", v, " moved from (", fmt(o.input->points[2 * v]), ", ", fmt(o.input->points[2 * v + 1]),
+                ") to (", fmt(m.points[2 * v]), ", ", fmt(m.points[2 * v + 1]), ")");
+    } else if (o.input && (kind == VertexKind::Input || kind == VertexKind::Unused)) {
+      out.add("vertex ", v, " was added by the mesher but has kind ", kind == VertexKind::Input ? "Input" : "Unused");
+    }
+    if (o.expectNoSteiner && (kind == VertexKind::SegmentSplit || kind == VertexKind::Interior ||
+                              kind == VertexKind::OffCenter))
+      out.add("vertex ", v, " is a Steiner point (kind ", int(kind), ") but a plain CDT was expected");
+  }
+}
+
+// Input points no triangle uses must be merged duplicates or lie outside the meshed domain.
+void checkUnusedInputPoints(const Scaled& s, const std::vector<bool>& used, const ValidateOptions& o,
+                            const TriangleGrid& grid, Problems& out) {
+  std::unordered_set<std::int64_t> merged;
+  for (const auto& n : s.mesh.notices)
+    if (n.kind == NoticeKind::DuplicatePoint) merged.insert(n.a);
+  const std::size_t nInput = std::min(s.np, o.input->points.size() / 2);
+  for (std::size_t v = 0; v < nInput; ++v) {
+    if (used[v] || merged.count(std::int64_t(v))) continue;
+    const auto hits = grid.containing(s.p(std::uint32_t(v)), false);
+    if (!hits.empty())
+      out.add("input point ", v, " (", fmt(s.mesh.points[2 * v]), ", ", fmt(s.mesh.points[2 * v + 1]),
+              ") is inside the domain (triangle ", hits[0], ") but no triangle uses it and no notice merged it");
+  }
+}
+
+// A hole seed eats its whole region, so no triangle may contain it.
+void checkHoles(const Scaled& s, const ValidateOptions& o, const TriangleGrid& grid, Problems& out) {
+  const std::vector<double>& holes = o.input->holes;
+  for (std::size_t h = 0; h + 1 < holes.size(); h += 2) {
+    const double q[2] = {std::ldexp(holes[h], -s.exponent), std::ldexp(holes[h + 1], -s.exponent)};
+    const auto hits = grid.containing(q, true);
+    if (!hits.empty())
+      out.add("hole ", h / 2, " (", fmt(holes[h]), ", ", fmt(holes[h + 1]), ") lies inside triangle ", hits[0]);
+  }
+}
+
+// Every input segment is a chain of subsegments from its first endpoint to its last (see header).
+void checkSegmentCoverage(const Scaled& s, const EdgeMaps& maps, const ValidateOptions& o, const TriangleGrid& grid,
+                          Problems& out) {
+  const Mesh& m = s.mesh;
+  const ruppert::Plc& in = *o.input;
+  const std::size_t nSeg = in.segments.size() / 2, nInput = in.points.size() / 2;
+
+  std::vector<std::int64_t> mergedInto(nInput, -1);
+  std::set<std::int64_t> dropped;
+  std::map<std::int64_t, std::set<std::int64_t>> partners;  // segments that may carry part of a segment
+  for (const auto& n : m.notices) {
+    switch (n.kind) {
+      case NoticeKind::DuplicatePoint:
+        if (n.a >= 0 && std::size_t(n.a) < nInput) mergedInto[std::size_t(n.a)] = n.b;
+        break;
+      case NoticeKind::ZeroLengthSegment: dropped.insert(n.a); break;
+      case NoticeKind::DuplicateSegment:
+        dropped.insert(n.a);
+        partners[n.b].insert(n.a);
+        break;
+      case NoticeKind::SegmentsOverlap:
+        partners[n.a].insert(n.b);
+        partners[n.b].insert(n.a);
+        break;
+      default: break;
+    }
+  }
+  auto resolve = [&](std::int64_t p) {
+    for (int guard = 0; guard < 64 && p >= 0 && std::size_t(p) < nInput && mergedInto[std::size_t(p)] >= 0; ++guard)
+      p = mergedInto[std::size_t(p)];
+    return p;
+  };
+
+  std::vector<std::vector<std::uint32_t>> subsegmentsOf(nSeg);
+  for (std::size_t k = 0; k < m.segmentIds.size(); ++k)
+    if (m.segmentIds[k] != kNoInputSegment && std::size_t(m.segmentIds[k]) < nSeg)
+      subsegmentsOf[std::size_t(m.segmentIds[k])].push_back(std::uint32_t(k));
+
+  for (std::size_t seg = 0; seg < nSeg; ++seg) {
+    const std::uint32_t ia = in.segments[2 * seg], ib = in.segments[2 * seg + 1];
+    if (ia >= nInput || ib >= nInput) continue;  // the mesher should have thrown
+    if (dropped.count(std::int64_t(seg))) continue;
+    const std::int64_t pa = resolve(ia), pb = resolve(ib);
+    if (pa < 0 || pb < 0 || std::size_t(pa) >= s.np || std::size_t(pb) >= s.np) continue;
+    if (pa == pb) {
+      out.add("input segment ", seg, " (", ia, ", ", ib, ") has zero length but no ZeroLengthSegment notice");
+      continue;
+    }
+    const std::uint32_t a = std::uint32_t(pa), b = std::uint32_t(pb);
+    // Position of vertex v along the segment (0 at a, 1 at b) and its distance from the line, both in
+    // the scaled frame. Tolerance: relative to the segment's length plus its endpoints' magnitude.
+    const double ax = s.p(a)[0], ay = s.p(a)[1], dx = s.p(b)[0] - ax, dy = s.p(b)[1] - ay;
+    const double len2 = dx * dx + dy * dy, len = std::sqrt(len2);
+    const double tol = o.collinearRelTol *
+                       (len + std::max({std::fabs(ax), std::fabs(ay), std::fabs(s.p(b)[0]), std::fabs(s.p(b)[1])}));
+    auto param = [&](std::uint32_t v) { return ((s.p(v)[0] - ax) * dx + (s.p(v)[1] - ay) * dy) / len2; };
+    auto onSegment = [&](std::uint32_t v) {
+      const double dist = std::fabs((s.p(v)[0] - ax) * dy - (s.p(v)[1] - ay) * dx) / len;
+      const double t = param(v);
+      return dist <= tol && t * len >= -tol && (t - 1) * len <= tol;
+    };
+
+    for (std::uint32_t k : subsegmentsOf[seg])
+      for (std::uint32_t v : {m.segments[2 * k], m.segments[2 * k + 1]})
+        if (!onSegment(v))
+          out.add("subsegment ", k, " of input segment ", seg, " has vertex ", v, " (", fmt(m.points[2 * v]), ", ",
+                  fmt(m.points[2 * v + 1]), ") off the segment (", a, ", ", b, ")");
+
+    // Subsegments allowed to cover this segment: its own and those of segments overlapping it.
+    std::vector<std::uint32_t> carriers = subsegmentsOf[seg];
+    if (partners.count(std::int64_t(seg)))
+      for (std::int64_t other : partners[std::int64_t(seg)])
+        if (other >= 0 && std::size_t(other) < nSeg)
+          carriers.insert(carriers.end(), subsegmentsOf[std::size_t(other)].begin(),
+                          subsegmentsOf[std::size_t(other)].end());
+    std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> graph;
+    std::unordered_set<std::uint64_t> carrierEdges;
+    for (std::uint32_t k : carriers) {
+      const std::uint32_t u = m.segments[2 * k], w = m.segments[2 * k + 1];
+      if (!onSegment(u) || !onSegment(w)) continue;
+      graph[u].push_back(w);
+      graph[w].push_back(u);
+      carrierEdges.insert(undirectedKey(u, w));
+    }
+    // Breadth-first search from a to b along the segment.
+    std::unordered_set<std::uint32_t> seen{a};
+    std::vector<std::uint32_t> frontier{a};
+    while (!frontier.empty() && !seen.count(b)) {
+      std::vector<std::uint32_t> next;
+      for (std::uint32_t u : frontier)
+        for (std::uint32_t w : graph[u])
+          if (seen.insert(w).second) next.push_back(w);
+      frontier.swap(next);
+    }
+    if (seen.count(b)) continue;
+
+    // No complete chain: acceptable only where the missing pieces lie outside the meshed domain (the
+    // segment runs through a hole or outside the domain and its subsegments were removed with it).
+    std::vector<std::pair<double, std::uint32_t>> stations{{0.0, a}, {1.0, b}};
+    for (const auto& entry : graph) stations.emplace_back(param(entry.first), entry.first);
+    std::sort(stations.begin(), stations.end());
+    stations.erase(std::unique(stations.begin(), stations.end()), stations.end());
+    for (std::size_t k = 0; k + 1 < stations.size(); ++k) {
+      const std::uint32_t u = stations[k].second, w = stations[k + 1].second;
+      if (carrierEdges.count(undirectedKey(u, w)) || maps.subsegments.count(undirectedKey(u, w))) continue;
+      const double mid[2] = {(s.p(u)[0] + s.p(w)[0]) / 2, (s.p(u)[1] + s.p(w)[1]) / 2};
+      const auto hits = grid.containing(mid, false);
+      if (!hits.empty()) {
+        out.add("input segment ", seg, " (", ia, ", ", ib, ") is not covered by subsegments between vertices ", u,
+                " and ", w, " (the gap's midpoint is inside triangle ", hits[0], ")");
+        break;
+      }
+    }
+  }
+}
+
+// --- measures ------------------------------------------------------------------------------------
+
+double triangleArea(const Mesh& m, std::size_t t) {
+  const double* a = &m.points[2 * std::size_t(m.triangles[3 * t])];
+  const double* b = &m.points[2 * std::size_t(m.triangles[3 * t + 1])];
+  const double* c = &m.points[2 * std::size_t(m.triangles[3 * t + 2])];
+  return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+}
+
+void checkMeasures(const Scaled& s, const ValidateOptions& o, Problems& out) {
+  const Mesh& m = s.mesh;
+  if (o.expectedArea >= 0) {
+    const double area = meshArea(m);
+    if (!(std::fabs(area - o.expectedArea) <= o.areaRelTol * std::max(std::fabs(o.expectedArea), 1e-300)))
+      out.add("total area ", fmt(area), " != expected ", fmt(o.expectedArea));
+  }
+  for (std::size_t t = 0; t < s.nt; ++t) {
+    if (o.minAngle > 0) {
+      const double angle = triangleMinAngleDeg(m, std::uint32_t(t));
+      if (angle < o.minAngle - o.angleTolDeg && !(o.angleExempt && o.angleExempt(m, std::uint32_t(t))))
+        out.add("triangle ", t, " (", s.v(t, 0), ", ", s.v(t, 1), ", ", s.v(t, 2), ") has a ", fmt(angle),
+                " degree angle < ", o.minAngle);
+    }
+    if (o.maxArea > 0) {
+      const double area = triangleArea(m, t);
+      if (area > o.maxArea * (1 + o.areaRelTol) && !(o.areaExempt && o.areaExempt(m, std::uint32_t(t))))
+        out.add("triangle ", t, " has area ", fmt(area), " > maxArea ", fmt(o.maxArea));
+    }
+  }
+}
+
+void checkStats(const Mesh& m, const std::vector<bool>& used, Problems& out) {
+  const std::size_t nt = m.triangles.size() / 3;
+  if (m.stats.triangles != nt) out.add("stats.triangles=", m.stats.triangles, " but there are ", nt, " triangles");
+  const std::size_t nUsed = std::size_t(std::count(used.begin(), used.end(), true));
+  if (m.stats.vertices != nUsed) out.add("stats.vertices=", m.stats.vertices, " but triangles use ", nUsed, " vertices");
+  // complete <=> no reason other than the chapter's exemptions (small input angles, seditious edges).
+  bool unmet = false;
+  for (const auto& r : m.reasons)
+    unmet = unmet || (r.kind != ruppert::ReasonKind::SmallInputAngle && r.kind != ruppert::ReasonKind::SeditiousEdge);
+  if (m.complete == unmet)
+    out.add("complete=", m.complete, " but the reasons ", unmet ? "include" : "exclude", " an unmet bound");
+}
+
+}  // namespace
+
+std::vector<std::string> validateMesh(const Mesh& mesh, const ValidateOptions& options) {
+  Problems out(options.maxProblems);
+  if (!checkSizes(mesh, out)) return out.finish();
+  const std::size_t inputSegments = options.input ? options.input->segments.size() / 2 : SIZE_MAX;
+  if (!checkIndices(mesh, inputSegments, out)) return out.finish();
+
+  const Scaled s(mesh);
+  std::vector<bool> used(s.np, false);
+  for (std::uint32_t v : mesh.triangles) used[v] = true;
+  if (!checkCoordinates(s, used, out)) return out.finish();
+
+  checkOrientation(s, out);
+  const EdgeMaps maps = buildEdgeMaps(s, out);
+  checkNeighbors(s, maps, out);
+  if (options.checkDelaunay) checkDelaunay(s, maps, out);
+  checkVertexFans(s, used, out);
+  const TriangleGrid grid(s);
+  checkNoOverlap(s, used, grid, out);
+  checkNearDuplicates(s, used, options, out);
+  checkVertexKinds(s, used, options, out);
+  if (options.input) {
+    checkUnusedInputPoints(s, used, options, grid, out);
+    checkHoles(s, options, grid, out);
+    checkSegmentCoverage(s, maps, options, grid, out);
+  }
+  checkMeasures(s, options, out);
+  checkStats(mesh, used, out);
+  return out.finish();
+}
+
+double meshArea(const Mesh& mesh) {
+  // Kahan-compensated: meshes with 10^5 triangles of very different sizes still sum accurately.
+  double sum = 0, carry = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size() / 3; ++t) {
+    const double y = triangleArea(mesh, t) - carry;
+    const double next = sum + y;
+    carry = (next - sum) - y;
+    sum = next;
+  }
+  return sum;
+}
+
+double triangleMinAngleDeg(const Mesh& mesh, std::uint32_t t) {
+  const double* p[3];
+  for (int i = 0; i < 3; ++i) p[i] = &mesh.points[2 * std::size_t(mesh.triangles[3 * std::size_t(t) + i])];
+  double smallest = 180;
+  for (int i = 0; i < 3; ++i) smallest = std::min(smallest, cornerAngle(p[i], p[(i + 1) % 3], p[(i + 2) % 3]));
+  return smallest * 180 / kPi;
+}
+
+std::string describeProblems(const std::vector<std::string>& problems, std::size_t max) {
+  if (problems.empty()) return "mesh is valid";
+  std::string text = std::to_string(problems.size()) + " problem(s):";
+  for (std::size_t i = 0; i < problems.size() && i < max; ++i) text += "\n  " + problems[i];
+  return text;
+}
+
+bool hasUniqueCdt(const Mesh& mesh) {
+  Problems ignored(0);
+  if (!checkSizes(mesh, ignored) || !checkIndices(mesh, SIZE_MAX, ignored)) return false;
+  const Scaled s(mesh);
+  std::unordered_set<std::uint64_t> constrained;
+  for (std::size_t k = 0; k < mesh.segmentIds.size(); ++k)
+    constrained.insert(undirectedKey(mesh.segments[2 * k], mesh.segments[2 * k + 1]));
+  for (std::size_t t = 0; t < s.nt; ++t)
+    for (int i = 0; i < 3; ++i) {
+      const std::int32_t n = mesh.neighbors[3 * t + i];
+      if (n == kNoNeighbor) continue;
+      const std::uint32_t a = s.v(t, (i + 1) % 3), b = s.v(t, (i + 2) % 3);
+      if (constrained.count(undirectedKey(a, b))) continue;
+      std::uint32_t d = 0;
+      for (int j = 0; j < 3; ++j) {
+        const std::uint32_t w = s.v(std::size_t(n), j);
+        if (w != a && w != b) d = w;
+      }
+      if (!(incircle(s.p(s.v(t, 0)), s.p(s.v(t, 1)), s.p(s.v(t, 2)), s.p(d)) < 0)) return false;
+    }
+  return true;
+}
+
+}  // namespace ruppert_test

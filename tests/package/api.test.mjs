@@ -1,0 +1,249 @@
+// The package's main-thread API, run against the installed tarball (see run-installed.mjs).
+import assert from 'node:assert/strict';
+import { existsSync, readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { test } from 'node:test';
+import { gzipSync } from 'node:zlib';
+import { init, MeshError, ERROR_CODES, VertexKind, parsePoly, toPoly, toSVG } from 'ruppert';
+import { validateMesh, triangleArea } from './validate-mesh.mjs';
+
+const dataDir = process.env.RUPPERT_SHARED_DATA;
+const haveData = dataDir !== undefined && existsSync(dataDir);
+if (!haveData) console.log(`# shared data folder not found (${dataDir}): fixture tests are skipped`);
+
+const square = { points: [0, 0, 1, 0, 1, 1, 0, 1], segments: [0, 1, 1, 2, 2, 3, 3, 0] };
+
+function expectCode(fn, code, messagePattern) {
+  assert.throws(fn, (error) => {
+    assert.ok(error instanceof MeshError, `expected a MeshError, got ${error}`);
+    assert.equal(error.code, code, error.message);
+    if (messagePattern) assert.match(error.message, messagePattern);
+    return true;
+  });
+}
+
+test('the two-line example from the README meshes a square to the requested quality', async () => {
+  const mesher = await init();
+  const mesh = mesher.triangulate(square, { minAngle: 30, maxArea: 0.01 });
+  assert.equal(mesh.complete, true, JSON.stringify(mesh.reasons));
+  assert.ok(mesh.triangles.length / 3 >= 100, 'area bound 0.01 on a unit square needs >= 100 triangles');
+  assert.deepEqual(validateMesh(mesh, { input: square, minAngle: 30, maxArea: 0.01 }), []);
+});
+
+test('the shipped .wasm is at most 150 KB gzipped', () => {
+  const wasm = readFileSync(new URL('./node_modules/ruppert/wasm/dist/ruppert.wasm', import.meta.url));
+  const gzipped = gzipSync(wasm, { level: 9 }).length;
+  assert.ok(gzipped <= 150000, `${gzipped} bytes gzipped`);
+});
+
+test('init() loads once and returns the same mesher', async () => {
+  assert.equal(await init(), await init());
+});
+
+test('plain CDT of a square with an interior point: typed arrays owned by JavaScript', async () => {
+  const mesher = await init();
+  const plc = { points: new Float64Array([0, 0, 1, 0, 1, 1, 0, 1, 0.25, 0.5]), segments: new Uint32Array(square.segments) };
+  const mesh = mesher.triangulate(plc, { minAngle: 0 });
+  assert.equal(mesh.triangles.length / 3, 4);
+  assert.deepEqual([...mesh.vertexKinds], [0, 0, 0, 0, 0].map(() => VertexKind.INPUT));
+  assert.deepEqual(validateMesh(mesh, { input: plc }), []);
+  // Copies, not views into wasm memory: each array owns its whole buffer.
+  for (const name of ['points', 'triangles', 'neighbors', 'segments', 'segmentIds', 'vertexKinds', 'triangleAttributes']) {
+    assert.equal(mesh[name].byteOffset, 0, name);
+    assert.equal(mesh[name].buffer.byteLength, mesh[name].byteLength, name);
+  }
+  // ... so they survive the heap growing under a later, larger call.
+  const before = Array.from(mesh.points);
+  const many = new Float64Array(200000).map((_, i) => (i % 2 ? Math.sin(i) : Math.cos(i * 1.3)) * 1000);
+  mesher.triangulate({ points: many }, { minAngle: 0 });
+  assert.deepEqual(Array.from(mesh.points), before);
+});
+
+test('meshes of real PLCs pass the independent validator', { skip: !haveData && 'shared data absent' }, async () => {
+  const mesher = await init();
+  for (const name of ['A.poly', 'face.poly', 'double_hex.poly', 'cdt_guitar.poly', 'earcut_dude.poly', 'box.poly']) {
+    const path = join(dataDir, name);
+    if (!existsSync(path)) {
+      console.log(`# ${name} not in ${dataDir}: skipped`);
+      continue;
+    }
+    const plc = parsePoly(readFileSync(path, 'utf8'), name);
+    const cdt = mesher.triangulate(plc, { minAngle: 0 });
+    assert.ok(cdt.triangles.length > 0, `${name}: no triangles`);
+    assert.deepEqual(validateMesh(cdt, { input: plc }), [], `${name} (CDT)`);
+    const refined = mesher.triangulate(plc, { minAngle: 25 });
+    assert.deepEqual(validateMesh(refined, { input: plc }), [], `${name} (refined)`);
+    assert.ok(refined.triangles.length >= cdt.triangles.length, `${name}: refinement removed triangles`);
+  }
+});
+
+test('parsePoly / toPoly / toSVG round trip through the C++ readers and writers', async () => {
+  const mesher = await init();
+  const text = '# a square\n4 2 0 1\n1 0 0 1\n2 1 0 1\n3 1 1 1\n4 0 1 1\n4 1\n1 1 2 5\n2 2 3 5\n3 3 4 5\n4 4 1 5\n0\n';
+  const plc = parsePoly(text);
+  assert.deepEqual(Array.from(plc.points), [0, 0, 1, 0, 1, 1, 0, 1]);
+  assert.deepEqual(Array.from(plc.segments), [0, 1, 1, 2, 2, 3, 3, 0]);
+  assert.equal(plc.indexBase, 1);
+  const mesh = mesher.triangulate(plc, { minAngle: 0 });
+  const poly = toPoly(mesh, plc);
+  const again = parsePoly(poly);
+  assert.equal(again.points.length, mesh.points.length);
+  assert.equal(again.segments.length, mesh.segments.length);
+  const svg = toSVG(mesh);
+  assert.match(svg, /^<\?xml|^<svg/);
+  assert.match(svg, /<\/svg>\s*$/);
+  const node = mesher.toNode(mesh);
+  assert.equal(mesher.parseNode(node).points.length, mesh.points.length);
+  assert.equal(Number(mesher.toEle(mesh).trim().split(/\s+/)[0]), mesh.triangles.length / 3);
+});
+
+test('JavaScript-side validation names the offending item', async () => {
+  const mesher = await init();
+  const cases = [
+    [() => mesher.triangulate('0 0 1 1'), 'MALFORMED_INPUT', /input must be an object/],
+    [() => mesher.triangulate({ points: '0 0 1 0 0 1' }), 'MALFORMED_INPUT', /points must be an array/],
+    [() => mesher.triangulate({ points: [0, 0, 1, 0, 0] }), 'MALFORMED_INPUT', /odd length 5/],
+    // eslint-disable-next-line no-sparse-arrays
+    [() => mesher.triangulate({ points: [0, 0, 1, , 0, 1] }), 'MALFORMED_INPUT', /points\[3\] is missing/],
+    [() => mesher.triangulate({ points: [0, 0, 1, '0', 0, 1] }), 'MALFORMED_INPUT', /points\[3\] = "0" is not a number/],
+    [() => mesher.triangulate({ points: [[0, 0], [1, 0], [0, 1]] }), 'MALFORMED_INPUT', /points\[0\] is an array/],
+    [() => mesher.triangulate({ ...square, segments: [0, 1, 1, 2, 2, 3, 3, 0, 1, 2.5] }), 'MALFORMED_INPUT',
+      /segments\[9\] = 2.5 is not an integer/],
+    [() => mesher.triangulate({ ...square, segments: [0, 1, 1, 4] }), 'INDEX_OUT_OF_RANGE', /segments\[3\] = 4/],
+    [() => mesher.triangulate({ ...square, segments: new Int32Array([0, -1]) }), 'INDEX_OUT_OF_RANGE', /segments\[1\] = -1 is negative/],
+    [() => mesher.triangulate({ ...square, segments: [0, 1, 2] }), 'MALFORMED_INPUT', /segments has odd length 3/],
+    [() => mesher.triangulate({ ...square, holes: [0.5] }), 'MALFORMED_INPUT', /holes has odd length/],
+    [() => mesher.triangulate({ ...square, regions: [{ x: 0.5 }] }), 'MALFORMED_INPUT', /regions\[0\]\.y = undefined/],
+    [() => mesher.triangulate({ ...square, regions: { x: 0.5, y: 0.5 } }), 'MALFORMED_INPUT', /regions must be an array/],
+    [() => mesher.triangulate(square, { minAngle: 61 }), 'INVALID_OPTION', /minAngle = 61/],
+    [() => mesher.triangulate(square, { minAngle: -1 }), 'INVALID_OPTION', /minAngle = -1/],
+    [() => mesher.triangulate(square, { minAngle: '30' }), 'INVALID_OPTION', /minAngle = "30"/],
+    [() => mesher.triangulate(square, { maxArea: -0.5 }), 'INVALID_OPTION', /maxArea = -0.5/],
+    [() => mesher.triangulate(square, { maxArea: NaN }), 'INVALID_OPTION', /maxArea = NaN/],
+    [() => mesher.triangulate(square, { maxSteiner: 1.5 }), 'INVALID_OPTION', /maxSteiner = 1.5/],
+    [() => mesher.triangulate(square, { placement: 'centroid' }), 'INVALID_OPTION', /placement = "centroid"/],
+    [() => mesher.triangulate(square, { variant: 'conforming' }), 'INVALID_OPTION', /variant/],
+    [() => mesher.triangulate(square, { convexHull: 1 }), 'INVALID_OPTION', /convexHull = 1/],
+    [() => mesher.triangulate(square, { sizeFunction: 0.1 }), 'INVALID_OPTION', /sizeFunction = 0.1/],
+    [() => mesher.triangulate(square, { minangle: 30 }), 'INVALID_OPTION', /unknown option 'minangle' \(did you mean 'minAngle'\?\)/],
+    [() => mesher.parsePoly(42), 'MALFORMED_INPUT', /parsePoly expects the file's text/],
+  ];
+  for (const [fn, code, pattern] of cases) expectCode(fn, code, pattern);
+});
+
+test('every error code of the core is reachable from JavaScript', async () => {
+  const mesher = await init();
+  const q = { minAngle: 0 };
+  const seen = new Set();
+  const reach = (fn, code, pattern) => { expectCode(fn, code, pattern); seen.add(code); };
+  reach(() => mesher.triangulate({ points: [] }, q), 'EMPTY_INPUT');
+  reach(() => mesher.triangulate({ points: [0, 0, 1, 0, NaN, 1] }, q), 'NON_FINITE_COORDINATE', /points\[2\]/);
+  // The core rescales, so only a range over 2^128 between coordinates is out of reach.
+  reach(() => mesher.triangulate({ points: [0, 0, 1, 0, 0, 1, 1e-50, 0.5] }, q), 'COORDINATE_RANGE', /points\[3\]\.x/);
+  reach(() => mesher.triangulate({ ...square, segments: [0, 9] }, q), 'INDEX_OUT_OF_RANGE', /segments\[1\] = 9/);
+  reach(() => mesher.triangulate({ points: [0, 0, 1, 1, 2, 2] }, q), 'DEGENERATE_INPUT');
+  reach(() => mesher.triangulate({ ...square, holes: [0.5, 0] }, q), 'HOLE_ON_SEGMENT', /holes\[0\]/);
+  reach(() => mesher.triangulate({ ...square, regions: [{ x: 0.5, y: 0.5, maxArea: NaN }] }, q), 'INVALID_REGION', /regions\[0\]/);
+  reach(() => mesher.triangulate(square, { minAngle: 60.5 }), 'INVALID_OPTION', /minAngle/);
+  reach(() => mesher.parsePoly('4 2 0 0\n1 0 0\n'), 'PARSE_ERROR', /<poly>:\d/);
+  reach(() => mesher.parsePoly('1000000000000 2 0 0\n'), 'TOO_LARGE');
+  reach(() => mesher.parseJson('[1, 2]'), 'MALFORMED_INPUT');
+  reach(() => mesher.triangulate({ points: [0, 0, 1, 0, 0] }), 'MALFORMED_INPUT', /odd length/);
+  reach(() => mesher._abortForTesting(), 'INTERNAL', /aborted/);
+  // CANCELLED is reached in worker.test.mjs (an aborted request). IO_ERROR cannot come from the
+  // library: the wasm has no file system, so only the CLI reads files (cli.test.mjs checks it fails).
+  for (const code of ['CANCELLED', 'IO_ERROR']) seen.add(code);
+  assert.deepEqual([...seen].sort(), [...ERROR_CODES].sort(), 'a new error code needs a test here');
+});
+
+test('a wasm abort does not leave the module unusable', async () => {
+  const mesher = await init();
+  expectCode(() => mesher._abortForTesting(), 'INTERNAL');
+  // The very next call runs on a fresh instance (synchronously re-instantiated under Node).
+  const mesh = mesher.triangulate(square, { minAngle: 0 });
+  assert.equal(mesh.triangles.length / 3, 2);
+  await mesher.ready;
+  assert.equal(mesher.triangulate(square, { minAngle: 0 }).triangles.length / 3, 2);
+});
+
+test('sizeFunction is called from C++ and grades the mesh', async () => {
+  const mesher = await init();
+  let calls = 0;
+  const sizeFunction = (x, y) => { calls++; return x < 0.5 ? 0.0005 : 0.01; };
+  const mesh = mesher.triangulate(square, { minAngle: 25, sizeFunction });
+  assert.ok(calls > 0, 'sizeFunction was never called');
+  assert.deepEqual(validateMesh(mesh, { input: square }), []);
+  const p = mesh.points, t = mesh.triangles;
+  let left = 0, right = 0;
+  for (let k = 0; k < t.length / 3; k++) {
+    const xs = [p[2 * t[3 * k]], p[2 * t[3 * k + 1]], p[2 * t[3 * k + 2]]];
+    const area = triangleArea(p, t[3 * k], t[3 * k + 1], t[3 * k + 2]);
+    // Well inside the fine half, wherever the core samples the field (centroid or circumcenter).
+    if (Math.max(...xs) < 0.4) assert.ok(area <= 0.0005 * (1 + 1e-9), `triangle ${k} area ${area} at x < 0.4`);
+    if (xs[0] + xs[1] + xs[2] < 1.5) left++; else right++;
+  }
+  assert.ok(left > 4 * right, `left ${left} vs right ${right}`);
+});
+
+test('errors thrown by callbacks propagate unchanged and leave the module usable', async () => {
+  const mesher = await init();
+  const boom = new Error('boom');
+  assert.throws(() => mesher.triangulate(square, { maxArea: 0.001, sizeFunction: () => { throw boom; } }), (e) => e === boom);
+  expectCode(() => mesher.triangulate(square, { maxArea: 0.001, sizeFunction: () => 'small' }), 'INVALID_OPTION',
+    /sizeFunction\(.*\) returned "small"/);
+  assert.throws(() => mesher.triangulate(square, { maxArea: 1e-6, onProgress: () => { throw boom; } }), (e) => e === boom);
+  assert.equal(mesher.triangulate(square, { minAngle: 0 }).triangles.length / 3, 2);
+});
+
+test('onProgress reports and can stop refinement early', async () => {
+  const mesher = await init();
+  const seen = [];
+  const mesh = mesher.triangulate(square, { maxArea: 1e-6, onProgress: (p) => { seen.push(p); return seen.length < 2; } });
+  assert.ok(seen.length >= 1, 'no progress reported');
+  assert.equal(typeof seen[0].insertedVertices, 'number');
+  assert.equal(mesh.complete, false);
+  assert.ok(mesh.reasons.some((r) => r.kind === 'CANCELLED'), JSON.stringify(mesh.reasons));
+  assert.deepEqual(validateMesh(mesh, { input: square }), []);
+});
+
+test('trace records every insertion as typed arrays', async () => {
+  const mesher = await init();
+  const mesh = mesher.triangulate(square, { minAngle: 30, maxArea: 0.01, trace: true });
+  assert.ok(mesh.events, 'no events');
+  const inserted = mesh.points.length / 2 - square.points.length / 2;
+  assert.equal(mesh.events.count, mesh.events.kind.length);
+  assert.ok(mesh.events.count >= inserted, `${mesh.events.count} events for ${inserted} new vertices`);
+  assert.equal(mesh.events.xy.length, 2 * mesh.events.count);
+  assert.equal(mesher.triangulate(square, { minAngle: 30, maxArea: 0.01 }).events, undefined);
+});
+
+test('the heap does not grow over 10,000 calls (successes and every failure path)', async () => {
+  const mesher = await init();
+  const tiny = { points: [0, 0, 1, 0, 1, 1, 0, 1, 0.3, 0.6], segments: square.segments, holes: [], regions: [] };
+  const round = (i) => {
+    switch (i % 5) {
+      case 0: return mesher.triangulate(tiny, { minAngle: 0 });
+      case 1: try { mesher.triangulate({ points: [0, 0, 1, 1, 2, 2] }, { minAngle: 0 }); } catch { /* C++ throw */ } return null;
+      case 2: try { mesher.parsePoly('3 2 0 0\n1 0 0\n'); } catch { /* parse error */ } return null;
+      case 3: try { mesher.triangulate(tiny, { minAngle: 0, sizeFunction: () => { throw new Error('x'); } }); } catch { /* callback */ } return null;
+      default: return mesher.toSVG(mesher.triangulate(tiny, { minAngle: 20, maxArea: 0.05 }));
+    }
+  };
+  for (let i = 0; i < 200; i++) round(i);
+  const before = mesher.memoryUsage();
+  for (let i = 0; i < 10000; i++) round(i);
+  const after = mesher.memoryUsage();
+  assert.equal(after.heapBytes, before.heapBytes, 'the wasm heap grew');
+  assert.ok(after.allocatedBytes <= before.allocatedBytes + 4096,
+    `allocated bytes went from ${before.allocatedBytes} to ${after.allocatedBytes}`);
+});
+
+test('a 2-million-triangle mesh succeeds', { timeout: 600000 }, async () => {
+  const mesher = await init();
+  const maxArea = 0.5e-6;  // every triangle <= maxArea on a unit square: at least 2,000,000 triangles
+  const mesh = mesher.triangulate(square, { minAngle: 30, maxArea });
+  const triangles = mesh.triangles.length / 3;
+  assert.ok(triangles >= 2000000, `${triangles} triangles`);
+  assert.equal(mesh.complete, true, JSON.stringify(mesh.reasons));
+  assert.deepEqual(validateMesh(mesh, { input: square, minAngle: 30, maxArea }), []);
+});

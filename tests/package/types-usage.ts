@@ -1,0 +1,69 @@
+// Compiled with `tsc --noEmit --strict` against the installed package (see run-installed.mjs):
+// the declarations must accept the documented usage and reject obvious misuse.
+import {
+  init, createMeshWorker, MeshError, ERROR_CODES, VertexKind, EventKind, NO_NEIGHBOR,
+  parsePoly, toPoly, toSVG,
+  type Mesh, type Mesher, type Plc, type TriangulateOptions, type ErrorCode, type Progress,
+} from 'ruppert';
+
+async function example(): Promise<number> {
+  const mesher: Mesher = await init();
+  const plc: Plc = {
+    points: new Float64Array([0, 0, 1, 0, 1, 1, 0, 1]),
+    segments: [0, 1, 1, 2, 2, 3, 3, 0],
+    holes: [],
+    regions: [{ x: 0.5, y: 0.5, attribute: 1, maxArea: 0.1 }],
+  };
+  const options: TriangulateOptions = {
+    minAngle: 30, maxArea: 0.01, maxSteiner: 1000, trace: true,
+    placement: 'offcenter', variant: 'cdt', convexHull: false, autoHoles: false,
+    sizeFunction: (x: number, y: number) => 0.01 * (1 + x + y),
+    onProgress: (p: Progress) => p.triangles < 1e6,
+  };
+  const mesh: Mesh = mesher.triangulate(plc, options);
+  const triangles: Uint32Array = mesh.triangles;
+  const neighbors: Int32Array = mesh.neighbors;
+  const kinds: Uint8Array = mesh.vertexKinds;
+  const boundary = neighbors.filter((n) => n === NO_NEIGHBOR).length;
+  const interior = kinds.filter((k) => k === VertexKind.INTERIOR).length;
+  const splits = mesh.events ? mesh.events.kind.filter((k) => k === EventKind.SEGMENT_SPLIT).length : 0;
+  const text: string = toPoly(mesh, plc) + toSVG(mesh) + mesher.toNode(mesh) + mesher.toEle(mesh);
+  const parsed = parsePoly(text);
+  const firstX: number = parsed.points[0];
+  const reasons: string[] = mesh.reasons.map((r) => `${r.kind}: ${r.message}`);
+  return triangles.length + boundary + interior + splits + firstX + reasons.length + mesh.stats.minAngle;
+}
+
+async function worker(): Promise<Mesh> {
+  const meshWorker = createMeshWorker();
+  const controller = new AbortController();
+  try {
+    return await meshWorker.triangulate({ points: [0, 0, 1, 0, 0, 1] }, { minAngle: 20 },
+      { signal: controller.signal, onProgress: (p) => console.log(p.insertedVertices) });
+  } catch (error) {
+    if (error instanceof MeshError) {
+      const code: ErrorCode = error.code;
+      if (ERROR_CODES.includes(code)) throw error;
+    }
+    throw error;
+  } finally {
+    await meshWorker.terminate();
+  }
+}
+
+// Misuse the declarations must reject:
+async function misuse(mesher: Mesher): Promise<void> {
+  // @ts-expect-error placement is a fixed set of names
+  mesher.triangulate({ points: [] }, { placement: 'centroid' });
+  // @ts-expect-error points are required
+  mesher.triangulate({ segments: [0, 1] });
+  // @ts-expect-error the worker cannot take a function
+  createMeshWorker().triangulate({ points: [] }, { sizeFunction: () => 1 });
+  // @ts-expect-error mesh.triangles is not writable as a plain array
+  const t: number[] = (await init()).triangulate({ points: [] }).triangles;
+  void t;
+}
+
+void example;
+void worker;
+void misuse;

@@ -1,0 +1,432 @@
+// Embind layer between wasm/index.js and the ruppert core.
+//
+// Only conversions live here; every check of user input that JavaScript can make happens in
+// wasm/validate.js before anything crosses into wasm, and every mesh rule lives in the core.
+//
+// Contract with the JavaScript side (wasm/mesher.js):
+//   * Inputs arrive already normalised: typed arrays of the exact element type, numbers, booleans.
+//   * No C++ exception ever escapes a binding. Emscripten 3.1.6 would hand JavaScript a bare
+//     number for it, and skipping our catch would also skip the destructors (a leak per call).
+//     Instead every entry point returns a plain object; on failure it is
+//     { errorCode: "INDEX_OUT_OF_RANGE", errorMessage: "...", reset?: true } and index.js turns it
+//     into a MeshError.
+//   * Results are copies (TypedArray.prototype.slice of a view), never views into the heap,
+//     which would go stale the moment the heap grows.
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+#include <malloc.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <exception>
+#include <new>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_args.h"    // core/cli: the native CLI's parser, reused by wasm/cli.js
+#include "cli_report.h"  // core/cli: its summary, --stats and --trace printers
+#include "ruppert/ruppert.h"
+
+using emscripten::val;
+
+namespace {
+
+// Thrown by the C++ side of a JavaScript callback when the callback failed (threw, or returned
+// something that is not a number). It is an exception so that it unwinds through the core and
+// runs its destructors; the JavaScript wrapper keeps the original error and rethrows it.
+struct CallbackFailed {};
+
+template <class T>
+val copyOut(const std::vector<T>& v) {
+  return val(emscripten::typed_memory_view(v.size(), v.data())).call<val>("slice");
+}
+
+template <class T>
+std::vector<T> copyIn(const val& typedArray) {
+  if (typedArray.isUndefined() || typedArray.isNull()) return {};
+  return emscripten::convertJSArrayToNumberVector<T>(typedArray);
+}
+
+val failure(const char* code, const std::string& message, bool reset = false) {
+  val out = val::object();
+  out.set("errorCode", std::string(code));
+  out.set("errorMessage", message);
+  if (reset) out.set("reset", true);
+  return out;
+}
+
+// Runs `body` and turns every way it can fail into a failure object.
+template <class Body>
+val guarded(Body&& body) {
+  try {
+    return body();
+  } catch (const ruppert::Error& e) {
+    return failure(ruppert::errorCodeName(e.code()), e.what());
+  } catch (const CallbackFailed&) {
+    return failure("CALLBACK_FAILED", "a JavaScript callback failed");
+  } catch (const std::bad_alloc&) {
+    // The heap may now be grown to its 4 GB ceiling: ask JavaScript for a fresh instance.
+    return failure("TOO_LARGE", "out of memory: the mesh does not fit in 4 GB of WebAssembly memory", true);
+  } catch (const std::exception& e) {
+    return failure("INTERNAL", std::string("internal error: ") + e.what(), true);
+  } catch (...) {
+    return failure("INTERNAL", "internal error: unknown exception", true);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// JavaScript -> C++
+// ---------------------------------------------------------------------------------------------
+ruppert::Plc plcFromJs(const val& js) {
+  ruppert::Plc plc;
+  plc.points = copyIn<double>(js["points"]);
+  plc.segments = copyIn<std::uint32_t>(js["segments"]);
+  plc.holes = copyIn<double>(js["holes"]);
+  // Regions arrive flattened: x, y, attribute, maxArea per region.
+  const std::vector<double> regions = copyIn<double>(js["regions"]);
+  for (std::size_t i = 0; i + 3 < regions.size(); i += 4) {
+    ruppert::Region r;
+    r.x = regions[i];
+    r.y = regions[i + 1];
+    r.attribute = regions[i + 2];
+    r.maxArea = regions[i + 3];
+    plc.regions.push_back(r);
+  }
+  plc.pointMarkers = copyIn<std::int32_t>(js["pointMarkers"]);
+  plc.segmentMarkers = copyIn<std::int32_t>(js["segmentMarkers"]);
+  plc.indexBase = js["indexBase"].isNumber() ? js["indexBase"].as<int>() : 0;
+  return plc;
+}
+
+ruppert::Options optionsFromJs(const val& js) {
+  ruppert::Options o;
+  o.minAngle = js["minAngle"].as<double>();
+  o.maxArea = js["maxArea"].as<double>();
+  // index.js sends -1 for "automatic"; anything else is a validated non-negative integer.
+  const double steiner = js["maxSteiner"].as<double>();
+  o.maxSteiner = steiner < 0 ? ruppert::kAutoSteinerBudget : static_cast<std::uint64_t>(steiner);
+  o.placement = static_cast<ruppert::Placement>(js["placement"].as<int>());
+  o.variant = static_cast<ruppert::Variant>(js["variant"].as<int>());
+  o.convexHull = js["convexHull"].as<bool>();
+  o.autoHoles = js["autoHoles"].as<bool>();
+  o.trace = js["trace"].as<bool>();
+
+  // The JavaScript wrappers never throw: they return NaN (size) or -1 (progress) after storing
+  // the user's error, and we unwind with CallbackFailed.
+  const val size = js["sizeFunction"];
+  if (!size.isUndefined() && !size.isNull()) {
+    o.sizeFunction = [size](double x, double y) {
+      const double area = size(x, y).as<double>();
+      if (std::isnan(area)) throw CallbackFailed{};
+      return area;
+    };
+  }
+  const val progress = js["onProgress"];
+  if (!progress.isUndefined() && !progress.isNull()) {
+    o.onProgress = [progress](const ruppert::Progress& p) {
+      const int verdict = progress(static_cast<double>(p.insertedVertices),
+                                   static_cast<double>(p.triangles), p.worstAngle)
+                              .as<int>();
+      if (verdict < 0) throw CallbackFailed{};
+      return verdict != 0;
+    };
+  }
+  return o;
+}
+
+ruppert::Mesh meshFromJs(const val& js) {
+  ruppert::Mesh m;
+  m.points = copyIn<double>(js["points"]);
+  m.triangles = copyIn<std::uint32_t>(js["triangles"]);
+  m.neighbors = copyIn<std::int32_t>(js["neighbors"]);
+  m.segments = copyIn<std::uint32_t>(js["segments"]);
+  m.segmentIds = copyIn<std::int32_t>(js["segmentIds"]);
+  m.vertexKinds = copyIn<std::uint8_t>(js["vertexKinds"]);
+  m.triangleAttributes = copyIn<double>(js["triangleAttributes"]);
+  m.pointMarkers = copyIn<std::int32_t>(js["pointMarkers"]);
+  m.indexBase = js["indexBase"].isNumber() ? js["indexBase"].as<int>() : 0;
+  m.stats.vertices = m.points.size() / 2;
+  m.stats.triangles = m.triangles.size() / 3;
+  return m;
+}
+
+// ---------------------------------------------------------------------------------------------
+// C++ -> JavaScript
+// ---------------------------------------------------------------------------------------------
+const char* noticeKindName(ruppert::NoticeKind k) {
+  switch (k) {
+    case ruppert::NoticeKind::DuplicatePoint: return "DUPLICATE_POINT";
+    case ruppert::NoticeKind::ZeroLengthSegment: return "ZERO_LENGTH_SEGMENT";
+    case ruppert::NoticeKind::DuplicateSegment: return "DUPLICATE_SEGMENT";
+    case ruppert::NoticeKind::VertexOnSegment: return "VERTEX_ON_SEGMENT";
+    case ruppert::NoticeKind::SegmentsCross: return "SEGMENTS_CROSS";
+    case ruppert::NoticeKind::SegmentsOverlap: return "SEGMENTS_OVERLAP";
+    case ruppert::NoticeKind::HoleOutsideDomain: return "HOLE_OUTSIDE_DOMAIN";
+    case ruppert::NoticeKind::RegionOutsideDomain: return "REGION_OUTSIDE_DOMAIN";
+    case ruppert::NoticeKind::NothingEnclosed: return "NOTHING_ENCLOSED";
+  }
+  return "UNKNOWN";
+}
+
+const char* reasonKindName(ruppert::ReasonKind k) {
+  switch (k) {
+    case ruppert::ReasonKind::SmallInputAngle: return "SMALL_INPUT_ANGLE";
+    case ruppert::ReasonKind::SeditiousEdge: return "SEDITIOUS_EDGE";
+    case ruppert::ReasonKind::SteinerBudget: return "STEINER_BUDGET";
+    case ruppert::ReasonKind::PrecisionFloor: return "PRECISION_FLOOR";
+    case ruppert::ReasonKind::Cancelled: return "CANCELLED";
+  }
+  return "UNKNOWN";
+}
+
+val statsToJs(const ruppert::Stats& s) {
+  val o = val::object();
+  o.set("vertices", static_cast<double>(s.vertices));
+  o.set("triangles", static_cast<double>(s.triangles));
+  o.set("minAngle", s.minAngle);
+  o.set("maxAngle", s.maxAngle);
+  // Counts fit a double exactly (< 2^53); a Float64Array transfers from a worker for free.
+  std::vector<double> histogram(s.angleHistogram.begin(), s.angleHistogram.end());
+  o.set("angleHistogram", copyOut(histogram));
+  o.set("inputVertices", static_cast<double>(s.inputVertices));
+  o.set("segmentVertices", static_cast<double>(s.segmentVertices));
+  o.set("interiorVertices", static_cast<double>(s.interiorVertices));
+  o.set("offCenterVertices", static_cast<double>(s.offCenterVertices));
+  o.set("intersectionVertices", static_cast<double>(s.intersectionVertices));
+  o.set("rejectedCircumcenters", static_cast<double>(s.rejectedCircumcenters));
+  o.set("lfsIntegral", s.lfsIntegral);
+  o.set("trianglesPerLfsIntegral", s.trianglesPerLfsIntegral);
+  o.set("milliseconds", s.milliseconds);
+  return o;
+}
+
+// Events as a structure of arrays: a trace can hold millions of them, and typed arrays are both
+// smaller than objects and transferable from a worker.
+val eventsToJs(const std::vector<ruppert::Event>& events) {
+  const std::size_t n = events.size();
+  std::vector<std::uint8_t> kind(n);
+  std::vector<std::uint32_t> vertex(n), a(n), b(n), tri(3 * n);
+  std::vector<std::int32_t> by(n);
+  std::vector<double> xy(2 * n), cxy(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const ruppert::Event& e = events[i];
+    kind[i] = static_cast<std::uint8_t>(e.kind);
+    vertex[i] = e.vertex;
+    xy[2 * i] = e.x;
+    xy[2 * i + 1] = e.y;
+    a[i] = e.a;
+    b[i] = e.b;
+    by[i] = static_cast<std::int32_t>(e.by);
+    tri[3 * i] = e.t0;
+    tri[3 * i + 1] = e.t1;
+    tri[3 * i + 2] = e.t2;
+    cxy[2 * i] = e.cx;
+    cxy[2 * i + 1] = e.cy;
+  }
+  val o = val::object();
+  o.set("count", static_cast<double>(n));
+  o.set("kind", copyOut(kind));
+  o.set("vertex", copyOut(vertex));
+  o.set("xy", copyOut(xy));
+  o.set("a", copyOut(a));
+  o.set("b", copyOut(b));
+  o.set("by", copyOut(by));
+  o.set("triangle", copyOut(tri));
+  o.set("circumcenter", copyOut(cxy));
+  return o;
+}
+
+val meshToJs(const ruppert::Mesh& m) {
+  val o = val::object();
+  o.set("points", copyOut(m.points));
+  o.set("triangles", copyOut(m.triangles));
+  o.set("neighbors", copyOut(m.neighbors));
+  o.set("segments", copyOut(m.segments));
+  o.set("segmentIds", copyOut(m.segmentIds));
+  o.set("vertexKinds", copyOut(m.vertexKinds));
+  o.set("triangleAttributes", copyOut(m.triangleAttributes));
+  o.set("pointMarkers", copyOut(m.pointMarkers));
+  o.set("indexBase", m.indexBase);
+  o.set("complete", m.complete);
+
+  val reasons = val::array();
+  for (const ruppert::Reason& r : m.reasons) {
+    val item = val::object();
+    item.set("kind", std::string(reasonKindName(r.kind)));
+    item.set("count", static_cast<double>(r.count));
+    item.set("message", r.message);
+    reasons.call<void>("push", item);
+  }
+  o.set("reasons", reasons);
+
+  val notices = val::array();
+  for (const ruppert::Notice& n : m.notices) {
+    val item = val::object();
+    item.set("kind", std::string(noticeKindName(n.kind)));
+    item.set("a", static_cast<double>(n.a));
+    item.set("b", static_cast<double>(n.b));
+    item.set("x", n.x);
+    item.set("y", n.y);
+    item.set("message", n.message);
+    notices.call<void>("push", item);
+  }
+  o.set("notices", notices);
+  o.set("stats", statsToJs(m.stats));
+  return o;
+}
+
+val plcToJs(const ruppert::Plc& plc) {
+  val o = val::object();
+  o.set("points", copyOut(plc.points));
+  o.set("segments", copyOut(plc.segments));
+  o.set("holes", copyOut(plc.holes));
+  val regions = val::array();
+  for (const ruppert::Region& r : plc.regions) {
+    val item = val::object();
+    item.set("x", r.x);
+    item.set("y", r.y);
+    item.set("attribute", r.attribute);
+    item.set("maxArea", r.maxArea);
+    regions.call<void>("push", item);
+  }
+  o.set("regions", regions);
+  o.set("pointMarkers", copyOut(plc.pointMarkers));
+  o.set("segmentMarkers", copyOut(plc.segmentMarkers));
+  o.set("indexBase", plc.indexBase);
+  return o;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Entry points
+// ---------------------------------------------------------------------------------------------
+// `report` (used by wasm/cli.js) is null or { summary, stats, trace } booleans: the native CLI's
+// texts for this mesh, printed by the same C++ code so that both CLIs print the same thing.
+val triangulate(val plcJs, val optionsJs, val report) {
+  return guarded([&] {
+    const ruppert::Plc plc = plcFromJs(plcJs);
+    const ruppert::Options options = optionsFromJs(optionsJs);
+    const ruppert::Mesh mesh = ruppert::triangulate(plc, options);
+    val out = meshToJs(mesh);
+    if (options.trace) out.set("events", eventsToJs(mesh.events));
+    if (!report.isNull() && !report.isUndefined()) {
+      val texts = val::object();
+      const auto text = [&](const char* key, auto&& print) {
+        if (!report[key].as<bool>()) return;
+        std::ostringstream stream;
+        print(stream);
+        texts.set(key, stream.str());
+      };
+      text("summary", [&](std::ostream& o) { ruppert::cli::printSummary(o, mesh); });
+      text("stats", [&](std::ostream& o) { ruppert::cli::printStats(o, mesh.stats); });
+      text("trace", [&](std::ostream& o) { ruppert::cli::writeTrace(o, mesh); });
+      out.set("report", texts);
+    }
+    return out;
+  });
+}
+
+// The native CLI's argument parser. Returns { usageLine, helpText, usageError? } plus, on success,
+// the parsed fields with options in index.js's vocabulary.
+val parseCliArgs(val argsJs) {
+  return guarded([&] {
+    val out = val::object();
+    out.set("usageLine", std::string(ruppert::cli::usageLine()));
+    out.set("helpText", ruppert::cli::helpText());
+    ruppert::cli::CliArgs args;
+    try {
+      args = ruppert::cli::parseArgs(emscripten::vecFromJSArray<std::string>(argsJs));
+    } catch (const ruppert::cli::UsageError& e) {
+      out.set("usageError", std::string(e.what()));
+      return out;
+    }
+    out.set("input", args.input);
+    out.set("outputBase", args.outputBase);
+    out.set("tracePath", args.tracePath);
+    using ruppert::cli::OutputFormat;
+    out.set("format", std::string(args.format == OutputFormat::Json  ? "json"
+                                  : args.format == OutputFormat::Svg ? "svg"
+                                                                     : "triangle"));
+    out.set("quiet", args.quiet);
+    out.set("stats", args.stats);
+    out.set("help", args.help);
+    out.set("version", args.version);
+    const ruppert::Options& o = args.options;
+    val options = val::object();
+    options.set("minAngle", o.minAngle);
+    options.set("maxArea", o.maxArea);
+    if (o.maxSteiner != ruppert::kAutoSteinerBudget) options.set("maxSteiner", static_cast<double>(o.maxSteiner));
+    options.set("placement", std::string(o.placement == ruppert::Placement::Circumcenter ? "circumcenter" : "offcenter"));
+    options.set("variant", std::string(o.variant == ruppert::Variant::BoundingBox ? "box" : "cdt"));
+    options.set("convexHull", o.convexHull);
+    options.set("autoHoles", o.autoHoles);
+    options.set("trace", !args.tracePath.empty());
+    out.set("options", options);
+    return out;
+  });
+}
+
+// format: "poly", "node" or "json".
+val readPlc(std::string text, std::string format, std::string name) {
+  return guarded([&] {
+    std::istringstream in(text);
+    text.clear();
+    text.shrink_to_fit();
+    ruppert::Plc plc;
+    if (format == "poly") {
+      plc = ruppert::readPoly(in, name);
+    } else if (format == "node") {
+      plc = ruppert::readNode(in, name);
+    } else if (format == "json") {
+      plc = ruppert::readJson(in, name);
+    } else {
+      throw ruppert::Error(ruppert::ErrorCode::InvalidOption, "unknown input format '" + format + "'");
+    }
+    val out = val::object();
+    out.set("plc", plcToJs(plc));
+    return out;
+  });
+}
+
+// format: "node", "ele", "poly", "json" or "svg". `input` may be null (no holes or regions).
+val writeMesh(val meshJs, val inputJs, std::string format) {
+  return guarded([&] {
+    const ruppert::Mesh mesh = meshFromJs(meshJs);
+    const ruppert::Plc input = inputJs.isNull() || inputJs.isUndefined() ? ruppert::Plc{} : plcFromJs(inputJs);
+    std::ostringstream out;
+    if (format == "node") {
+      ruppert::writeNode(out, mesh);
+    } else if (format == "ele") {
+      ruppert::writeEle(out, mesh);
+    } else if (format == "poly") {
+      ruppert::writePoly(out, mesh, input);
+    } else if (format == "json") {
+      ruppert::writeJson(out, mesh, input);
+    } else if (format == "svg") {
+      ruppert::writeSvg(out, mesh);
+    } else {
+      throw ruppert::Error(ruppert::ErrorCode::InvalidOption, "unknown output format '" + format + "'");
+    }
+    val result = val::object();
+    result.set("text", out.str());
+    return result;
+  });
+}
+
+// Bytes currently allocated by malloc: lets tests prove that repeated calls do not leak.
+double allocatedBytes() { return static_cast<double>(mallinfo().uordblks); }
+
+// Lets the package tests prove that a wasm abort does not leave the module unusable.
+void abortForTesting() { std::abort(); }
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(ruppert) {
+  emscripten::function("triangulate", &triangulate);
+  emscripten::function("readPlc", &readPlc);
+  emscripten::function("writeMesh", &writeMesh);
+  emscripten::function("parseCliArgs", &parseCliArgs);
+  emscripten::function("allocatedBytes", &allocatedBytes);
+  emscripten::function("abortForTesting", &abortForTesting);
+}

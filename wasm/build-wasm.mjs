@@ -1,0 +1,31 @@
+#!/usr/bin/env node
+// `npm run build:wasm`: configure and build the WebAssembly target with Emscripten into
+// build-wasm/, then copy ruppert.mjs + ruppert.wasm into wasm/dist/ (what the package ships).
+// Debian's emcc needs NODE_PATH=/usr/share/nodejs to find its JS optimizer's `acorn`.
+import { spawnSync } from 'node:child_process';
+import { copyFileSync, mkdirSync, readFileSync, statSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { gzipSync } from 'node:zlib';
+
+const root = fileURLToPath(new URL('..', import.meta.url));
+const buildDir = process.env.RUPPERT_WASM_BUILD_DIR ?? `${root}build-wasm`;
+const distDir = fileURLToPath(new URL('./dist/', import.meta.url));
+const env = { ...process.env, NODE_PATH: [process.env.NODE_PATH, '/usr/share/nodejs'].filter(Boolean).join(':') };
+
+function run(command, args) {
+  console.log(`$ ${command} ${args.join(' ')}`);
+  const result = spawnSync(command, args, { stdio: 'inherit', env });
+  if (result.error) throw result.error;
+  if (result.status !== 0) process.exit(result.status ?? 1);
+}
+
+run('emcmake', ['cmake', '-S', root, '-B', buildDir, '-DCMAKE_BUILD_TYPE=Release']);
+run('cmake', ['--build', buildDir, '--target', 'ruppert_wasm', '-j2']);
+
+mkdirSync(distDir, { recursive: true });
+for (const file of ['ruppert.mjs', 'ruppert.wasm']) {
+  copyFileSync(`${buildDir}/wasm/dist/${file}`, `${distDir}${file}`);
+}
+const wasm = `${distDir}ruppert.wasm`;
+const gzipped = gzipSync(readFileSync(wasm), { level: 9 }).length;
+console.log(`wasm/dist/ruppert.wasm: ${statSync(wasm).size} bytes, ${gzipped} bytes gzipped`);

@@ -1,0 +1,49 @@
+// MeshError: the one error type the package throws for bad input or a failed mesh.
+//
+// `code` is stable and meant for branching. The codes are ruppert::errorCodeName's
+// (core/src/errors.cpp); values of the wrong JavaScript type are MALFORMED_INPUT.
+
+/** Every code a MeshError can carry: ruppert::ErrorCode's names, in enum order. */
+export const ERROR_CODES = Object.freeze([
+  'EMPTY_INPUT',
+  'NON_FINITE_COORDINATE',
+  'COORDINATE_RANGE',
+  'INDEX_OUT_OF_RANGE',
+  'DEGENERATE_INPUT',
+  'HOLE_ON_SEGMENT',
+  'INVALID_REGION',
+  'INVALID_OPTION',
+  'PARSE_ERROR',
+  'IO_ERROR',
+  'TOO_LARGE',
+  'CANCELLED',
+  'MALFORMED_INPUT',
+  'INTERNAL',
+]);
+
+export class MeshError extends Error {
+  /**
+   * @param {string} code one of ERROR_CODES
+   * @param {string} message names the offending item, e.g. "segments[7] = 2.5 is not an integer"
+   * @param {{ cause?: unknown }} [options]
+   */
+  constructor(code, message, options) {
+    super(message, options);
+    this.name = 'MeshError';
+    this.code = code;
+  }
+}
+
+// Workers post errors as plain objects (structured clone drops the class); rebuild them here.
+export function serializeError(error) {
+  if (error instanceof MeshError) return { name: 'MeshError', code: error.code, message: error.message };
+  const message = error instanceof Error ? error.message : String(error);
+  return { name: error?.name ?? 'Error', code: undefined, message };
+}
+
+export function deserializeError(data) {
+  if (data.name === 'MeshError') return new MeshError(data.code, data.message);
+  const error = new Error(data.message);
+  error.name = data.name;
+  return error;
+}

@@ -1,0 +1,232 @@
+// Types of the ruppert package. The layouts follow core/include/ruppert/ruppert.h.
+
+/** Numbers in a plain array or any numeric typed array. */
+export type NumberArray = ArrayLike<number>;
+
+export interface Region {
+  /** Seed point inside the region. */
+  x: number;
+  y: number;
+  /** Copied to every triangle of the region (mesh.triangleAttributes). Default 0. */
+  attribute?: number;
+  /** Upper bound on triangle area in this region; <= 0 or absent: none. */
+  maxArea?: number;
+}
+
+/** A planar straight-line graph. */
+export interface Plc {
+  /** Interleaved coordinates x0, y0, x1, y1, ... */
+  points: NumberArray;
+  /** Pairs of 0-based point indices a0, b0, a1, b1, ... */
+  segments?: NumberArray;
+  /** Hole seeds hx0, hy0, hx1, hy1, ... */
+  holes?: NumberArray;
+  regions?: Region[];
+  /** One per point, or empty (carried through for Triangle-format round trips). */
+  pointMarkers?: NumberArray;
+  /** One per segment, or empty. */
+  segmentMarkers?: NumberArray;
+  /** 0 or 1: the index base writers print. */
+  indexBase?: 0 | 1;
+}
+
+/** What the readers return. */
+export interface ParsedPlc extends Plc {
+  points: Float64Array;
+  segments: Uint32Array;
+  holes: Float64Array;
+  regions: Required<Region>[];
+  pointMarkers: Int32Array;
+  segmentMarkers: Int32Array;
+  indexBase: 0 | 1;
+}
+
+export interface Progress {
+  insertedVertices: number;
+  triangles: number;
+  /** Degrees: smallest angle among triangles still queued as bad. */
+  worstAngle: number;
+}
+
+export interface TriangulateOptions {
+  /** Minimum angle in degrees, in [0, 60]. Default 30. */
+  minAngle?: number;
+  /** Global upper bound on triangle area; 0 or absent: none. */
+  maxArea?: number;
+  /** Budget of Steiner vertices; default automatic. Running out sets complete = false. */
+  maxSteiner?: number;
+  /** Maximum triangle area at (x, y); return <= 0 or Infinity for no bound there. */
+  sizeFunction?: (x: number, y: number) => number;
+  /** Record mesh.events (every insertion). */
+  trace?: boolean;
+  placement?: 'offcenter' | 'circumcenter';
+  /** 'cdt': constrained Delaunay refinement; 'box': Ruppert's original, conforming, in a box. */
+  variant?: 'cdt' | 'box';
+  /** Mesh the whole convex hull, not only what segments enclose. */
+  convexHull?: boolean;
+  /** With no hole seeds: regions at odd nesting depth are domain, even are holes. */
+  autoHoles?: boolean;
+  /** Called every few thousand insertions; return false to stop early (complete = false). */
+  onProgress?: (progress: Progress) => boolean | void;
+}
+
+export type ReasonKind = 'SMALL_INPUT_ANGLE' | 'SEDITIOUS_EDGE' | 'STEINER_BUDGET' | 'PRECISION_FLOOR' | 'CANCELLED';
+export type NoticeKind = 'DUPLICATE_POINT' | 'ZERO_LENGTH_SEGMENT' | 'DUPLICATE_SEGMENT' | 'VERTEX_ON_SEGMENT' |
+  'SEGMENTS_CROSS' | 'SEGMENTS_OVERLAP' | 'HOLE_OUTSIDE_DOMAIN' | 'REGION_OUTSIDE_DOMAIN' | 'NOTHING_ENCLOSED';
+
+export interface Reason {
+  kind: ReasonKind;
+  /** How many triangles or subsegments remain because of it. */
+  count: number;
+  message: string;
+}
+
+export interface Notice {
+  kind: NoticeKind;
+  a: number;
+  b: number;
+  x: number;
+  y: number;
+  message: string;
+}
+
+export interface Stats {
+  vertices: number;
+  triangles: number;
+  minAngle: number;
+  maxAngle: number;
+  /** 180 bins of 1 degree over all three angles of every triangle. */
+  angleHistogram: Float64Array;
+  inputVertices: number;
+  segmentVertices: number;
+  interiorVertices: number;
+  offCenterVertices: number;
+  intersectionVertices: number;
+  rejectedCircumcenters: number;
+  lfsIntegral: number;
+  trianglesPerLfsIntegral: number;
+  milliseconds: number;
+}
+
+/** The trace, one entry per insertion, as a structure of arrays. */
+export interface Events {
+  count: number;
+  /** EventKind per event. */
+  kind: Uint8Array;
+  /** Id of the vertex inserted. */
+  vertex: Uint32Array;
+  /** Where: x, y per event. */
+  xy: Float64Array;
+  /** Subsegment endpoints (SEGMENT_SPLIT, REJECTED). */
+  a: Uint32Array;
+  b: Uint32Array;
+  /** Encroaching vertex (SEGMENT_SPLIT), -1 if none. */
+  by: Int32Array;
+  /** The skinny triangle's three vertices per event (CIRCUMCENTER, OFF_CENTER, REJECTED). */
+  triangle: Uint32Array;
+  /** Rejected circumcenter: x, y per event (REJECTED). */
+  circumcenter: Float64Array;
+}
+
+export interface Mesh {
+  /** Input points first, same indices; then new vertices. x0, y0, x1, y1, ... */
+  points: Float64Array;
+  /** Three vertex indices per triangle, counter-clockwise. */
+  triangles: Uint32Array;
+  /** Three per triangle: neighbors[3t+i] is across the edge opposite triangles[3t+i]; -1 on the boundary. */
+  neighbors: Int32Array;
+  /** Two vertex indices per subsegment. */
+  segments: Uint32Array;
+  /** Input segment index per subsegment, or -1 for an added convex-hull edge. */
+  segmentIds: Int32Array;
+  /** VertexKind per point. */
+  vertexKinds: Uint8Array;
+  /** Region attribute per triangle. */
+  triangleAttributes: Float64Array;
+  /** Per point if the input had markers, else empty. */
+  pointMarkers: Int32Array;
+  indexBase: 0 | 1;
+  /** Every bound met, except the exemptions of small input angles (chapter 6.6). */
+  complete: boolean;
+  /** What is unmet and why; SMALL_INPUT_ANGLE / SEDITIOUS_EDGE entries are exemptions and may appear when complete. */
+  reasons: Reason[];
+  notices: Notice[];
+  stats: Stats;
+  /** Only with options.trace. */
+  events?: Events;
+}
+
+export type ErrorCode =
+  | 'EMPTY_INPUT' | 'NON_FINITE_COORDINATE' | 'COORDINATE_RANGE' | 'INDEX_OUT_OF_RANGE'
+  | 'DEGENERATE_INPUT' | 'HOLE_ON_SEGMENT' | 'INVALID_REGION' | 'INVALID_OPTION' | 'PARSE_ERROR'
+  | 'IO_ERROR' | 'TOO_LARGE' | 'CANCELLED' | 'MALFORMED_INPUT' | 'INTERNAL';
+
+export declare const ERROR_CODES: readonly ErrorCode[];
+
+export declare class MeshError extends Error {
+  constructor(code: ErrorCode, message: string, options?: { cause?: unknown });
+  readonly name: 'MeshError';
+  /** Stable, for branching; the message names the offending item. */
+  readonly code: ErrorCode;
+}
+
+export declare const VertexKind: Readonly<{
+  INPUT: 0; SEGMENT_SPLIT: 1; INTERIOR: 2; OFF_CENTER: 3; INTERSECTION: 4; UNUSED: 5;
+}>;
+export declare const EventKind: Readonly<{ SEGMENT_SPLIT: 0; CIRCUMCENTER: 1; OFF_CENTER: 2; REJECTED: 3 }>;
+export declare const NO_NEIGHBOR: -1;
+export declare const NO_INPUT_SEGMENT: -1;
+
+export interface InitOptions {
+  /** Where dist/ruppert.wasm is served; default: next to the package's module. */
+  wasmUrl?: string | URL;
+  locateFile?: (file: string) => string;
+  wasmBinary?: ArrayBuffer | ArrayBufferView;
+  wasmModule?: WebAssembly.Module;
+}
+
+export interface Mesher {
+  /** Meshes a PLC. Throws MeshError on input that cannot be repaired. */
+  triangulate(plc: Plc, options?: TriangulateOptions): Mesh;
+  parsePoly(text: string, name?: string): ParsedPlc;
+  parseNode(text: string, name?: string): ParsedPlc;
+  parseJson(text: string, name?: string): ParsedPlc;
+  toNode(mesh: Mesh): string;
+  toEle(mesh: Mesh): string;
+  toPoly(mesh: Mesh, input?: Plc): string;
+  toJson(mesh: Mesh, input?: Plc): string;
+  toSVG(mesh: Mesh): string;
+  /** Resolves once a wasm instance is available (pending only right after an abort). */
+  readonly ready: Promise<void>;
+  memoryUsage(): { heapBytes: number; allocatedBytes: number };
+}
+
+/** Loads the WebAssembly module (once, when called without options). */
+export declare function init(options?: InitOptions): Promise<Mesher>;
+
+/** The helpers below use the most recently initialised mesher: `await init()` first. */
+export declare function parsePoly(text: string, name?: string): ParsedPlc;
+export declare function parseNode(text: string, name?: string): ParsedPlc;
+export declare function parseJson(text: string, name?: string): ParsedPlc;
+export declare function toPoly(mesh: Mesh, input?: Plc): string;
+export declare function toNode(mesh: Mesh): string;
+export declare function toEle(mesh: Mesh): string;
+export declare function toJson(mesh: Mesh, input?: Plc): string;
+export declare function toSVG(mesh: Mesh): string;
+
+export type WorkerOptions = Omit<TriangulateOptions, 'sizeFunction' | 'onProgress'>;
+
+export interface MeshWorkerControl {
+  /** Aborting terminates the worker at once; the promise rejects with MeshError 'CANCELLED'. */
+  signal?: AbortSignal;
+  onProgress?: (progress: Progress) => void;
+}
+
+export interface MeshWorker {
+  triangulate(plc: Plc, options?: WorkerOptions, control?: MeshWorkerControl): Promise<Mesh>;
+  /** Ends the worker; pending requests reject with 'CANCELLED'. */
+  terminate(): Promise<void>;
+}
+
+/** A mesher in a Web Worker (browsers) or a worker_threads worker (Node). */
+export declare function createMeshWorker(options?: InitOptions): MeshWorker;

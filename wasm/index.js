@@ -1,0 +1,77 @@
+// ruppert: 2D quality triangle meshing (Ruppert's Delaunay refinement) compiled to WebAssembly.
+//
+//   import { init } from 'ruppert';
+//   const mesher = await init();
+//   const mesh = mesher.triangulate({ points, segments }, { minAngle: 30, maxArea: 0.01 });
+//
+// Results are plain objects of typed arrays owned by JavaScript: nothing to free, nothing that
+// goes stale when the wasm heap grows. See index.d.ts for every field.
+import { MeshError, ERROR_CODES } from './errors.js';
+import { compileWasm, instantiate } from './loader.js';
+import { createMesher } from './mesher.js';
+
+export { MeshError, ERROR_CODES };
+export { createMeshWorker } from './worker-client.js';
+
+/** VertexKind values in mesh.vertexKinds (ruppert::VertexKind). */
+export const VertexKind = Object.freeze({
+  INPUT: 0, SEGMENT_SPLIT: 1, INTERIOR: 2, OFF_CENTER: 3, INTERSECTION: 4, UNUSED: 5,
+});
+/** EventKind values in mesh.events.kind (ruppert::EventKind). */
+export const EventKind = Object.freeze({ SEGMENT_SPLIT: 0, CIRCUMCENTER: 1, OFF_CENTER: 2, REJECTED: 3 });
+/** mesh.neighbors entry for an edge on the domain boundary. */
+export const NO_NEIGHBOR = -1;
+/** mesh.segmentIds entry for a convex-hull edge that no input segment covers. */
+export const NO_INPUT_SEGMENT = -1;
+
+let defaultMesher = null;  // Promise of the mesher for init() without options: loaded once
+let lastMesher = null;     // the most recent mesher, used by the top-level helpers below
+
+async function build(options) {
+  const compiled = await compileWasm(options);
+  const mesher = createMesher(compiled, await instantiate(compiled));
+  lastMesher = mesher;
+  return mesher;
+}
+
+/**
+ * Loads the WebAssembly module. Without options the module is loaded once and every call
+ * resolves to the same mesher.
+ * @param {{ wasmUrl?: string | URL, locateFile?: (file: string) => string,
+ *           wasmBinary?: ArrayBuffer | ArrayBufferView, wasmModule?: WebAssembly.Module }} [options]
+ */
+export function init(options) {
+  if (options !== undefined && (options === null || typeof options !== 'object')) {
+    return Promise.reject(new MeshError('MALFORMED_INPUT', 'init(options): options must be an object'));
+  }
+  if (options === undefined || Object.keys(options).length === 0) {
+    if (defaultMesher === null) {
+      defaultMesher = build({});
+      defaultMesher.catch(() => { defaultMesher = null; });  // a failed load may be retried
+    }
+    return defaultMesher;
+  }
+  return build(options);
+}
+
+function loaded(name) {
+  if (lastMesher === null) throw new Error(`ruppert: call \`await init()\` before ${name}()`);
+  return lastMesher;
+}
+
+/** Reads Triangle's .poly text into a PLC (needs a prior `await init()`). */
+export const parsePoly = (text, name) => loaded('parsePoly').parsePoly(text, name);
+/** Reads Triangle's .node text into a PLC without segments. */
+export const parseNode = (text, name) => loaded('parseNode').parseNode(text, name);
+/** Reads the JSON input format into a PLC. */
+export const parseJson = (text, name) => loaded('parseJson').parseJson(text, name);
+/** Triangle's .poly text of a mesh's subsegments, with the input's holes and regions. */
+export const toPoly = (mesh, input) => loaded('toPoly').toPoly(mesh, input);
+/** Triangle's .node text of a mesh's vertices. */
+export const toNode = (mesh) => loaded('toNode').toNode(mesh);
+/** Triangle's .ele text of a mesh's triangles. */
+export const toEle = (mesh) => loaded('toEle').toEle(mesh);
+/** JSON text of a mesh (the input format plus triangles etc.). */
+export const toJson = (mesh, input) => loaded('toJson').toJson(mesh, input);
+/** SVG text drawing a mesh. */
+export const toSVG = (mesh) => loaded('toSVG').toSVG(mesh);

@@ -1,0 +1,153 @@
+// The object init() resolves to: triangulate(), the readers and writers, over one wasm instance.
+//
+// Every binding returns a plain object; a failure is { errorCode, errorMessage, reset? } and
+// becomes a MeshError here. Anything else that escapes a binding (an abort, a trap, a stack
+// overflow) leaves the instance in an unknown state, so it is dropped and the next call runs on a
+// fresh instance of the same compiled module.
+import { MeshError } from './errors.js';
+import { instantiate, instantiateSync } from './loader.js';
+import { normalizeMesh, normalizeOptions, normalizePlc } from './validate.js';
+
+function describeReturn(value) {
+  if (typeof value === 'string') return JSON.stringify(value);
+  if (value === null || typeof value !== 'object') return String(value);
+  return Array.isArray(value) ? 'an array' : 'an object';
+}
+
+function requireText(text, what) {
+  if (typeof text !== 'string') {
+    throw new MeshError('MALFORMED_INPUT', `${what} expects the file's text as a string, got ${describeReturn(text)}`);
+  }
+}
+
+/**
+ * @param {WebAssembly.Module} compiled
+ * @param {object} firstModule an instantiated Emscripten module (see loader.js)
+ */
+export function createMesher(compiled, firstModule) {
+  let module = firstModule;
+  let replacement = null;
+
+  // Forget the current instance and start preparing the next one in the background, so that a
+  // browser main thread (where synchronous instantiation may be refused) has it ready in time.
+  function discard() {
+    module = null;
+    const pending = instantiate(compiled).then((fresh) => {
+      if (module === null) module = fresh;
+      if (replacement === pending) replacement = null;
+    });
+    pending.catch(() => { if (replacement === pending) replacement = null; });
+    replacement = pending;
+  }
+
+  function current() {
+    if (module !== null) return module;
+    try {
+      module = instantiateSync(compiled);
+      return module;
+    } catch (cause) {
+      throw new MeshError('INTERNAL',
+        'the WebAssembly module is being re-instantiated after an abort; await mesher.ready and retry', { cause });
+    }
+  }
+
+  function call(name, ...args) {
+    const m = current();
+    let result;
+    try {
+      result = m[name](...args);
+    } catch (cause) {
+      discard();
+      const detail = cause instanceof Error ? cause.message : String(cause);
+      throw new MeshError('INTERNAL',
+        `the WebAssembly module aborted in ${name}() (${detail}); the next call runs on a fresh instance`, { cause });
+    }
+    if (result && result.reset) discard();
+    return result;
+  }
+
+  function check(result) {
+    if (result.errorCode) throw new MeshError(result.errorCode, result.errorMessage);
+    return result;
+  }
+
+  function triangulate(plc, options, report = null) {
+    const input = normalizePlc(plc);
+    const opts = normalizeOptions(options);
+    // The wrappers never throw into wasm (that would skip the core's destructors): they keep the
+    // first error and tell the binding to unwind (NaN / -1), and we rethrow it below.
+    let callbackError = null;
+    const native = { ...opts, sizeFunction: undefined, onProgress: undefined };
+    if (opts.sizeFunction) {
+      const user = opts.sizeFunction;
+      native.sizeFunction = (x, y) => {
+        try {
+          const area = user(x, y);
+          if (typeof area === 'number' && !Number.isNaN(area)) return area;
+          callbackError = new MeshError('INVALID_OPTION',
+            `sizeFunction(${x}, ${y}) returned ${describeReturn(area)}: return a number (<= 0 or Infinity: no bound)`);
+        } catch (error) {
+          callbackError = error;
+        }
+        return NaN;
+      };
+    }
+    if (opts.onProgress) {
+      const user = opts.onProgress;
+      native.onProgress = (insertedVertices, triangles, worstAngle) => {
+        try {
+          return user({ insertedVertices, triangles, worstAngle }) === false ? 0 : 1;
+        } catch (error) {
+          callbackError = error;
+          return -1;
+        }
+      };
+    }
+    const result = call('triangulate', input, native, report);
+    if (result.errorCode === 'CALLBACK_FAILED') {
+      throw callbackError ?? new MeshError('INTERNAL', 'a callback failed without an error');
+    }
+    return check(result);
+  }
+
+  function read(text, format, name, what) {
+    requireText(text, what);
+    if (typeof name !== 'string') throw new MeshError('MALFORMED_INPUT', `${what}: name must be a string`);
+    return check(call('readPlc', text, format, name)).plc;
+  }
+
+  function write(mesh, input, format) {
+    const normalized = normalizeMesh(mesh);
+    const plc = input == null ? null : normalizePlc(input);
+    return check(call('writeMesh', normalized, plc, format)).text;
+  }
+
+  return {
+    triangulate: (plc, options) => triangulate(plc, options),
+    /** For wasm/cli.js: also returns mesh.report = { summary?, stats?, trace? } (the native CLI's texts). */
+    _triangulateWithReport: (plc, options, report) => triangulate(plc, options, report),
+    /** For wasm/cli.js: the native CLI's argument parser. */
+    _parseCliArgs: (args) => check(call('parseCliArgs', args)),
+    parsePoly: (text, name = '<poly>') => read(text, 'poly', name, 'parsePoly'),
+    parseNode: (text, name = '<node>') => read(text, 'node', name, 'parseNode'),
+    parseJson: (text, name = '<json>') => read(text, 'json', name, 'parseJson'),
+    toNode: (mesh) => write(mesh, null, 'node'),
+    toEle: (mesh) => write(mesh, null, 'ele'),
+    toPoly: (mesh, input) => write(mesh, input, 'poly'),
+    toJson: (mesh, input) => write(mesh, input, 'json'),
+    toSVG: (mesh) => write(mesh, null, 'svg'),
+    /** Resolves once an instance is available (only ever pending right after an abort). */
+    get ready() {
+      return module !== null || replacement === null ? Promise.resolve() : replacement;
+    },
+    /** Size of the wasm heap and bytes currently allocated in it. */
+    memoryUsage() {
+      const m = current();
+      return { heapBytes: m.HEAPU8.length, allocatedBytes: m.allocatedBytes() };
+    },
+    /** Test hook: aborts the current instance (as an out-of-memory abort would). */
+    _abortForTesting() {
+      return call('abortForTesting');
+    },
+  };
+}

@@ -1,0 +1,261 @@
+// Checks and normalises what users pass to triangulate() before anything crosses into wasm.
+//
+// Why here and not only in C++: embind would silently coerce a string or a sparse array into
+// numbers (NaN, 0), and a fractional index would be truncated into a different, valid-looking
+// vertex. Every message names the item and its value, e.g. "segments[7] = 2.5 is not an integer".
+// Value checks that need geometry (non-finite coordinates, duplicate points, hole placement) stay
+// in the core, which reports them with the same codes.
+import { MeshError } from './errors.js';
+
+const MAX_UINT32 = 0xffffffff;
+
+function describe(value) {
+  if (value === undefined) return 'undefined';
+  if (value === null) return 'null';
+  if (typeof value === 'string') return JSON.stringify(value.length > 40 ? value.slice(0, 40) + '...' : value);
+  if (typeof value === 'bigint') return `${value}n`;
+  if (Array.isArray(value)) return 'an array';
+  if (typeof value === 'function') return 'a function';
+  if (typeof value === 'object') return 'an object';
+  return String(value);
+}
+
+function invalid(message) {
+  return new MeshError('MALFORMED_INPUT', message);
+}
+
+function isNumericTypedArray(value) {
+  return ArrayBuffer.isView(value) && !(value instanceof DataView) &&
+    !(value instanceof BigInt64Array) && !(value instanceof BigUint64Array);
+}
+
+// Any array-like of numbers -> Float64Array (a copy only when the input is not one already).
+function toFloat64(value, name, { pairs }) {
+  let out;
+  if (value instanceof Float64Array) {
+    out = value;
+  } else if (isNumericTypedArray(value)) {
+    out = Float64Array.from(value);
+  } else if (Array.isArray(value)) {
+    out = new Float64Array(value.length);
+    for (let i = 0; i < value.length; i++) {
+      const v = value[i];
+      if (typeof v !== 'number') {
+        if (v === undefined && !(i in value)) throw invalid(`${name}[${i}] is missing (sparse array)`);
+        if (Array.isArray(v) && pairs) {
+          throw invalid(`${name}[${i}] is an array: ${name} must be flat [x0, y0, x1, y1, ...]`);
+        }
+        throw invalid(`${name}[${i}] = ${describe(v)} is not a number`);
+      }
+      out[i] = v;
+    }
+  } else {
+    throw invalid(`${name} must be an array or a typed array of numbers, got ${describe(value)}`);
+  }
+  if (pairs && out.length % 2 !== 0) {
+    throw invalid(`${name} has odd length ${out.length}: coordinates come in x, y pairs`);
+  }
+  return out;
+}
+
+// Array-like of indices -> Uint32Array, each an integer in [0, limit).
+function toIndices(value, name, limit, what) {
+  const outOfRange = (i, v) => new MeshError('INDEX_OUT_OF_RANGE',
+    v < 0 ? `${name}[${i}] = ${v} is negative`
+      : `${name}[${i}] = ${v} refers to ${what} ${v}, but there are only ${limit}`);
+  if (value instanceof Uint32Array) {
+    for (let i = 0; i < value.length; i++) if (value[i] >= limit) throw outOfRange(i, value[i]);
+    return value;
+  }
+  const isTyped = isNumericTypedArray(value);
+  if (!isTyped && !Array.isArray(value)) {
+    throw invalid(`${name} must be an array or a typed array of integer indices, got ${describe(value)}`);
+  }
+  const out = new Uint32Array(value.length);
+  for (let i = 0; i < value.length; i++) {
+    const v = value[i];
+    if (typeof v !== 'number') {
+      if (v === undefined && !(i in value)) throw invalid(`${name}[${i}] is missing (sparse array)`);
+      throw invalid(`${name}[${i}] = ${describe(v)} is not a number`);
+    }
+    if (!Number.isInteger(v)) throw invalid(`${name}[${i}] = ${v} is not an integer`);
+    if (v < 0 || v >= limit || v > MAX_UINT32) throw outOfRange(i, v);
+    out[i] = v;
+  }
+  return out;
+}
+
+function toMarkers(value, name) {
+  if (value === undefined || value === null) return new Int32Array(0);
+  if (value instanceof Int32Array) return value;
+  if (!isNumericTypedArray(value) && !Array.isArray(value)) {
+    throw invalid(`${name} must be an array or a typed array of integers, got ${describe(value)}`);
+  }
+  const out = new Int32Array(value.length);
+  for (let i = 0; i < value.length; i++) {
+    const v = value[i];
+    if (!Number.isInteger(v) || v < -0x80000000 || v > 0x7fffffff) {
+      throw invalid(`${name}[${i}] = ${describe(v)} is not a 32-bit integer`);
+    }
+    out[i] = v;
+  }
+  return out;
+}
+
+function regionNumber(region, i, key, fallback) {
+  const v = region[key];
+  if (v === undefined && fallback !== undefined) return fallback;
+  if (typeof v !== 'number') throw invalid(`regions[${i}].${key} = ${describe(v)} is not a number`);
+  return v;
+}
+
+/**
+ * @param {unknown} plc { points, segments?, holes?, regions?, pointMarkers?, segmentMarkers?, indexBase? }
+ * @returns the same data as exact typed arrays; regions flattened to x, y, attribute, maxArea.
+ */
+export function normalizePlc(plc) {
+  if (plc === null || typeof plc !== 'object' || Array.isArray(plc) || ArrayBuffer.isView(plc)) {
+    throw invalid(`the input must be an object { points, segments, holes, regions }, got ${describe(plc)}`);
+  }
+  if (plc.points === undefined) throw invalid('the input has no "points" array');
+  const points = toFloat64(plc.points, 'points', { pairs: true });
+  const pointCount = points.length / 2;
+  const segments = plc.segments == null ? new Uint32Array(0)
+    : toIndices(plc.segments, 'segments', pointCount, 'point');
+  if (segments.length % 2 !== 0) {
+    throw invalid(`segments has odd length ${segments.length}: a segment is a pair of point indices`);
+  }
+  const holes = plc.holes == null ? new Float64Array(0) : toFloat64(plc.holes, 'holes', { pairs: true });
+
+  let regions = new Float64Array(0);
+  if (plc.regions != null) {
+    if (!Array.isArray(plc.regions)) {
+      throw invalid(`regions must be an array of { x, y, attribute, maxArea }, got ${describe(plc.regions)}`);
+    }
+    regions = new Float64Array(4 * plc.regions.length);
+    for (let i = 0; i < plc.regions.length; i++) {
+      const r = plc.regions[i];
+      if (r === null || typeof r !== 'object') {
+        if (r === undefined && !(i in plc.regions)) throw invalid(`regions[${i}] is missing (sparse array)`);
+        throw invalid(`regions[${i}] = ${describe(r)} is not an object { x, y, attribute, maxArea }`);
+      }
+      regions[4 * i] = regionNumber(r, i, 'x');
+      regions[4 * i + 1] = regionNumber(r, i, 'y');
+      regions[4 * i + 2] = regionNumber(r, i, 'attribute', 0);
+      regions[4 * i + 3] = regionNumber(r, i, 'maxArea', 0);
+    }
+  }
+
+  const pointMarkers = toMarkers(plc.pointMarkers, 'pointMarkers');
+  if (pointMarkers.length !== 0 && pointMarkers.length !== pointCount) {
+    throw invalid(`pointMarkers has ${pointMarkers.length} entries for ${pointCount} points`);
+  }
+  const segmentMarkers = toMarkers(plc.segmentMarkers, 'segmentMarkers');
+  if (segmentMarkers.length !== 0 && segmentMarkers.length !== segments.length / 2) {
+    throw invalid(`segmentMarkers has ${segmentMarkers.length} entries for ${segments.length / 2} segments`);
+  }
+  const indexBase = plc.indexBase ?? 0;
+  if (indexBase !== 0 && indexBase !== 1) throw invalid(`indexBase = ${describe(indexBase)} must be 0 or 1`);
+  return { points, segments, holes, regions, pointMarkers, segmentMarkers, indexBase };
+}
+
+const PLACEMENTS = { circumcenter: 0, offcenter: 1 };
+const VARIANTS = { cdt: 0, box: 1 };
+const OPTION_KEYS = ['minAngle', 'maxArea', 'maxSteiner', 'sizeFunction', 'onProgress', 'trace',
+  'placement', 'variant', 'convexHull', 'autoHoles'];
+
+function badOption(message) {
+  return new MeshError('INVALID_OPTION', message);
+}
+
+function booleanOption(options, key) {
+  const v = options[key];
+  if (v === undefined) return false;
+  if (typeof v !== 'boolean') throw badOption(`${key} = ${describe(v)} must be true or false`);
+  return v;
+}
+
+function enumOption(options, key, table, fallback) {
+  const v = options[key];
+  if (v === undefined) return table[fallback];
+  if (typeof v !== 'string' || !Object.hasOwn(table, v)) {
+    throw badOption(`${key} = ${describe(v)} must be one of ${Object.keys(table).map((k) => `'${k}'`).join(', ')}`);
+  }
+  return table[v];
+}
+
+function functionOption(options, key) {
+  const v = options[key];
+  if (v === undefined || v === null) return undefined;
+  if (typeof v !== 'function') throw badOption(`${key} = ${describe(v)} must be a function`);
+  return v;
+}
+
+/**
+ * @returns { minAngle, maxArea, maxSteiner (-1: automatic), placement, variant, convexHull,
+ *            autoHoles, trace, sizeFunction?, onProgress? } with enums as the core's integers.
+ */
+export function normalizeOptions(options) {
+  if (options === undefined || options === null) options = {};
+  if (typeof options !== 'object' || Array.isArray(options)) {
+    throw invalid(`options must be an object, got ${describe(options)}`);
+  }
+  for (const key of Object.keys(options)) {
+    if (!OPTION_KEYS.includes(key)) {
+      const near = OPTION_KEYS.find((k) => k.toLowerCase() === key.toLowerCase().replace(/[-_]/g, ''));
+      throw badOption(`unknown option '${key}'${near ? ` (did you mean '${near}'?)` : ''}`);
+    }
+  }
+
+  const minAngle = options.minAngle ?? 30;
+  if (typeof minAngle !== 'number' || !(minAngle >= 0 && minAngle <= 60)) {
+    throw badOption(`minAngle = ${describe(minAngle)} is outside [0, 60] degrees`);
+  }
+  let maxArea = options.maxArea ?? 0;
+  if (typeof maxArea !== 'number' || Number.isNaN(maxArea) || maxArea < 0) {
+    throw badOption(`maxArea = ${describe(maxArea)} must be a number >= 0 (0: no bound)`);
+  }
+  if (maxArea === Infinity) maxArea = 0;
+  let maxSteiner = options.maxSteiner ?? Infinity;
+  if (typeof maxSteiner !== 'number' || !(maxSteiner >= 0) ||
+      (maxSteiner !== Infinity && (!Number.isInteger(maxSteiner) || maxSteiner > Number.MAX_SAFE_INTEGER))) {
+    throw badOption(`maxSteiner = ${describe(maxSteiner)} must be a non-negative integer or Infinity`);
+  }
+  if (maxSteiner === Infinity) maxSteiner = -1;
+
+  return {
+    minAngle,
+    maxArea,
+    maxSteiner,
+    placement: enumOption(options, 'placement', PLACEMENTS, 'offcenter'),
+    variant: enumOption(options, 'variant', VARIANTS, 'cdt'),
+    convexHull: booleanOption(options, 'convexHull'),
+    autoHoles: booleanOption(options, 'autoHoles'),
+    trace: booleanOption(options, 'trace'),
+    sizeFunction: functionOption(options, 'sizeFunction'),
+    onProgress: functionOption(options, 'onProgress'),
+  };
+}
+
+/** Light check of a mesh handed back to the writers (toPoly, toSVG, ...). */
+export function normalizeMesh(mesh) {
+  if (mesh === null || typeof mesh !== 'object') {
+    throw invalid(`expected a mesh returned by triangulate(), got ${describe(mesh)}`);
+  }
+  const points = toFloat64(mesh.points ?? [], 'mesh.points', { pairs: true });
+  const n = points.length / 2;
+  const triangles = toIndices(mesh.triangles ?? [], 'mesh.triangles', n, 'point');
+  if (triangles.length % 3 !== 0) throw invalid(`mesh.triangles has length ${triangles.length}, not a multiple of 3`);
+  const segments = toIndices(mesh.segments ?? [], 'mesh.segments', n, 'point');
+  if (segments.length % 2 !== 0) throw invalid(`mesh.segments has odd length ${segments.length}`);
+  const neighbors = toMarkers(mesh.neighbors, 'mesh.neighbors');
+  const segmentIds = toMarkers(mesh.segmentIds, 'mesh.segmentIds');
+  const pointMarkers = toMarkers(mesh.pointMarkers, 'mesh.pointMarkers');
+  const vertexKinds = mesh.vertexKinds == null ? new Uint8Array(0) : Uint8Array.from(mesh.vertexKinds);
+  const triangleAttributes = mesh.triangleAttributes == null ? new Float64Array(0)
+    : toFloat64(mesh.triangleAttributes, 'mesh.triangleAttributes', { pairs: false });
+  const indexBase = mesh.indexBase ?? 0;
+  if (indexBase !== 0 && indexBase !== 1) throw invalid(`mesh.indexBase = ${describe(indexBase)} must be 0 or 1`);
+  return { points, triangles, neighbors, segments, segmentIds, vertexKinds, triangleAttributes,
+    pointMarkers, indexBase };
+}
