@@ -50,11 +50,18 @@ std::string slurp(const fs::path& path) {
   return s.str();
 }
 
-// A scratch directory per test binary run.
+// A scratch directory per test process, removed when the process exits.
 fs::path scratch() {
-  const fs::path dir = fs::temp_directory_path() / ("ruppert-cli-test-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
+  struct Scratch {
+    fs::path dir = fs::temp_directory_path() / ("ruppert-cli-test-" + std::to_string(::getpid()));
+    ~Scratch() {
+      std::error_code ec;
+      fs::remove_all(dir, ec);
+    }
+  };
+  static const Scratch scratch;
+  fs::create_directories(scratch.dir);
+  return scratch.dir;
 }
 
 // Runs the CLI with `args` (already shell-quoted where needed).
