@@ -30,8 +30,10 @@ struct MeshState {
     onSegment.push_back(segment);
     return tri.addVertex(x, y);
   }
-  // Input coordinates of an internal point, for messages.
-  double userX(double x) const { return x / input.scale; }
+  // Index of internal vertex v in the output, where the four box corners are left out.
+  std::uint32_t outputIndex(std::uint32_t v) const {
+    return v < inputCount || boxFirst == kNone ? v : v - 4;
+  }
 };
 
 // Stages, in order.

@@ -24,6 +24,7 @@
 #include <string>
 
 #include "predicates.h"
+#include "triangle_shape.h"
 
 namespace ruppert::detail {
 
@@ -45,33 +46,6 @@ struct BadTriangle {
 };
 
 double dist(const double* p, const double* q) { return std::hypot(p[0] - q[0], p[1] - q[1]); }
-
-// Smallest angle in radians at each corner, and which corner has it.
-struct Shape {
-  double minAngle;     // radians
-  int minCorner;       // index 0..2 of the vertex with the smallest angle
-  int shortestEdge;    // index of the edge (opposite vertex) that is shortest
-  double shortest;     // its length
-  double area;
-};
-
-Shape shapeOf(const double* p0, const double* p1, const double* p2) {
-  const double* p[3] = {p0, p1, p2};
-  Shape s{10, 0, 0, HUGE_VAL, 0};
-  for (int i = 0; i < 3; ++i) {
-    const double* o = p[i];
-    const double* u = p[(i + 1) % 3];
-    const double* w = p[(i + 2) % 3];
-    const double ux = u[0] - o[0], uy = u[1] - o[1], wx = w[0] - o[0], wy = w[1] - o[1];
-    const double cross = ux * wy - uy * wx;
-    const double ang = std::atan2(std::fabs(cross), ux * wx + uy * wy);
-    if (ang < s.minAngle) s.minAngle = ang, s.minCorner = i;
-    const double len = std::hypot(u[0] - w[0], u[1] - w[1]);
-    if (len < s.shortest) s.shortest = len, s.shortestEdge = i;
-    s.area = 0.5 * std::fabs(cross);
-  }
-  return s;
-}
 
 class Refiner {
  public:
@@ -170,7 +144,7 @@ class Refiner {
     double estimate = 1e6 + 1000.0 * m_.inputCount;
     for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
       if (!t_.alive(s) || m_.maxArea[s] <= 0) continue;
-      const Shape sh = shapeOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
+      const TriangleShape sh = shapeOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
       estimate += 8 * sh.area / m_.maxArea[s];
     }
     if (o_.sizeFunction) estimate += 1e8;
@@ -211,7 +185,7 @@ class Refiner {
     return t_.findEdge(e.a, e.b);
   }
 
-  double maxAreaAt(std::uint32_t s, const Shape& sh) const {
+  double maxAreaAt(std::uint32_t s, const TriangleShape& sh) const {
     double bound = m_.maxArea[s];
     if (o_.sizeFunction) {
       const double* p0 = t_.pt(t_.tv[3 * s]);
@@ -226,10 +200,10 @@ class Refiner {
     return bound;
   }
 
-  bool isSkinny(const Shape& sh) const { return theta_ > 0 && sh.minAngle < theta_ * (1 - 1e-12); }
+  bool isSkinny(const TriangleShape& sh) const { return theta_ > 0 && sh.minAngle < theta_ * (1 - 1e-12); }
 
   void checkTriangle(std::uint32_t s) {
-    const Shape sh = shapeOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
+    const TriangleShape sh = shapeOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
     const double bound = maxAreaAt(s, sh);
     const bool large = bound > 0 && sh.area > bound;
     if (!isSkinny(sh) && !large) return;
@@ -273,14 +247,14 @@ class Refiner {
 
   // ---- exemptions (§6.6) -------------------------------------------------------------------------
   // The triangle's smallest angle is an input angle: both edges at that corner are subsegments.
-  bool nestledInInputAngle(std::uint32_t s, const Shape& sh) const {
+  bool nestledInInputAngle(std::uint32_t s, const TriangleShape& sh) const {
     const std::uint32_t i = static_cast<std::uint32_t>(sh.minCorner);
     return t_.con[3 * s + (i + 1) % 3] != kFree && t_.con[3 * s + (i + 2) % 3] != kFree;
   }
 
   // Shortest edge u-w is seditious: u and w split two different segments that meet at a vertex z at
   // less than 60 degrees, at the same distance from z (the same concentric shell).
-  bool seditious(std::uint32_t s, const Shape& sh) const {
+  bool seditious(std::uint32_t s, const TriangleShape& sh) const {
     const std::uint32_t h = 3 * s + static_cast<std::uint32_t>(sh.shortestEdge);
     const std::uint32_t u = t_.origin(h), w = t_.dest(h);
     if (m_.kind[u] != VertexKind::SegmentSplit || m_.kind[w] != VertexKind::SegmentSplit) return false;
@@ -400,16 +374,7 @@ class Refiner {
       }
       if (exit == kNone) exit = fallback;
       if (exit == kNone) {
-        Location loc;
-        loc.tri = t;
-        int zeros = 0;
-        std::uint32_t zi = 0, zj = 0;
-        for (std::uint32_t i = 0; i < 3; ++i)
-          if (ori[i] == 0) (zeros++ == 0 ? zi : zj) = i;
-        if (zeros == 0) loc.kind = Location::InTriangle;
-        else if (zeros == 1) loc.kind = Location::OnEdge, loc.edge = 3 * t + zi;
-        else loc.kind = Location::OnVertex, loc.vertex = t_.tv[3 * t + (3 - zi - zj)];
-        return loc;
+        return t_.locationInside(t, ori);
       }
       if (t_.con[exit] != kFree || t_.twin[exit] == kNone) {
         blocked = exit;
@@ -423,7 +388,7 @@ class Refiner {
   void splitTriangle(const BadTriangle& bt) {
     const std::uint32_t s = bt.slot;
     const double* p[3] = {t_.pt(bt.a), t_.pt(bt.b), t_.pt(bt.c)};
-    const Shape sh = shapeOf(p[0], p[1], p[2]);
+    const TriangleShape sh = shapeOf(p[0], p[1], p[2]);
     const bool skinny = isSkinny(sh);
     if (skinny && (nestledInInputAngle(s, sh) || seditious(s, sh))) {
       const double bound = maxAreaAt(s, sh);
@@ -531,7 +496,7 @@ class Refiner {
     std::uint64_t nestled = 0, sedition = 0, otherSkinny = 0, large = 0;
     for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
       if (!t_.alive(s)) continue;
-      const Shape sh = shapeOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
+      const TriangleShape sh = shapeOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
       const double bound = maxAreaAt(s, sh);
       if (bound > 0 && sh.area > bound * (1 + 1e-9)) ++large;
       if (!isSkinny(sh)) continue;

@@ -6,30 +6,19 @@
 
 #include "mesh_state.h"
 #include "refine.h"
+#include "triangle_shape.h"
 
 namespace ruppert {
 
 namespace detail {
 namespace {
 
-// The three angles of triangle (a, b, c) in degrees.
-void triangleAngles(const double* a, const double* b, const double* c, double out[3]) {
-  const double* p[3] = {a, b, c};
-  for (int i = 0; i < 3; ++i) {
-    const double* o = p[i];
-    const double* u = p[(i + 1) % 3];
-    const double* w = p[(i + 2) % 3];
-    const double ux = u[0] - o[0], uy = u[1] - o[1], wx = w[0] - o[0], wy = w[1] - o[1];
-    out[i] = std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) * (180.0 / M_PI);
-  }
-}
-
 Mesh assemble(MeshState& m) {
   Mesh mesh;
   const Triangulation& t = m.tri;
   const Plc& plc = *m.plc;
   const std::uint32_t corners = m.boxFirst == kNone ? 0 : 4;
-  auto outIndex = [&](std::uint32_t v) { return v < m.inputCount ? v : v - corners; };
+  auto outIndex = [&](std::uint32_t v) { return m.outputIndex(v); };
   const std::uint32_t outVertices = t.vertexCount() - corners;
 
   mesh.points.resize(2 * outVertices);
@@ -82,9 +71,9 @@ Mesh assemble(MeshState& m) {
       }
     }
     mesh.triangleAttributes[o] = m.attribute.empty() ? 0.0 : m.attribute[s];
-    double ang[3];
-    triangleAngles(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2]), ang);
-    for (double a : ang) {
+    const TriangleShape shape = shapeOf(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2]));
+    for (double radians : shape.angle) {
+      const double a = radians * (180.0 / M_PI);
       st.minAngle = std::min(st.minAngle, a);
       st.maxAngle = std::max(st.maxAngle, a);
       st.angleHistogram[std::min<std::size_t>(179, static_cast<std::size_t>(a))]++;
@@ -131,8 +120,7 @@ Mesh triangulate(const Plc& plc, const Options& options) {
     if (r.kind != ReasonKind::SmallInputAngle && r.kind != ReasonKind::SeditiousEdge) mesh.complete = false;
   mesh.reasons = std::move(outcome.reasons);
   mesh.events = std::move(outcome.events);
-  const std::uint32_t corners = m.boxFirst == kNone ? 0 : 4;
-  auto outIndex = [&](std::uint32_t v) { return v < m.inputCount ? v : v - corners; };
+  auto outIndex = [&](std::uint32_t v) { return m.outputIndex(v); };
   const double inv = 1.0 / m.input.scale;
   for (Event& e : mesh.events) {
     e.vertex = outIndex(e.vertex), e.a = outIndex(e.a), e.b = outIndex(e.b);

@@ -54,6 +54,27 @@ std::uint32_t Triangulation::nextStamp() const {
   return stamp_;
 }
 
+Location Triangulation::locationInside(std::uint32_t t, const double ori[3]) const {
+  // No orientation is negative: p is inside t, on one edge (one zero) or at a vertex (two zeros,
+  // at the corner neither of those edges is opposite).
+  Location loc;
+  loc.tri = t;
+  int zeros = 0;
+  std::uint32_t zi = 0, zj = 0;
+  for (std::uint32_t i = 0; i < 3; ++i)
+    if (ori[i] == 0) (zeros++ == 0 ? zi : zj) = i;
+  if (zeros == 0) {
+    loc.kind = Location::InTriangle;
+  } else if (zeros == 1) {
+    loc.kind = Location::OnEdge;
+    loc.edge = 3 * t + zi;
+  } else {
+    loc.kind = Location::OnVertex;
+    loc.vertex = tv[3 * t + (3 - zi - zj)];
+  }
+  return loc;
+}
+
 Location Triangulation::locate(const double* p, std::uint32_t start) const {
   Location loc;
   std::uint32_t t = start;
@@ -84,25 +105,7 @@ Location Triangulation::locate(const double* p, std::uint32_t start) const {
       }
     }
     if (moved) continue;
-    loc.tri = t;
-    int zeros = 0;
-    std::uint32_t zi = 0, zj = 0;
-    for (std::uint32_t i = 0; i < 3; ++i) {
-      if (o[i] == 0) {
-        (zeros == 0 ? zi : zj) = i;
-        ++zeros;
-      }
-    }
-    if (zeros == 0) {
-      loc.kind = Location::InTriangle;
-    } else if (zeros == 1) {
-      loc.kind = Location::OnEdge;
-      loc.edge = 3 * t + zi;
-    } else {
-      loc.kind = Location::OnVertex;
-      loc.vertex = tv[3 * t + (3 - zi - zj)];
-    }
-    return loc;
+    return locationInside(t, o);
   }
   loc.kind = Location::Lost;
   return loc;

@@ -55,6 +55,9 @@ class Triangulation {
   // Walk from triangle `start` towards p. Stochastic visibility walk; bounded number of steps.
   Location locate(const double* p, std::uint32_t start) const;
 
+  // Location of p in triangle t given ori[i] = orient2d(edge i, p), none of them negative.
+  Location locationInside(std::uint32_t t, const double ori[3]) const;
+
   // A half-edge of the edge {a, b}: a->b when that side exists, else b->a; kNone if no such edge.
   // Searches the triangles around a, then around b. At a vertex where the domain touches itself
   // the triangles around it form several fans and only vtri's fan is searched.
