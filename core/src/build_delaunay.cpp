@@ -33,7 +33,8 @@ void buildDelaunay(MeshState& m) {
   m.addVertex(-8, 8, VertexKind::Unused, -1);
   Triangulation& t = m.tri;
   const std::uint32_t c = m.boxFirst;
-  t.tv.reserve(3 * (2 * n + 8));
+  for (auto* v : {&t.tv, &t.twin}) v->reserve(3 * (2 * std::size_t(n) + 8));
+  t.con.reserve(3 * (2 * std::size_t(n) + 8));
   const std::uint32_t t0 = t.newTriangle(c, c + 1, c + 2);
   const std::uint32_t t1 = t.newTriangle(c, c + 2, c + 3);
   t.link(3 * t0 + 1, 3 * t1 + 2);  // edge c+2 -> c  and  c -> c+2
@@ -46,7 +47,7 @@ void buildDelaunay(MeshState& m) {
     Location loc = t.locate(t.pt(v), hint);
     if (loc.kind != Location::InTriangle && loc.kind != Location::OnEdge)
       throw Error(ErrorCode::Internal, "point location failed for points[" + std::to_string(v) + "]");
-    if (!t.insertVertex(v, loc))
+    if (!t.insertVertex(v, loc, nullptr, nullptr, /*checkOrientation=*/false))
       throw Error(ErrorCode::Internal, "could not insert points[" + std::to_string(v) + "]");
     hint = t.vtri[v];
   }

@@ -130,58 +130,75 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
   }
   out.maxArea = std::isinf(options.maxArea) ? 0 : options.maxArea * out.scale * out.scale;
 
-  // Merge duplicates: sort by coordinates, the lowest index of each run represents it.
-  std::vector<std::uint32_t> order(n);
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    if (out.xy[2 * a] != out.xy[2 * b]) return out.xy[2 * a] < out.xy[2 * b];
-    if (out.xy[2 * a + 1] != out.xy[2 * b + 1]) return out.xy[2 * a + 1] < out.xy[2 * b + 1];
-    return a < b;
+  // One sort along a Hilbert curve serves two purposes: identical points share a key, so duplicates
+  // are found within runs of equal keys; and the curve order keeps point-location walks short.
+  double minX = HUGE_VAL, minY = HUGE_VAL, maxX = -HUGE_VAL, maxY = -HUGE_VAL;
+  for (std::size_t i = 0; i < n; ++i) {
+    minX = std::min(minX, out.xy[2 * i]), maxX = std::max(maxX, out.xy[2 * i]);
+    minY = std::min(minY, out.xy[2 * i + 1]), maxY = std::max(maxY, out.xy[2 * i + 1]);
+  }
+  const double span = std::max(maxX - minX, maxY - minY);
+  const double toGrid = span > 0 ? 65535.0 / span : 0;
+  struct Keyed {
+    std::uint32_t key, index;
+    double x, y;
+  };
+  std::vector<Keyed> sorted(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = out.xy[2 * i], y = out.xy[2 * i + 1];
+    sorted[i] = {hilbertKey(static_cast<std::uint32_t>((x - minX) * toGrid), static_cast<std::uint32_t>((y - minY) * toGrid)),
+                 static_cast<std::uint32_t>(i), x, y};
+  }
+  // Within a key, order by coordinates then index, so identical points are adjacent, lowest index first.
+  std::sort(sorted.begin(), sorted.end(), [](const Keyed& a, const Keyed& b) {
+    if (a.key != b.key) return a.key < b.key;
+    if (a.x != b.x) return a.x < b.x;
+    if (a.y != b.y) return a.y < b.y;
+    return a.index < b.index;
   });
   out.representative.resize(n);
   std::vector<std::uint32_t> distinct;
   distinct.reserve(n);
+  std::vector<Notice> duplicates;
   for (std::size_t k = 0; k < n;) {
     std::size_t j = k + 1;
-    while (j < n && out.xy[2 * order[j]] == out.xy[2 * order[k]] &&
-           out.xy[2 * order[j] + 1] == out.xy[2 * order[k] + 1])
-      ++j;
-    const std::uint32_t rep = order[k];  // lowest index thanks to the tie-break
+    while (j < n && sorted[j].x == sorted[k].x && sorted[j].y == sorted[k].y) ++j;
+    const std::uint32_t rep = sorted[k].index;
     distinct.push_back(rep);
     for (std::size_t m = k; m < j; ++m) {
-      out.representative[order[m]] = rep;
-      if (order[m] != rep) {
-        Notice nt{NoticeKind::DuplicatePoint, order[m], rep, plc.points[2 * rep], plc.points[2 * rep + 1], ""};
-        nt.message = "points[" + std::to_string(order[m]) + "] duplicates points[" + std::to_string(rep) + "] (" +
+      const std::uint32_t dup = sorted[m].index;
+      out.representative[dup] = rep;
+      if (dup != rep) {
+        Notice nt{NoticeKind::DuplicatePoint, dup, rep, plc.points[2 * rep], plc.points[2 * rep + 1], ""};
+        nt.message = "points[" + std::to_string(dup) + "] duplicates points[" + std::to_string(rep) + "] (" +
                      formatNumber(nt.x) + ", " + formatNumber(nt.y) + "); merged";
-        notices.push_back(std::move(nt));
+        duplicates.push_back(std::move(nt));
       }
     }
     k = j;
   }
+  // Notices in input order, whatever the curve's order was.
+  std::sort(duplicates.begin(), duplicates.end(), [](const Notice& a, const Notice& b) { return a.a < b.a; });
+  for (Notice& nt : duplicates) notices.push_back(std::move(nt));
 
-  // Biased randomised insertion order (BRIO): random rounds of doubling size, each sorted along a
-  // Hilbert curve. Randomness bounds the expected work; the curve keeps walks short.
+  // Biased randomised insertion order (BRIO): each point joins round k with probability 2^-(k+1),
+  // rounds are inserted from the smallest (highest k) to the largest; a stable split keeps every round
+  // in curve order. Randomness bounds the expected work; the curve keeps walks short.
+  constexpr int kRounds = 24;
   std::mt19937_64 rng(0x5EED5EEDull ^ distinct.size());
-  std::shuffle(distinct.begin(), distinct.end(), rng);
-  double minX = HUGE_VAL, minY = HUGE_VAL, maxX = -HUGE_VAL, maxY = -HUGE_VAL;
-  for (std::uint32_t v : distinct) {
-    minX = std::min(minX, out.xy[2 * v]), maxX = std::max(maxX, out.xy[2 * v]);
-    minY = std::min(minY, out.xy[2 * v + 1]), maxY = std::max(maxY, out.xy[2 * v + 1]);
+  std::vector<std::uint8_t> round(distinct.size());
+  std::vector<std::size_t> count(kRounds + 1, 0);
+  for (std::size_t i = 0; i < distinct.size(); ++i) {
+    std::uint64_t r = rng() | (1ull << (kRounds - 1));
+    int k = 0;
+    while (!(r & 1)) r >>= 1, ++k;
+    round[i] = static_cast<std::uint8_t>(kRounds - 1 - k);  // 0 = the first, smallest round
+    ++count[round[i] + 1];
   }
-  const double span = std::max(maxX - minX, maxY - minY);
-  const double toGrid = span > 0 ? 65535.0 / span : 0;
-  std::vector<std::uint32_t> key(n);
-  for (std::uint32_t v : distinct)
-    key[v] = hilbertKey(static_cast<std::uint32_t>((out.xy[2 * v] - minX) * toGrid),
-                        static_cast<std::uint32_t>((out.xy[2 * v + 1] - minY) * toGrid));
-  std::size_t end = distinct.size();
-  while (end > 0) {
-    const std::size_t begin = end > 256 ? end / 2 : 0;
-    std::sort(distinct.begin() + begin, distinct.begin() + end,
-              [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
-    end = begin;
-  }
+  for (int k = 0; k < kRounds; ++k) count[k + 1] += count[k];
+  std::vector<std::uint32_t> order(distinct.size());
+  for (std::size_t i = 0; i < distinct.size(); ++i) order[count[round[i]]++] = distinct[i];
+  distinct = std::move(order);
   out.insertionOrder = std::move(distinct);
   return out;
 }

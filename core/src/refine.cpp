@@ -51,6 +51,7 @@ class Refiner {
  public:
   explicit Refiner(MeshState& m) : m_(m), t_(m.tri), o_(*m.options) {
     theta_ = o_.minAngle * kPi / 180.0;
+    sin2Theta_ = std::sin(theta_) * std::sin(theta_) * (1 - 1e-12);
     scale2_ = m.input.scale * m.input.scale;
     buckets_.resize(kBuckets);
   }
@@ -93,6 +94,7 @@ class Refiner {
   const Options& o_;
   RefineOutcome out_;
   double theta_ = 0;  // radians
+  double sin2Theta_ = 0;
   double scale2_ = 1;
   std::uint64_t budget_ = 0, inserted_ = 0;
   bool cancelled_ = false, budgetHit_ = false;
@@ -144,8 +146,7 @@ class Refiner {
     double estimate = 1e6 + 1000.0 * m_.inputCount;
     for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
       if (!t_.alive(s) || m_.maxArea[s] <= 0) continue;
-      const TriangleShape sh = shapeOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
-      estimate += 8 * sh.area / m_.maxArea[s];
+      estimate += 8 * qualityAt(s).area / m_.maxArea[s];
     }
     if (o_.sizeFunction) estimate += 1e8;
     budget_ = static_cast<std::uint64_t>(std::min(estimate, 4e9));
@@ -185,7 +186,11 @@ class Refiner {
     return t_.findEdge(e.a, e.b);
   }
 
-  double maxAreaAt(std::uint32_t s, const TriangleShape& sh) const {
+  TriangleQuality qualityAt(std::uint32_t s) const {
+    return qualityOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
+  }
+
+  double maxAreaAt(std::uint32_t s) const {
     double bound = m_.maxArea[s];
     if (o_.sizeFunction) {
       const double* p0 = t_.pt(t_.tv[3 * s]);
@@ -196,19 +201,21 @@ class Refiner {
       const double user = o_.sizeFunction(cx, cy);
       if (std::isfinite(user) && user > 0) bound = bound > 0 ? std::min(bound, user * scale2_) : user * scale2_;
     }
-    (void)sh;
     return bound;
   }
 
-  bool isSkinny(const TriangleShape& sh) const { return theta_ > 0 && sh.minAngle < theta_ * (1 - 1e-12); }
+  // The one skinniness test everything uses: sin^2 of the smallest angle below sin^2 of the bound.
+  bool isSkinny(const TriangleQuality& q) const { return theta_ > 0 && q.sin2MinAngle < sin2Theta_; }
 
   void checkTriangle(std::uint32_t s) {
-    const TriangleShape sh = shapeOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
-    const double bound = maxAreaAt(s, sh);
-    const bool large = bound > 0 && sh.area > bound;
-    if (!isSkinny(sh) && !large) return;
-    // Worst first: bucket by smallest angle (0..60 degrees), too-large-but-shapely ones last.
-    int k = isSkinny(sh) ? static_cast<int>(sh.minAngle / (kPi / 3) * (kBuckets - 1)) : kBuckets - 1;
+    const TriangleQuality q = qualityAt(s);
+    const double bound = maxAreaAt(s);
+    const bool large = bound > 0 && q.area > bound;
+    const bool skinny = isSkinny(q);
+    if (!skinny && !large) return;
+    // Worst first: bucket by sin^2 of the smallest angle (0..3/4 for 0..60 degrees, monotone), too-large
+    // but shapely ones last.
+    int k = skinny ? static_cast<int>(q.sin2MinAngle / 0.75 * (kBuckets - 1)) : kBuckets - 1;
     k = std::clamp(k, 0, kBuckets - 1);
     buckets_[k].push_back({s, t_.tv[3 * s], t_.tv[3 * s + 1], t_.tv[3 * s + 2]});
     lowestBucket_ = std::min(lowestBucket_, k);
@@ -248,7 +255,7 @@ class Refiner {
   // ---- exemptions (§6.6) -------------------------------------------------------------------------
   // The triangle's smallest angle is an input angle: both edges at that corner are subsegments.
   bool nestledInInputAngle(std::uint32_t s, const TriangleShape& sh) const {
-    const std::uint32_t i = static_cast<std::uint32_t>(sh.minCorner);
+    const std::uint32_t i = static_cast<std::uint32_t>(sh.shortestEdge);  // the smallest angle's corner
     return t_.con[3 * s + (i + 1) % 3] != kFree && t_.con[3 * s + (i + 2) % 3] != kFree;
   }
 
@@ -389,10 +396,11 @@ class Refiner {
     const std::uint32_t s = bt.slot;
     const double* p[3] = {t_.pt(bt.a), t_.pt(bt.b), t_.pt(bt.c)};
     const TriangleShape sh = shapeOf(p[0], p[1], p[2]);
-    const bool skinny = isSkinny(sh);
+    const TriangleQuality q = qualityOf(p[0], p[1], p[2]);
+    const bool skinny = isSkinny(q);
     if (skinny && (nestledInInputAngle(s, sh) || seditious(s, sh))) {
-      const double bound = maxAreaAt(s, sh);
-      if (!(bound > 0 && sh.area > bound)) return;  // left alone on purpose; counted in finish()
+      const double bound = maxAreaAt(s);
+      if (!(bound > 0 && q.area > bound)) return;  // left alone on purpose; counted in finish()
     }
     if (sh.shortest < kLengthFloor) {
       ++floorHits_;
@@ -496,10 +504,11 @@ class Refiner {
     std::uint64_t nestled = 0, sedition = 0, otherSkinny = 0, large = 0;
     for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
       if (!t_.alive(s)) continue;
+      const TriangleQuality q = qualityAt(s);
+      const double bound = maxAreaAt(s);
+      if (bound > 0 && q.area > bound * (1 + 1e-9)) ++large;
+      if (!isSkinny(q)) continue;
       const TriangleShape sh = shapeOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
-      const double bound = maxAreaAt(s, sh);
-      if (bound > 0 && sh.area > bound * (1 + 1e-9)) ++large;
-      if (!isSkinny(sh)) continue;
       if (nestledInInputAngle(s, sh)) ++nestled;
       else if (seditious(s, sh)) ++sedition;
       else ++otherSkinny;

@@ -32,6 +32,7 @@ std::string segName(std::int32_t id) { return "segments[" + std::to_string(id) +
 class SegmentInserter {
  public:
   explicit SegmentInserter(MeshState& m) : m_(m), t_(m.tri) {}
+  std::uint64_t repairs() const { return repairs_; }
 
   void insert(std::uint32_t a, std::uint32_t b, std::int32_t id) {
     tasks_.push_back({a, b, id});
@@ -266,11 +267,17 @@ class SegmentInserter {
 void insertHull(MeshState& m) {
   // Andrew's monotone chain on the distinct points with exact orientation; collinear points on the
   // hull are skipped here and picked up by segment insertion (they split the hull edge).
-  std::vector<std::uint32_t> pts(m.input.insertionOrder);
+  struct P {
+    double x, y;
+    std::uint32_t v;
+  };
+  std::vector<P> sorted;
+  sorted.reserve(m.input.insertionOrder.size());
   const Triangulation& t = m.tri;
-  std::sort(pts.begin(), pts.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return t.xy[2 * a] != t.xy[2 * b] ? t.xy[2 * a] < t.xy[2 * b] : t.xy[2 * a + 1] < t.xy[2 * b + 1];
-  });
+  for (std::uint32_t v : m.input.insertionOrder) sorted.push_back({t.xy[2 * v], t.xy[2 * v + 1], v});
+  std::sort(sorted.begin(), sorted.end(), [](const P& a, const P& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  std::vector<std::uint32_t> pts(sorted.size());
+  for (std::size_t k = 0; k < sorted.size(); ++k) pts[k] = sorted[k].v;
   std::vector<std::uint32_t> hull;
   for (int pass = 0; pass < 2; ++pass) {
     const std::size_t base = hull.size();
@@ -324,9 +331,9 @@ void insertSegments(MeshState& m) {
     }
     inserter.insert(a, b, id);
   }
-  // Repairs free and rebuild constraints; a last Lawson pass over every edge guarantees the
-  // result is constrained Delaunay whatever order the repairs happened in.
-  m.tri.legalizeAll();
+  // Crossing repairs free and rebuild constraints; a last Lawson pass over every edge guarantees
+  // the result is constrained Delaunay whatever order the repairs happened in.
+  if (inserter.repairs() > 0) m.tri.legalizeAll();
 }
 
 }  // namespace ruppert::detail

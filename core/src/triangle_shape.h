@@ -5,32 +5,54 @@
 
 namespace ruppert::detail {
 
+// Which edge is shortest (numbered by its opposite corner) and how long. The smallest angle lies
+// opposite the shortest edge, so shortestEdge is also the corner with the smallest angle.
 struct TriangleShape {
-  double angle[3];   // radians, at each corner
-  double minAngle;   // radians, the smallest of them
-  int minCorner;     // corner (0..2) with the smallest angle
-  int shortestEdge;  // edge (numbered by its opposite corner) that is shortest
-  double shortest;   // its length
+  int shortestEdge;
+  double shortest;
+};
+
+inline TriangleShape shapeOf(const double* p0, const double* p1, const double* p2) {
+  const double* p[3] = {p0, p1, p2};
+  TriangleShape s{0, HUGE_VAL};
+  for (int i = 0; i < 3; ++i) {
+    const double* u = p[(i + 1) % 3];
+    const double* w = p[(i + 2) % 3];
+    const double len2 = (u[0] - w[0]) * (u[0] - w[0]) + (u[1] - w[1]) * (u[1] - w[1]);
+    if (len2 < s.shortest) s.shortest = len2, s.shortestEdge = i;
+  }
+  s.shortest = std::sqrt(s.shortest);
+  return s;
+}
+
+// What the refinement queue needs for every new triangle, without square roots or arctangents:
+// the sine of the smallest angle, squared (it lies opposite the shortest edge, between the two
+// longer ones: sin = |cross| / (product of their lengths)), and the area.
+struct TriangleQuality {
+  double sin2MinAngle;
   double area;
 };
 
-// Angles via atan2(|cross|, dot): accurate for needles and near-straight angles alike.
-inline TriangleShape shapeOf(const double* p0, const double* p1, const double* p2) {
+inline TriangleQuality qualityOf(const double* p0, const double* p1, const double* p2) {
+  const double ax = p1[0] - p0[0], ay = p1[1] - p0[1];  // edge opposite p2
+  const double bx = p2[0] - p0[0], by = p2[1] - p0[1];  // edge opposite p1
+  const double cx = p2[0] - p1[0], cy = p2[1] - p1[1];  // edge opposite p0
+  const double e2 = ax * ax + ay * ay, e1 = bx * bx + by * by, e0 = cx * cx + cy * cy;
+  const double cross = ax * by - ay * bx;
+  const double longerPair = e0 <= e1 && e0 <= e2 ? e1 * e2 : e1 <= e2 ? e0 * e2 : e0 * e1;
+  return {longerPair > 0 ? cross * cross / longerPair : 0.0, 0.5 * std::fabs(cross)};
+}
+
+// Only the three angles (radians), for statistics over every output triangle.
+inline void triangleAngles(const double* p0, const double* p1, const double* p2, double angle[3]) {
   const double* p[3] = {p0, p1, p2};
-  TriangleShape s{{0, 0, 0}, 10, 0, 0, HUGE_VAL, 0};
   for (int i = 0; i < 3; ++i) {
     const double* o = p[i];
     const double* u = p[(i + 1) % 3];
     const double* w = p[(i + 2) % 3];
     const double ux = u[0] - o[0], uy = u[1] - o[1], wx = w[0] - o[0], wy = w[1] - o[1];
-    const double cross = ux * wy - uy * wx;
-    s.angle[i] = std::atan2(std::fabs(cross), ux * wx + uy * wy);
-    if (s.angle[i] < s.minAngle) s.minAngle = s.angle[i], s.minCorner = i;
-    const double len = std::hypot(u[0] - w[0], u[1] - w[1]);
-    if (len < s.shortest) s.shortest = len, s.shortestEdge = i;
-    if (i == 0) s.area = 0.5 * std::fabs(cross);
+    angle[i] = std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy);
   }
-  return s;
 }
 
 }  // namespace ruppert::detail

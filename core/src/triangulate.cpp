@@ -71,8 +71,9 @@ Mesh assemble(MeshState& m) {
       }
     }
     mesh.triangleAttributes[o] = m.attribute.empty() ? 0.0 : m.attribute[s];
-    const TriangleShape shape = shapeOf(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2]));
-    for (double radians : shape.angle) {
+    double angles[3];
+    triangleAngles(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2]), angles);
+    for (double radians : angles) {
       const double a = radians * (180.0 / M_PI);
       st.minAngle = std::min(st.minAngle, a);
       st.maxAngle = std::max(st.maxAngle, a);

@@ -221,7 +221,7 @@ void Triangulation::cavity(const double* p, const Location& loc, std::vector<std
 }
 
 bool Triangulation::insertVertex(std::uint32_t v, const Location& loc, std::vector<std::uint32_t>* newTris,
-                                 std::vector<std::uint32_t>* parents) {
+                                 std::vector<std::uint32_t>* parents, bool checkOrientation) {
   static thread_local std::vector<std::uint32_t> tris, boundary;
   struct Side { std::uint32_t u, w, outer, from; std::int32_t c; };
   static thread_local std::vector<Side> sides;
@@ -232,7 +232,7 @@ bool Triangulation::insertVertex(std::uint32_t v, const Location& loc, std::vect
   for (std::uint32_t h : boundary) {
     const std::uint32_t u = origin(h), w = dest(h);
     // A vertex twice on the boundary (the domain touching itself there) would break the fan.
-    if (!(orient2d(pt(u), pt(w), p) > 0) || scratch_[u] != kNone) {
+    if ((checkOrientation && !(orient2d(pt(u), pt(w), p) > 0)) || scratch_[u] != kNone) {
       ok = false;
       break;
     }

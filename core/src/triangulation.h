@@ -75,8 +75,10 @@ class Triangulation {
   // newTris receives the triangles created and parents, for each, the (now freed) cavity slot it
   // replaces on the same side of the cavity boundary: per-triangle data is inherited from there
   // (cavities never cross constrained edges, so a cavity lies in one region). Either may be null.
+  // checkOrientation = false skips the orientation test of every new triangle: only for a point
+  // located exactly with no constraints around (its cavity is then star-shaped by construction).
   bool insertVertex(std::uint32_t v, const Location& loc, std::vector<std::uint32_t>* newTris = nullptr,
-                    std::vector<std::uint32_t>* parents = nullptr);
+                    std::vector<std::uint32_t>* parents = nullptr, bool checkOrientation = true);
 
   // Cavity computation without modifying anything (the first half of insertVertex). Returns the
   // boundary half-edges (outer side twins are looked up from the cavity triangles' half-edges).
