@@ -70,13 +70,18 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
   if (n > 0x3FFFFFFFu) fail(ErrorCode::TooLarge, "too many points: " + std::to_string(n));
 
   double maxAbs = 0;
-  auto checkFinite = [&](double v, const std::string& what) {
-    if (!std::isfinite(v)) fail(ErrorCode::NonFiniteCoordinate, what + " = " + formatNumber(v) + " is not finite");
+  // Item names like "points[12].x" are only built when something is wrong (this runs per point).
+  auto name = [](const char* array, std::size_t i, const char* field) {
+    return std::string(array) + "[" + std::to_string(i) + "]" + field;
+  };
+  auto checkFinite = [&](double v, const char* array, std::size_t i, const char* field) {
+    if (!std::isfinite(v))
+      fail(ErrorCode::NonFiniteCoordinate, name(array, i, field) + " = " + formatNumber(v) + " is not finite");
     maxAbs = std::max(maxAbs, std::fabs(v));
   };
   for (std::size_t i = 0; i < n; ++i) {
-    checkFinite(plc.points[2 * i], "points[" + std::to_string(i) + "].x");
-    checkFinite(plc.points[2 * i + 1], "points[" + std::to_string(i) + "].y");
+    checkFinite(plc.points[2 * i], "points", i, ".x");
+    checkFinite(plc.points[2 * i + 1], "points", i, ".y");
   }
   for (std::size_t k = 0; k < plc.segments.size(); ++k) {
     if (plc.segments[k] >= n)
@@ -85,13 +90,13 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
                                            std::to_string(n) + " points");
   }
   for (std::size_t i = 0; i < plc.holes.size() / 2; ++i) {
-    checkFinite(plc.holes[2 * i], "holes[" + std::to_string(i) + "].x");
-    checkFinite(plc.holes[2 * i + 1], "holes[" + std::to_string(i) + "].y");
+    checkFinite(plc.holes[2 * i], "holes", i, ".x");
+    checkFinite(plc.holes[2 * i + 1], "holes", i, ".y");
   }
   for (std::size_t i = 0; i < plc.regions.size(); ++i) {
     const Region& r = plc.regions[i];
-    checkFinite(r.x, "regions[" + std::to_string(i) + "].x");
-    checkFinite(r.y, "regions[" + std::to_string(i) + "].y");
+    checkFinite(r.x, "regions", i, ".x");
+    checkFinite(r.y, "regions", i, ".y");
     if (std::isnan(r.attribute))
       fail(ErrorCode::InvalidRegion, "regions[" + std::to_string(i) + "].attribute is NaN");
     if (std::isnan(r.maxArea) || r.maxArea < 0)
@@ -106,25 +111,25 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
     std::frexp(maxAbs, &e);
     out.scale = std::ldexp(1.0, 1 - e);
   }
-  auto scaled = [&](double v, const std::string& what) {
+  auto scaled = [&](double v, const char* array, std::size_t i, const char* field) {
     const double s = v * out.scale;
     if (!isSafeCoordinate(s))
       fail(ErrorCode::CoordinateRange,
-           what + " = " + formatNumber(v) + " is nonzero but over 2^128 times smaller than the largest coordinate " +
+           name(array, i, field) + " = " + formatNumber(v) + " is nonzero but over 2^128 times smaller than the largest coordinate " +
                formatNumber(maxAbs) + "; exact arithmetic cannot resolve such a range");
     return s;
   };
   out.xy.resize(2 * n);
   for (std::size_t i = 0; i < n; ++i) {
-    out.xy[2 * i] = scaled(plc.points[2 * i], "points[" + std::to_string(i) + "].x");
-    out.xy[2 * i + 1] = scaled(plc.points[2 * i + 1], "points[" + std::to_string(i) + "].y");
+    out.xy[2 * i] = scaled(plc.points[2 * i], "points", i, ".x");
+    out.xy[2 * i + 1] = scaled(plc.points[2 * i + 1], "points", i, ".y");
   }
   for (std::size_t i = 0; i < plc.holes.size(); ++i)
-    out.holes.push_back(scaled(plc.holes[i], "holes[" + std::to_string(i / 2) + "]"));
+    out.holes.push_back(scaled(plc.holes[i], "holes", i / 2, ""));
   for (std::size_t i = 0; i < plc.regions.size(); ++i) {
     Region r = plc.regions[i];
-    r.x = scaled(r.x, "regions[" + std::to_string(i) + "].x");
-    r.y = scaled(r.y, "regions[" + std::to_string(i) + "].y");
+    r.x = scaled(r.x, "regions", i, ".x");
+    r.y = scaled(r.y, "regions", i, ".y");
     r.maxArea = r.maxArea * out.scale * out.scale;
     out.regions.push_back(r);
   }

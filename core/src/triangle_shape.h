@@ -1,6 +1,7 @@
 // The shape measures of one triangle that output statistics and refinement both need.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 namespace ruppert::detail {
@@ -45,14 +46,16 @@ inline TriangleQuality qualityOf(const double* p0, const double* p1, const doubl
 
 // Only the three angles (radians), for statistics over every output triangle.
 inline void triangleAngles(const double* p0, const double* p1, const double* p2, double angle[3]) {
+  // Two arctangents; the third angle is what remains of pi (its rounding error is ~1e-16 rad).
   const double* p[3] = {p0, p1, p2};
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < 2; ++i) {
     const double* o = p[i];
     const double* u = p[(i + 1) % 3];
     const double* w = p[(i + 2) % 3];
     const double ux = u[0] - o[0], uy = u[1] - o[1], wx = w[0] - o[0], wy = w[1] - o[1];
     angle[i] = std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy);
   }
+  angle[2] = std::max(0.0, 3.14159265358979323846 - angle[0] - angle[1]);
 }
 
 }  // namespace ruppert::detail

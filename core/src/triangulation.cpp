@@ -12,39 +12,6 @@ std::uint32_t Triangulation::addVertex(double x, double y) {
   return vertexCount() - 1;
 }
 
-std::uint32_t Triangulation::newTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-  std::uint32_t t;
-  if (!freeSlots.empty()) {
-    t = freeSlots.back();
-    freeSlots.pop_back();
-  } else {
-    t = slotCount();
-    tv.resize(tv.size() + 3);
-    twin.resize(twin.size() + 3);
-    con.resize(con.size() + 3);
-    mark_.push_back(0);
-  }
-  tv[3 * t] = a;
-  tv[3 * t + 1] = b;
-  tv[3 * t + 2] = c;
-  for (int i = 0; i < 3; ++i) {
-    twin[3 * t + i] = kNone;
-    con[3 * t + i] = kFree;
-  }
-  vtri[a] = vtri[b] = vtri[c] = t;
-  return t;
-}
-
-void Triangulation::killTriangle(std::uint32_t t) {
-  tv[3 * t] = tv[3 * t + 1] = tv[3 * t + 2] = kNone;
-  freeSlots.push_back(t);
-}
-
-void Triangulation::link(std::uint32_t h, std::uint32_t g) {
-  if (h != kNone) twin[h] = g;
-  if (g != kNone) twin[g] = h;
-}
-
 std::uint32_t Triangulation::nextStamp() const {
   stamp_ += 2;  // two values per search: stamp_ = inside the cavity, stamp_ + 1 = tested, outside
   if (stamp_ >= 0xFFFFFFF0u) {
@@ -81,6 +48,8 @@ Location Triangulation::locate(const double* p, std::uint32_t start) const {
   // A visibility walk can cycle in a constrained triangulation; starting each step at a random edge
   // makes cycles vanish with probability one. The bound only guards against bugs.
   const std::uint64_t maxSteps = 64 + 4ull * slotCount();
+  std::uint32_t entered = kNone;  // the half-edge we came in through: p is on its inner side
+  double enteredOrient = 0;
   for (std::uint64_t step = 0; step < maxSteps; ++step) {
     rng_ ^= rng_ << 13;
     rng_ ^= rng_ >> 7;
@@ -91,6 +60,10 @@ Location Triangulation::locate(const double* p, std::uint32_t start) const {
     for (std::uint32_t k = 0; k < 3; ++k) {
       const std::uint32_t i = (r + k) % 3;
       const std::uint32_t h = 3 * t + i;
+      if (h == entered) {
+        o[i] = enteredOrient;
+        continue;
+      }
       o[i] = orient2d(pt(origin(h)), pt(dest(h)), p);
       if (o[i] < 0) {
         if (twin[h] == kNone) {
@@ -99,7 +72,9 @@ Location Triangulation::locate(const double* p, std::uint32_t start) const {
           loc.edge = h;
           return loc;
         }
-        t = twin[h] / 3;
+        entered = twin[h];
+        enteredOrient = -o[i];
+        t = entered / 3;
         moved = true;
         break;
       }

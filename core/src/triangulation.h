@@ -48,9 +48,31 @@ class Triangulation {
   std::uint32_t apex(std::uint32_t h) const { return tv[h]; }          // vertex opposite h
 
   std::uint32_t addVertex(double x, double y);
-  std::uint32_t newTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c);
-  void killTriangle(std::uint32_t t);
-  void link(std::uint32_t h, std::uint32_t g);  // make h and g twins (either may be kNone)
+  // A triangle with no neighbours and no constraints yet, in a free slot if there is one.
+  std::uint32_t newTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    std::uint32_t t;
+    if (!freeSlots.empty()) {
+      t = freeSlots.back();
+      freeSlots.pop_back();
+      tv[3 * t] = a, tv[3 * t + 1] = b, tv[3 * t + 2] = c;
+      for (std::uint32_t i = 3 * t; i < 3 * t + 3; ++i) twin[i] = kNone, con[i] = kFree;
+    } else {
+      t = slotCount();
+      tv.push_back(a), tv.push_back(b), tv.push_back(c);
+      for (int i = 0; i < 3; ++i) twin.push_back(kNone), con.push_back(kFree);
+      mark_.push_back(0);
+    }
+    vtri[a] = vtri[b] = vtri[c] = t;
+    return t;
+  }
+  void killTriangle(std::uint32_t t) {
+    tv[3 * t] = tv[3 * t + 1] = tv[3 * t + 2] = kNone;
+    freeSlots.push_back(t);
+  }
+  void link(std::uint32_t h, std::uint32_t g) {  // make h and g twins (either may be kNone)
+    if (h != kNone) twin[h] = g;
+    if (g != kNone) twin[g] = h;
+  }
 
   // Walk from triangle `start` towards p. Stochastic visibility walk; bounded number of steps.
   Location locate(const double* p, std::uint32_t start) const;
