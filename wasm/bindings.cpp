@@ -108,6 +108,7 @@ ruppert::Options optionsFromJs(const val& js) {
   const double steiner = js["maxSteiner"].as<double>();
   o.maxSteiner = steiner < 0 ? ruppert::kAutoSteinerBudget : static_cast<std::uint64_t>(steiner);
   o.placement = static_cast<ruppert::Placement>(js["placement"].as<int>());
+  o.encroachment = static_cast<ruppert::Encroachment>(js["encroachment"].as<int>());
   o.variant = static_cast<ruppert::Variant>(js["variant"].as<int>());
   o.convexHull = js["convexHull"].as<bool>();
   o.autoHoles = js["autoHoles"].as<bool>();
@@ -358,6 +359,7 @@ val parseCliArgs(val argsJs) {
     options.set("maxArea", o.maxArea);
     if (o.maxSteiner != ruppert::kAutoSteinerBudget) options.set("maxSteiner", static_cast<double>(o.maxSteiner));
     options.set("placement", std::string(o.placement == ruppert::Placement::Circumcenter ? "circumcenter" : "offcenter"));
+    options.set("encroachment", std::string(o.encroachment == ruppert::Encroachment::DiametralDisk ? "disk" : "lens"));
     options.set("variant", std::string(o.variant == ruppert::Variant::BoundingBox ? "box" : "cdt"));
     options.set("convexHull", o.convexHull);
     options.set("autoHoles", o.autoHoles);

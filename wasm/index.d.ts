@@ -60,6 +60,8 @@ export interface TriangulateOptions {
   /** Record mesh.events (every insertion). */
   trace?: boolean;
   placement?: 'offcenter' | 'circumcenter';
+  /** 'lens' (default): diametral lenses, fewer splits; 'disk': the closed diametral disk of the chapter. */
+  encroachment?: 'lens' | 'disk';
   /** 'cdt': constrained Delaunay refinement; 'box': Ruppert's original, conforming, in a box. */
   variant?: 'cdt' | 'box';
   /** Mesh the whole convex hull, not only what segments enclose. */

@@ -160,9 +160,10 @@ export function normalizePlc(plc) {
 }
 
 const PLACEMENTS = { circumcenter: 0, offcenter: 1 };
+const ENCROACHMENTS = { disk: 0, lens: 1 };
 const VARIANTS = { cdt: 0, box: 1 };
 const OPTION_KEYS = ['minAngle', 'maxArea', 'maxSteiner', 'sizeFunction', 'onProgress', 'trace',
-  'placement', 'variant', 'convexHull', 'autoHoles'];
+  'placement', 'encroachment', 'variant', 'convexHull', 'autoHoles'];
 
 function badOption(message) {
   return new MeshError('INVALID_OPTION', message);
@@ -192,7 +193,7 @@ function functionOption(options, key) {
 }
 
 /**
- * @returns { minAngle, maxArea, maxSteiner (-1: automatic), placement, variant, convexHull,
+ * @returns { minAngle, maxArea, maxSteiner (-1: automatic), placement, encroachment, variant, convexHull,
  *            autoHoles, trace, sizeFunction?, onProgress? } with enums as the core's integers.
  */
 export function normalizeOptions(options) {
@@ -228,6 +229,7 @@ export function normalizeOptions(options) {
     maxArea,
     maxSteiner,
     placement: enumOption(options, 'placement', PLACEMENTS, 'offcenter'),
+    encroachment: enumOption(options, 'encroachment', ENCROACHMENTS, 'lens'),
     variant: enumOption(options, 'variant', VARIANTS, 'cdt'),
     convexHull: booleanOption(options, 'convexHull'),
     autoHoles: booleanOption(options, 'autoHoles'),

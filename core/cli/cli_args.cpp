@@ -29,7 +29,7 @@ bool parseStrictCount(const std::string& text, std::uint64_t& value) {
 const char* usageLine() {
   return "usage: ruppert [--min-angle DEG] [--max-area A] [--max-steiner N] [-o BASE] "
          "[--format triangle|json|svg] [--quiet] [--stats] [--trace FILE] "
-         "[--placement offcenter|circumcenter] [--variant cdt|box] [--convex-hull] [--auto-holes] "
+         "[--placement offcenter|circumcenter] [--encroachment lens|disk] [--variant cdt|box] [--convex-hull] [--auto-holes] "
          "[--help] [--version] INPUT";
 }
 
@@ -47,6 +47,7 @@ std::string helpText() {
          "                       BASE.json (json) or BASE.svg (svg); without -o only the summary is printed\n"
          "  --format F           triangle (default), json or svg\n"
          "  --placement P        offcenter (default) or circumcenter\n"
+         "  --encroachment E     lens (default: diametral lenses) or disk (closed diametral disks)\n"
          "  --variant V          cdt (default: constrained, no triangles outside the domain) or box\n"
          "                       (Ruppert's original: conforming mesh of an enclosing box)\n"
          "  --convex-hull        mesh the whole convex hull, not only what segments enclose\n"
@@ -126,6 +127,11 @@ CliArgs parseArgs(const std::vector<std::string>& args) {
       else if (v == "json") out.format = OutputFormat::Json;
       else if (v == "svg") out.format = OutputFormat::Svg;
       else throw UsageError("--format: '" + v + "' is not one of triangle, json, svg");
+    } else if (name == "--encroachment") {
+      const std::string v = value();
+      if (v == "lens") out.options.encroachment = Encroachment::DiametralLens;
+      else if (v == "disk") out.options.encroachment = Encroachment::DiametralDisk;
+      else throw UsageError("--encroachment: '" + v + "' is not one of lens, disk");
     } else if (name == "--placement") {
       const std::string v = value();
       if (v == "offcenter") out.options.placement = Placement::OffCenter;

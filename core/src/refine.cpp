@@ -52,6 +52,9 @@ class Refiner {
   explicit Refiner(MeshState& m) : m_(m), t_(m.tri), o_(*m.options) {
     theta_ = o_.minAngle * kPi / 180.0;
     sin2Theta_ = std::sin(theta_) * std::sin(theta_) * (1 - 1e-12);
+    // Lens apex angle 180 - 2 theta, never below the disk's 90 degrees: cos(180 - 2 theta) = -cos(2 theta).
+    if (o_.encroachment == Encroachment::DiametralLens && theta_ < kPi / 4)
+      lensCos2_ = std::cos(2 * theta_) * std::cos(2 * theta_);
     scale2_ = m.input.scale * m.input.scale;
     buckets_.resize(kBuckets);
   }
@@ -95,6 +98,7 @@ class Refiner {
   RefineOutcome out_;
   double theta_ = 0;  // radians
   double sin2Theta_ = 0;
+  double lensCos2_ = 0;  // 0: closed diametral disk
   double scale2_ = 1;
   std::uint64_t budget_ = 0, inserted_ = 0;
   bool cancelled_ = false, budgetHit_ = false;
@@ -153,9 +157,14 @@ class Refiner {
   }
 
   // ---- tests ---------------------------------------------------------------------------------
-  // Closed diametral disk test: v encroaches (a, b) iff the angle avb is at least 90 degrees.
+  // v encroaches (a, b) iff the angle avb is at least 90 degrees (closed diametral disk) or, with
+  // lenses, at least 180 - 2 theta degrees when that is larger: cos(avb) <= lensCos_, i.e.
+  // dot <= 0 and dot^2 >= lensCos_^2 |va|^2 |vb|^2.
   bool encroaches(const double* v, const double* a, const double* b) const {
-    return (a[0] - v[0]) * (b[0] - v[0]) + (a[1] - v[1]) * (b[1] - v[1]) <= 0;
+    const double ax = a[0] - v[0], ay = a[1] - v[1], bx = b[0] - v[0], by = b[1] - v[1];
+    const double dot = ax * bx + ay * by;
+    if (dot > 0) return false;
+    return lensCos2_ == 0 || dot * dot >= lensCos2_ * (ax * ax + ay * ay) * (bx * bx + by * by);
   }
   // O(1) test of Exercise 1: the subsegment h is encroached iff an apex on either side sees it at
   // 90 degrees or more.

@@ -61,12 +61,12 @@ Mesh refineChecked(const Plc& plc, const Options& o, const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("refinement of every shared PLC at 20 and 30 degrees is valid and complete", "[refine]") {
+TEST_CASE("refinement of every shared PLC at 20, 30 and 33 degrees is valid and complete", "[refine]") {
   const auto files = ruppert_test::polyFilesIn(ruppert_test::sharedDataDir());
   if (files.empty()) WARN("shared data folder not found: refinement fixtures skipped");
   for (const auto& file : files) {
     const Plc plc = ruppert::readFile(file);
-    for (double angle : {20.0, 30.0}) {
+    for (double angle : {20.0, 30.0, 33.0}) {
       Options o;
       o.minAngle = angle;
       const Mesh mesh = refineChecked(plc, o, file);
@@ -74,6 +74,21 @@ TEST_CASE("refinement of every shared PLC at 20 and 30 degrees is valid and comp
       for (const auto& r : mesh.reasons) INFO(r.message);
       CHECK(mesh.complete);
     }
+  }
+}
+
+TEST_CASE("closed diametral disks (the chapter's definition) also refine the corpus validly at 30 degrees",
+          "[refine]") {
+  const auto files = ruppert_test::polyFilesIn(ruppert_test::sharedDataDir());
+  if (files.empty()) WARN("shared data folder not found: refinement fixtures skipped");
+  for (const auto& file : files) {
+    const Plc plc = ruppert::readFile(file);
+    Options o;
+    o.minAngle = 30;
+    o.encroachment = ruppert::Encroachment::DiametralDisk;
+    const Mesh disk = refineChecked(plc, o, file);
+    INFO(file);
+    CHECK(disk.complete);
   }
 }
 

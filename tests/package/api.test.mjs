@@ -122,6 +122,7 @@ test('JavaScript-side validation names the offending item', async () => {
     [() => mesher.triangulate(square, { maxArea: NaN }), 'INVALID_OPTION', /maxArea = NaN/],
     [() => mesher.triangulate(square, { maxSteiner: 1.5 }), 'INVALID_OPTION', /maxSteiner = 1.5/],
     [() => mesher.triangulate(square, { placement: 'centroid' }), 'INVALID_OPTION', /placement = "centroid"/],
+    [() => mesher.triangulate(square, { encroachment: 'circle' }), 'INVALID_OPTION', /encroachment = "circle"/],
     [() => mesher.triangulate(square, { variant: 'conforming' }), 'INVALID_OPTION', /variant/],
     [() => mesher.triangulate(square, { convexHull: 1 }), 'INVALID_OPTION', /convexHull = 1/],
     [() => mesher.triangulate(square, { sizeFunction: 0.1 }), 'INVALID_OPTION', /sizeFunction = 0.1/],

@@ -16,7 +16,7 @@ async function example(): Promise<number> {
   };
   const options: TriangulateOptions = {
     minAngle: 30, maxArea: 0.01, maxSteiner: 1000, trace: true,
-    placement: 'offcenter', variant: 'cdt', convexHull: false, autoHoles: false,
+    placement: 'offcenter', encroachment: 'lens', variant: 'cdt', convexHull: false, autoHoles: false,
     sizeFunction: (x: number, y: number) => 0.01 * (1 + x + y),
     onProgress: (p: Progress) => p.triangles < 1e6,
   };

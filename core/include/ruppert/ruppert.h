@@ -91,6 +91,14 @@ enum class Placement : std::uint8_t {
   OffCenter = 1,     // Üngör's off-centers (§6.8): fewer triangles at the same angle
 };
 
+// When a vertex v encroaches a subsegment ab (and so ab is split, or v rejected).
+enum class Encroachment : std::uint8_t {
+  DiametralDisk = 0,  // v in the closed disk with diameter ab: angle avb >= 90 degrees (§6.2, Def. 6.1)
+  DiametralLens = 1,  // angle avb >= max(90, 180 - 2 minAngle) degrees: a lens inside that disk
+                      // (Chew; §6.8). Fewer segment splits: fewer triangles, and refinement completes at
+                      // higher angles in practice.
+};
+
 enum class Variant : std::uint8_t {
   Constrained = 0,   // constrained Delaunay refinement (§6.7): no triangles outside the domain
   BoundingBox = 1,   // Ruppert's original: conforming Delaunay mesh of an enclosing box (§6.3, Fig 6.16)
@@ -113,6 +121,7 @@ struct Options {
   // reasonable inputs never reach. Running out is not an error: complete becomes false.
   std::uint64_t maxSteiner = kAutoSteinerBudget;
   Placement placement = Placement::OffCenter;
+  Encroachment encroachment = Encroachment::DiametralLens;
   Variant variant = Variant::Constrained;
   bool convexHull = false;  // mesh the whole convex hull, not only what segments enclose
   bool autoHoles = false;   // with no hole seeds: regions at odd nesting depth are domain, even are holes

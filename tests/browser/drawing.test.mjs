@@ -1,0 +1,200 @@
+// Drawing with the mouse and keyboard, meshing in the worker, parameters, undo, error display.
+import assert from 'node:assert/strict';
+import { after, before, test } from 'node:test';
+import {
+  SCREENSHOTS, canvasFingerprint, clickCanvas, launch, moveOnCanvas, openPage, readStats, settle,
+} from './harness.mjs';
+
+let harness;
+let page;
+let errors;
+
+before(async () => {
+  harness = await launch();
+  ({ page, errors } = await openPage(harness.context, `${harness.baseUrl}/web/`));
+  assert.equal(await settle(page), 'done', 'the default drawing is meshed on load');
+  // Record what the page posts to window.parent (itself, at top level).
+  await page.evaluate(() => {
+    window.receivedMessages = [];
+    window.addEventListener('message', (event) => {
+      if (event.data?.type === 'ruppert:meshed') window.receivedMessages.push(event.data);
+    });
+  });
+});
+
+after(async () => {
+  await harness?.close();
+});
+
+// Irregular quadrilaterals (canvas pixels): unlike squares, their mesh depends on the min angle.
+const OUTER = [[120, 90], [600, 130], [520, 520], [160, 460]];
+const INNER = [[300, 250], [420, 270], [400, 360], [290, 340]];
+const HOLE = [350, 300];
+
+async function drawRing(corners) {
+  for (const [x, y] of corners) await clickCanvas(page, x, y);
+  await clickCanvas(page, corners[0][0], corners[0][1]);  // the first vertex again: closes it
+}
+
+test('a polygon with a hole drawn by mouse is meshed by the worker', async () => {
+  const before = await readStats(page);
+  await page.click('#clear');
+  assert.equal(await settle(page), 'empty');
+  assert.equal(await page.locator('#stat-triangles').textContent(), '–');
+
+  await page.click('[data-tool="polyline"]');
+  await drawRing(OUTER);
+  await drawRing(INNER);
+  await page.keyboard.press('h');
+  assert.equal(await page.getAttribute('[data-tool="hole"]', 'aria-pressed'), 'true');
+  await clickCanvas(page, ...HOLE);
+  assert.equal(await settle(page), 'done');
+
+  const stats = await readStats(page);
+  assert.ok(stats.triangles > 0, `triangles: ${stats.triangles}`);
+  assert.ok(stats.vertices >= 8, `vertices: ${stats.vertices}`);
+  assert.equal(stats.complete, 'yes');
+  assert.ok(stats.minAngle >= 30 - 1e-9, `min angle ${stats.minAngle}`);
+  assert.notDeepEqual(stats, before);
+
+  // Hovering inside the hole finds no triangle; inside the domain it shows one's angles.
+  await moveOnCanvas(page, ...HOLE);
+  assert.equal(await page.locator('#hover-info').isHidden(), true, 'no triangle in the hole');
+  await moveOnCanvas(page, 200, 150);
+  const info = await page.locator('#hover-info').textContent();
+  assert.match(info, /angles [\d.]+°, [\d.]+°, [\d.]+°; radius-edge ratio [\d.]+/);
+  assert.match(info, /input|segment split|off-center|circumcenter/);
+
+  // The page reported the same statistics to its host (itself here).
+  const last = await page.evaluate(() => window.receivedMessages.at(-1));
+  assert.equal(last.stats.triangles, stats.triangles);
+  assert.equal(last.stats.complete, true);
+
+  await page.screenshot({ path: `${SCREENSHOTS}drawn-polygon-with-hole.png` });
+});
+
+test('changing the min angle re-meshes with a different mesh', async () => {
+  await page.fill('#min-angle', '5');
+  await page.press('#min-angle', 'Tab');
+  assert.equal(await settle(page), 'done');
+  const low = await readStats(page);
+  assert.equal(await page.inputValue('#min-angle-range'), '5', 'the slider follows the number');
+
+  await page.fill('#min-angle', '33');
+  await page.press('#min-angle', 'Tab');
+  assert.equal(await settle(page), 'done');
+  const high = await readStats(page);
+  assert.ok(high.triangles > low.triangles, `33°: ${high.triangles} triangles, 5°: ${low.triangles}`);
+  assert.ok(high.minAngle >= 33 - 1e-9, `min angle ${high.minAngle}`);
+  assert.match(page.url(), /#d=/, 'the drawing is in the URL hash');
+
+  // The slider drives it too (keyboard: arrows on the focused range input).
+  await page.focus('#min-angle-range');
+  await page.keyboard.press('ArrowLeft');
+  assert.equal(await settle(page), 'done');
+  assert.equal(await page.inputValue('#min-angle'), '32.5');
+});
+
+test('undo and redo with Ctrl+Z / Ctrl+Y', async () => {
+  await page.fill('#min-angle', '30');
+  await page.press('#min-angle', 'Tab');
+  await settle(page);
+  await page.locator('#canvas').focus();
+  // The min-angle edits since the hole seed are undo steps too: undo until the seed is gone.
+  let undos = 0;
+  for (; undos < 8; undos++) {
+    await moveOnCanvas(page, HOLE[0] + (undos % 2), HOLE[1]);
+    if (await page.locator('#hover-info').isVisible()) break;
+    await page.keyboard.press('Control+z');
+    assert.equal(await settle(page), 'done');
+  }
+  assert.ok(undos >= 2 && undos < 8, `the hole seed went after ${undos} undo steps`);
+  assert.equal(await page.inputValue('#min-angle'), '30', 'undo restored the min angle the seed was placed with');
+  await page.keyboard.press('Control+y');
+  assert.equal(await settle(page), 'done');
+  await moveOnCanvas(page, ...HOLE);
+  assert.equal(await page.locator('#hover-info').isHidden(), true, 'after redo the hole is back');
+});
+
+test('select, drag and delete a vertex; zoom with the wheel', async () => {
+  await page.keyboard.press('v');
+  const before = await readStats(page);
+  const hashBefore = await page.evaluate(() => location.hash);
+  const box = await page.locator('#canvas').boundingBox();
+  await page.mouse.move(box.x + 520, box.y + 520);
+  await page.mouse.down();
+  await page.mouse.move(box.x + 580, box.y + 560, { steps: 5 });
+  await page.mouse.up();
+  assert.equal(await settle(page), 'done');
+  assert.notEqual(await page.evaluate(() => location.hash), hashBefore, 'the drag moved a vertex');
+  assert.notDeepEqual(await readStats(page), before);
+
+  // Delete the hole seed (the hole fills), then an inner vertex (its two segments go with it).
+  await clickCanvas(page, ...HOLE);
+  assert.equal(await page.isDisabled('#delete-selected'), false);
+  const withHole = await readStats(page);
+  await page.keyboard.press('Delete');
+  assert.equal(await settle(page), 'done');
+  const filled = await readStats(page);
+  assert.ok(filled.triangles > withHole.triangles, `${filled.triangles} > ${withHole.triangles}`);
+  await clickCanvas(page, 400, 360);
+  await page.keyboard.press('Delete');
+  assert.equal(await settle(page), 'done');
+  const opened = await readStats(page);
+  assert.ok(opened.triangles > 0);
+  assert.notDeepEqual(opened, filled);
+  const hash = await page.evaluate(() => location.hash);
+
+  const picture = await canvasFingerprint(page);
+  await page.mouse.move(box.x + 300, box.y + 300);
+  await page.mouse.wheel(0, -400);
+  await page.waitForTimeout(100);
+  assert.notEqual(await canvasFingerprint(page), picture, 'the wheel zoomed');
+  assert.equal(await page.evaluate(() => location.hash), hash, 'zooming does not change the drawing');
+  await page.keyboard.press('f');
+});
+
+test('crossing segments and degenerate input are reported to the user', async () => {
+  await page.click('#clear');
+  await settle(page);
+  await page.click('[data-tool="polyline"]');
+  // A bow tie: its two long edges cross.
+  await drawRing([[150, 100], [550, 500], [550, 100], [150, 500]]);
+  assert.equal(await settle(page), 'done');
+  const notices = await page.locator('#notices').textContent();
+  assert.match(notices, /SEGMENTS_CROSS/);
+  assert.equal(await page.getAttribute('#status', 'data-kind'), 'warn');
+
+  await page.click('#clear');
+  await settle(page);
+  await page.keyboard.press('p');
+  for (const x of [200, 300, 400]) await clickCanvas(page, x, 300);
+  assert.equal(await settle(page), 'error');
+  assert.match(await page.locator('#notices .error').textContent(), /DEGENERATE_INPUT/);
+  assert.match(await page.locator('#status').textContent(), /Cannot mesh/);
+  assert.equal(await page.locator('#stat-triangles').textContent(), '–');
+});
+
+test('a long meshing job shows progress and can be cancelled', async () => {
+  await page.selectOption('#preset', 'square-hole');
+  assert.equal(await settle(page), 'done');
+  // About ten million triangles: far longer than the test waits.
+  await page.fill('#max-area', '0.00001');
+  await page.press('#max-area', 'Tab');
+  await page.locator('#cancel').waitFor({ state: 'visible', timeout: 10_000 });
+  assert.equal(await page.locator('#progress').isVisible(), true);
+  await page.click('#cancel');
+  assert.equal(await settle(page), 'cancelled');
+  assert.match(await page.locator('#status').textContent(), /cancelled/i);
+  assert.equal(await page.locator('#cancel').isHidden(), true);
+
+  // A fresh worker meshes the next request.
+  await page.fill('#max-area', '');
+  await page.press('#max-area', 'Tab');
+  assert.equal(await settle(page), 'done');
+  assert.ok((await readStats(page)).triangles > 0);
+});
+
+test('no console errors', () => {
+  assert.deepEqual(errors, []);
+});

@@ -1,0 +1,152 @@
+// Presets, importing files (picker and drag-and-drop), exports, and links that reproduce a drawing.
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { after, before, test } from 'node:test';
+import { PRESETS } from '../../web/presets.js';
+import { SCREENSHOTS, launch, openPage, readStats, settle } from './harness.mjs';
+
+let harness;
+let page;
+let errors;
+
+before(async () => {
+  harness = await launch();
+  ({ page, errors } = await openPage(harness.context, `${harness.baseUrl}/web/`));
+  assert.equal(await settle(page), 'done');
+});
+
+after(async () => {
+  await harness?.close();
+});
+
+// A pentagon with a triangular hole, 1-based, with comments: Triangle's .poly format.
+const PENTAGON = `# pentagon with a hole
+8 2 0 0
+1 0 0
+2 10 0
+3 13 8
+4 5 13
+5 -3 8
+6 4 4
+7 6 4
+8 5 6
+8 0
+1 1 2
+2 2 3
+3 3 4
+4 4 5
+5 5 1
+6 6 7
+7 7 8
+8 8 6
+1
+1 5 4.6
+`;
+
+test('every preset loads and meshes', async () => {
+  const counts = new Map();
+  for (const preset of PRESETS) {
+    await page.selectOption('#preset', preset.id);
+    assert.equal(await settle(page), 'done', preset.id);
+    const stats = await readStats(page);
+    assert.ok(stats.triangles > 0, `${preset.id}: ${stats.triangles} triangles`);
+    assert.ok(stats.vertices >= preset.build().points.length / 2, preset.id);
+    counts.set(preset.id, stats.triangles);
+  }
+  assert.equal(new Set(counts.values()).size, PRESETS.length, `distinct meshes: ${[...counts]}`);
+  await page.selectOption('#preset', 'two-sizes');
+  await settle(page);
+  await page.selectOption('#color-mode', 'region');
+  assert.match(await page.locator('#legend').textContent(), /attribute 1.*attribute 2/);
+  await page.screenshot({ path: `${SCREENSHOTS}preset-two-sizes-regions.png` });
+  await page.selectOption('#color-mode', 'angle');
+});
+
+test('a .poly file chosen in the file picker is read by the package and meshed', async () => {
+  await page.setInputFiles('#file-input', { name: 'pentagon-with-hole.poly', mimeType: 'text/plain', buffer: Buffer.from(PENTAGON) });
+  assert.equal(await settle(page), 'done');
+  assert.match(await page.locator('#status').textContent(), /Meshed/);
+  const stats = await readStats(page);
+  assert.ok(stats.vertices >= 8 && stats.triangles > 0);
+  assert.equal(stats.complete, 'yes');
+  // The hole survived the import: the URL holds one hole seed at (5, 4.6).
+  const drawing = await page.evaluate(async () => (await import('./url-state.js')).decodeDrawing(location.hash));
+  assert.deepEqual(drawing.holes, [5, 4.6]);
+  assert.equal(drawing.points.length, 16);
+  assert.equal(drawing.segments.length, 16);
+});
+
+test('a broken file is reported, and the drawing kept', async () => {
+  const before = await page.evaluate(() => location.hash);
+  await page.setInputFiles('#file-input', { name: 'broken.poly', mimeType: 'text/plain', buffer: Buffer.from('3 2 0 0\n1 0 0\n2 1\n') });
+  await page.waitForFunction(() => document.getElementById('status').dataset.kind === 'error');
+  assert.match(await page.locator('#status').textContent(), /Could not load broken\.poly/);
+  assert.match(await page.locator('#notices .error').textContent(), /PARSE_ERROR/);
+  assert.equal(await page.evaluate(() => location.hash), before);
+});
+
+test('a .json file dropped on the canvas is loaded', async () => {
+  const json = JSON.stringify({ points: [0, 0, 4, 0, 4, 3, 0, 3], segments: [0, 1, 1, 2, 2, 3, 3, 0] });
+  const dataTransfer = await page.evaluateHandle((text) => {
+    const transfer = new DataTransfer();
+    transfer.items.add(new File([text], 'rectangle.json', { type: 'application/json' }));
+    return transfer;
+  }, json);
+  await page.dispatchEvent('#canvas-wrap', 'dragover', { dataTransfer });
+  assert.equal(await page.locator('#drop-hint').isVisible(), true);
+  await page.dispatchEvent('#canvas-wrap', 'drop', { dataTransfer });
+  assert.equal(await settle(page), 'done');
+  const drawing = await page.evaluate(async () => (await import('./url-state.js')).decodeDrawing(location.hash));
+  assert.deepEqual(drawing.points, [0, 0, 4, 0, 4, 3, 0, 3]);
+  assert.equal(await page.locator('#drop-hint').isHidden(), true);
+});
+
+async function exportFile(button) {
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click(button)]);
+  return { name: download.suggestedFilename(), bytes: readFileSync(await download.path()) };
+}
+
+test('exports .poly, .json, .svg and .png downloads of the mesh', async () => {
+  await page.setInputFiles('#file-input', { name: 'pentagon-with-hole.poly', mimeType: 'text/plain', buffer: Buffer.from(PENTAGON) });
+  assert.equal(await settle(page), 'done');
+  const stats = await readStats(page);
+
+  const poly = await exportFile('#export-poly');
+  assert.equal(poly.name, 'ruppert-mesh.poly');
+  const lines = poly.bytes.toString('utf8').split('\n').map((l) => l.replace(/#.*/, '').trim()).filter(Boolean);
+  assert.equal(Number(lines[0].split(/\s+/)[0]), stats.vertices, `.poly header: ${lines[0]}`);
+
+  const json = JSON.parse((await exportFile('#export-json')).bytes.toString('utf8'));
+  assert.equal(json.triangles.length, 3 * stats.triangles, 'three vertex indices per triangle');
+
+  const svg = (await exportFile('#export-svg')).bytes.toString('utf8');
+  assert.match(svg, /<svg[\s>]/);
+
+  const png = await exportFile('#export-png');
+  assert.deepEqual([...png.bytes.subarray(0, 8)], [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
+
+  // The exported .poly reads back in (through the same file picker).
+  await page.setInputFiles('#file-input', { name: 'again.poly', mimeType: 'text/plain', buffer: poly.bytes });
+  assert.equal(await settle(page), 'done');
+  assert.ok((await readStats(page)).vertices >= stats.vertices);
+});
+
+test('the URL reproduces the drawing and its parameters', async () => {
+  await page.selectOption('#preset', 'skyline');
+  await page.fill('#min-angle', '25');
+  await page.press('#min-angle', 'Tab');
+  await page.selectOption('#placement', 'circumcenter');
+  assert.equal(await settle(page), 'done');
+  const stats = await readStats(page);
+  const other = await harness.context.newPage();
+  await other.goto(page.url());
+  assert.equal(await settle(other), 'done');
+  assert.deepEqual(await readStats(other), stats);
+  assert.equal(await other.inputValue('#min-angle'), '25');
+  assert.equal(await other.inputValue('#placement'), 'circumcenter');
+  await other.close();
+});
+
+test('no console errors', () => {
+  assert.deepEqual(errors, []);
+});

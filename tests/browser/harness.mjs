@@ -1,0 +1,103 @@
+// Shared setup of the browser tests: the page's own static server on a free port, and Debian's
+// Chromium driven by playwright-core (which never downloads a browser) with a fresh profile.
+import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+import { startServer } from '../../web/serve.mjs';
+
+export const CHROMIUM = process.env.CHROMIUM_PATH ?? '/usr/bin/chromium';
+export const SCREENSHOTS = fileURLToPath(new URL('./screenshots/', import.meta.url));
+
+const ARGS = [
+  '--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking',
+  '--disable-component-update', '--disable-quic', '--no-first-run', '--disable-sync',
+];
+
+/** Starts the server and the browser. Returns { baseUrl, context, close() }. */
+export async function launch() {
+  const { server, url } = await startServer({ port: 0, quiet: true });
+  const baseUrl = url.replace(/\/web\/$/, '');
+  const profile = mkdtempSync(join(tmpdir(), 'ruppert-chromium-'));
+  // launchPersistentContext is how a fresh --user-data-dir is given to Chromium.
+  const context = await chromium.launchPersistentContext(profile, {
+    executablePath: CHROMIUM,
+    headless: true,
+    args: ARGS,
+    viewport: { width: 1280, height: 800 },
+    acceptDownloads: true,
+  });
+  mkdirSync(SCREENSHOTS, { recursive: true });
+  return {
+    baseUrl,
+    context,
+    async close() {
+      await context.close();
+      server.closeAllConnections?.();
+      await new Promise((resolve) => server.close(resolve));
+      rmSync(profile, { recursive: true, force: true });
+    },
+  };
+}
+
+/** Opens a page and collects console errors and uncaught exceptions in `errors`. */
+export async function openPage(context, url, { width = 1280, height = 800 } = {}) {
+  const page = await context.newPage();
+  await page.setViewportSize({ width, height });
+  const errors = [];
+  page.on('console', (message) => {
+    if (message.type() === 'error') errors.push(`console: ${message.text()}`);
+  });
+  page.on('pageerror', (error) => errors.push(`pageerror: ${error.message}`));
+  await page.goto(url);
+  return { page, errors };
+}
+
+const SETTLED = ['done', 'error', 'cancelled', 'empty'];
+
+/**
+ * Waits until the page has no meshing queued or running, and returns the final state
+ * ('done', 'error', 'cancelled' or 'empty'). The page sets body[data-mesh-state] to 'queued'
+ * synchronously on every change, so this cannot return a result older than the last action.
+ */
+export async function settle(page, timeout = 20_000) {
+  await page.waitForFunction((states) => states.includes(document.body.dataset.meshState), SETTLED, { timeout });
+  return page.evaluate(() => document.body.dataset.meshState);
+}
+
+/** The statistics panel as numbers. */
+export async function readStats(page) {
+  return page.evaluate(() => {
+    const text = (id) => document.getElementById(id).textContent;
+    const number = (id) => Number(text(id).replace(/[^0-9.\-e]/g, ''));
+    return {
+      vertices: number('stat-vertices'),
+      triangles: number('stat-triangles'),
+      minAngle: number('stat-min-angle'),
+      maxAngle: number('stat-max-angle'),
+      complete: text('stat-complete'),
+    };
+  });
+}
+
+/** Clicks at canvas pixel (x, y), relative to the canvas's top-left corner. */
+export async function clickCanvas(page, x, y, options = {}) {
+  const box = await page.locator('#canvas').boundingBox();
+  await page.mouse.click(box.x + x, box.y + y, options);
+}
+
+export async function moveOnCanvas(page, x, y) {
+  const box = await page.locator('#canvas').boundingBox();
+  await page.mouse.move(box.x + x, box.y + y);
+}
+
+/** A cheap fingerprint of the canvas pixels, to see that the picture changed. */
+export function canvasFingerprint(page) {
+  return page.evaluate(() => {
+    const url = document.getElementById('canvas').toDataURL('image/png');
+    let hash = 0;
+    for (let i = 0; i < url.length; i++) hash = (hash * 31 + url.charCodeAt(i)) | 0;
+    return `${url.length}:${hash}`;
+  });
+}

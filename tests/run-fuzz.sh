@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (tests/fuzz) with clang++ into build-fuzz and runs each for SECONDS.
+#
+# Usage: tests/run-fuzz.sh [SECONDS]      (default 60 per target)
+#        FUZZ_TARGETS="fuzz_mesh" tests/run-fuzz.sh 300
+# Seed corpora are rebuilt at every run in tests/fuzz/corpus-<target>/ (gitignored) from the
+# shared data folder when present and from the repository's fixtures; new inputs libFuzzer finds
+# are kept there between runs. Crashes, sanitizer reports, timeouts (a hang is a finding: -timeout=10)
+# and out-of-memory (-rss_limit_mb=4096) make the script exit non-zero; the reproducers are written
+# to build-fuzz/findings/.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="$root/build-fuzz"
+seconds="${1:-60}"
+targets=(${FUZZ_TARGETS:-fuzz_read_poly fuzz_read_json fuzz_mesh})
+
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ -DRUPPERT_FUZZ=ON
+cmake --build "$build" -j2 --target "${targets[@]}"
+
+data=""
+for candidate in /work/shared/data "$root/../shared/data"; do
+  if [[ -d "$candidate" ]]; then data="$candidate"; break; fi
+done
+if [[ -z "$data" ]]; then echo "run-fuzz: shared data folder not found: seeding from the repository only"; fi
+
+# Seeds: small files only (libFuzzer prefers many short inputs; -max_len bounds the rest).
+seed() {  # seed DIR FILE...
+  local dir="$1"; shift
+  mkdir -p "$dir"
+  local f
+  for f in "$@"; do
+    [[ -f "$f" && $(stat -c %s "$f") -le 16384 ]] || continue
+    cp "$f" "$dir/$(basename "$(dirname "$f")")-$(basename "$f")"
+  done
+}
+corpus() { echo "$root/tests/fuzz/corpus-$1"; }
+shopt -s nullglob
+seed "$(corpus fuzz_read_poly)" ${data:+"$data"/*.poly "$data"/crossing/*.poly} \
+  "$root"/tests/fixtures/*.poly "$root"/tests/fixtures/io/*.poly "$root"/tests/fixtures/io/*.node \
+  "$root"/tests/hostile/*.poly "$root"/tests/hostile/*.node
+seed "$(corpus fuzz_read_json)" "$root"/tests/fixtures/io/*.json "$root"/tests/hostile/*.json
+# JSON seeds from the shared PLCs, written by the native CLI when a build of it is at hand.
+cli=""
+for candidate in "$root/build-native/core/ruppert" "$root/build-sanitize/core/ruppert"; do
+  if [[ -x "$candidate" ]]; then cli="$candidate"; break; fi
+done
+if [[ -n "$cli" && -n "$data" ]]; then
+  for f in "$data"/*.poly; do
+    [[ $(stat -c %s "$f") -le 8192 ]] || continue
+    "$cli" --quiet --min-angle 0 --format json -o "$(corpus fuzz_read_json)/shared-$(basename "$f" .poly)" "$f" \
+      >/dev/null 2>&1 || true
+  done
+fi
+# fuzz_mesh: 4 option bytes, then either .poly text (flag 64) or the binary PLC layout.
+mesh_corpus="$(corpus fuzz_mesh)"
+mkdir -p "$mesh_corpus"
+for f in ${data:+"$data"/*.poly} "$root"/tests/fixtures/*.poly "$root"/tests/hostile/*.poly; do
+  [[ $(stat -c %s "$f") -le 4096 ]] || continue
+  for angle in 0 30; do  # \x1e = 30 degrees; flags \x40 = text mode
+    { printf "\\x$(printf %02x "$angle")\\x00\\x40\\x00"; cat "$f"; } >"$mesh_corpus/$angle-$(basename "$f")"
+  done
+done
+# A unit square with a hole and a region, in int8 coordinates (binary layout, 30 degrees).
+printf '\x1e\x00\x00\x00\x04\x00\x00\x0a\x00\x0a\x0a\x00\x0a\x04\x00\x01\x01\x02\x02\x03\x03\x00\x00\x00' \
+  >"$mesh_corpus/binary-square"
+
+findings="$build/findings"
+mkdir -p "$findings"
+status=0
+for target in "${targets[@]}"; do
+  echo "run-fuzz: $target for $seconds s"
+  log="$build/$target.log"
+  target_status=0
+  # -max_len: bigger than every seed, small enough to keep executions fast.
+  "$build/tests/fuzz/$target" "$(corpus "$target")" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 \
+    -max_len=16384 -print_final_stats=1 -artifact_prefix="$findings/$target-" >"$log" 2>&1 || target_status=$?
+  grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb|^#[0-9]+ *DONE" "$log" || true
+  if [[ $target_status -ne 0 ]]; then
+    echo "run-fuzz: $target FAILED (status $target_status); log: $log; reproducers in $findings"
+    grep -E "ERROR|FINDING|SUMMARY|Test unit written" "$log" | head -20 || true
+    status=1
+  fi
+done
+exit "$status"
