@@ -18,6 +18,7 @@ export const ERROR_CODES = Object.freeze([
   'TOO_LARGE',
   'CANCELLED',
   'MALFORMED_INPUT',
+  'EMPTY_DOMAIN',
   'INTERNAL',
 ]);
 

@@ -6,6 +6,7 @@
 // cuts the corners off. Inside the domain the corners are never visible, so they cannot change the
 // constrained Delaunay triangulation there.
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "mesh_state.h"
@@ -25,12 +26,24 @@ void buildDelaunay(MeshState& m) {
   if (in.insertionOrder.size() < 3)
     throw Error(ErrorCode::DegenerateInput, "the input has " + std::to_string(in.insertionOrder.size()) +
                                                 " distinct point(s); at least 3 not on one line are needed");
-  // Scaled coordinates lie in (-2, 2); corners at +-8 are exact and far enough away that no
-  // circumcircle of input points reaches past them in a way that matters (they are cut off anyway).
-  m.boxFirst = m.addVertex(-8, -8, VertexKind::Unused, -1);
-  m.addVertex(8, -8, VertexKind::Unused, -1);
-  m.addVertex(8, 8, VertexKind::Unused, -1);
-  m.addVertex(-8, 8, VertexKind::Unused, -1);
+  // Constrained variant: scaled coordinates lie in (-2, 2); corners at +-8 are exact and the domain
+  // never sees them. Bounding-box variant (Ruppert's original): the box is part of what is refined,
+  // so it is a square 1.5 times the points' extent around them, as in §6.3.
+  double lo[2] = {-8, -8}, hi[2] = {8, 8};
+  if (m.options->variant == Variant::BoundingBox) {
+    double minX = HUGE_VAL, minY = HUGE_VAL, maxX = -HUGE_VAL, maxY = -HUGE_VAL;
+    for (std::uint32_t v : in.insertionOrder) {
+      minX = std::min(minX, in.xy[2 * v]), maxX = std::max(maxX, in.xy[2 * v]);
+      minY = std::min(minY, in.xy[2 * v + 1]), maxY = std::max(maxY, in.xy[2 * v + 1]);
+    }
+    const double half = 0.75 * std::max(maxX - minX, maxY - minY);
+    const double cx = 0.5 * (minX + maxX), cy = 0.5 * (minY + maxY);
+    lo[0] = cx - half, lo[1] = cy - half, hi[0] = cx + half, hi[1] = cy + half;
+  }
+  m.boxFirst = m.addVertex(lo[0], lo[1], VertexKind::Unused, -1);
+  m.addVertex(hi[0], lo[1], VertexKind::Unused, -1);
+  m.addVertex(hi[0], hi[1], VertexKind::Unused, -1);
+  m.addVertex(lo[0], hi[1], VertexKind::Unused, -1);
   Triangulation& t = m.tri;
   const std::uint32_t c = m.boxFirst;
   for (auto* v : {&t.tv, &t.twin}) v->reserve(3 * (2 * std::size_t(n) + 8));

@@ -18,10 +18,12 @@
 namespace ruppert::detail {
 namespace {
 
-void flood(Triangulation& t, std::uint32_t seed, std::vector<std::uint8_t>& out, std::uint8_t value) {
+// Marks the triangles reachable from seed without crossing a constrained edge; returns how many.
+std::size_t flood(Triangulation& t, std::uint32_t seed, std::vector<std::uint8_t>& out, std::uint8_t value) {
   std::vector<std::uint32_t> stack{seed};
   const std::uint8_t before = out[seed];
   out[seed] = value;
+  std::size_t count = 1;
   while (!stack.empty()) {
     const std::uint32_t u = stack.back();
     stack.pop_back();
@@ -32,8 +34,10 @@ void flood(Triangulation& t, std::uint32_t seed, std::vector<std::uint8_t>& out,
       if (out[w] != before) continue;
       out[w] = value;
       stack.push_back(w);
+      ++count;
     }
   }
+  return count;
 }
 
 // The triangle containing a seed, or an error if the seed sits on a constrained edge or a vertex.
@@ -65,7 +69,7 @@ std::string at(const MeshState& m, double x, double y) {
 
 enum : std::uint8_t { kUnknown = 0, kOutside = 1 };
 
-// Marks every triangle outside the domain (exterior, holes, even nesting depth) as kOutside.
+// Marks every triangle outside what the segments enclose (exterior, even nesting depth) as kOutside.
 std::vector<std::uint8_t> outsideTriangles(MeshState& m) {
   Triangulation& t = m.tri;
   const std::uint32_t slots = t.slotCount();
@@ -80,7 +84,6 @@ std::vector<std::uint8_t> outsideTriangles(MeshState& m) {
         break;
       }
   }
-  const Plc& plc = *m.plc;
   const auto& holes = m.input.holes;
   if (holes.empty() && m.options->autoHoles) {
     // Depth by 0-1 BFS from the exterior; crossing a constrained edge costs one.
@@ -104,6 +107,16 @@ std::vector<std::uint8_t> outsideTriangles(MeshState& m) {
     for (std::uint32_t s = 0; s < slots; ++s)
       if (t.alive(s) && state[s] == kUnknown && depth[s] % 2 == 0) state[s] = kOutside;
   }
+  return state;
+}
+
+// Removes what the hole seeds reach; a seed outside the domain is reported and ignored. Returns the
+// index of the seed that removed the last triangle, or -1 while something remains.
+std::int64_t eatHoles(MeshState& m, std::vector<std::uint8_t>& state) {
+  Triangulation& t = m.tri;
+  const Plc& plc = *m.plc;
+  std::size_t remaining = static_cast<std::size_t>(std::count(state.begin(), state.end(), kUnknown));
+  const auto& holes = m.input.holes;
   for (std::size_t k = 0; k < holes.size() / 2; ++k) {
     const std::string what = "holes[" + std::to_string(k) + "] at " + at(m, holes[2 * k], holes[2 * k + 1]);
     const std::uint32_t s = seedTriangle(m, holes[2 * k], holes[2 * k + 1], ErrorCode::HoleOnSegment, what);
@@ -113,25 +126,34 @@ std::vector<std::uint8_t> outsideTriangles(MeshState& m) {
       m.notices.push_back(std::move(n));
       continue;
     }
-    flood(t, s, state, kOutside);
+    remaining -= flood(t, s, state, kOutside);
+    if (remaining == 0) return static_cast<std::int64_t>(k);
   }
-  return state;
+  return -1;
 }
 
 void classifyTriangles(MeshState& m) {
   Triangulation& t = m.tri;
   const std::size_t noticesBefore = m.notices.size();
   std::vector<std::uint8_t> state = outsideTriangles(m);
-  const bool empty = std::find(state.begin(), state.end(), kUnknown) == state.end();
-  if (empty && !m.plc->segments.empty() && !m.options->convexHull) {
-    // Open polylines only (like Triangle's box.poly): an empty mesh helps nobody. Mesh the hull,
-    // with the segments inside it, and say so.
+  const bool nothingEnclosed = std::find(state.begin(), state.end(), kUnknown) == state.end();
+  std::int64_t emptiedBy = nothingEnclosed ? -1 : eatHoles(m, state);
+  if ((nothingEnclosed || emptiedBy >= 0) && !m.plc->segments.empty() && !m.options->convexHull) {
+    // Open polylines only (like Triangle's box.poly), or holes inside them: an empty mesh helps
+    // nobody. Mesh the hull, with the segments inside it, and say so.
     m.notices.resize(noticesBefore);
     insertHull(m);
     Notice n{NoticeKind::NothingEnclosed, -1, -1, 0, 0,
-             "the segments and holes leave no region enclosed; the convex hull of the points was meshed instead"};
+             "the segments leave no region enclosed; the convex hull of the points was meshed instead"};
     m.notices.push_back(std::move(n));
     state = outsideTriangles(m);
+    emptiedBy = eatHoles(m, state);
+  }
+  if (emptiedBy >= 0) {
+    const auto& h = m.input.holes;
+    throw Error(ErrorCode::EmptyDomain, "holes[" + std::to_string(emptiedBy) + "] at " +
+                                            at(m, h[2 * emptiedBy], h[2 * emptiedBy + 1]) +
+                                            " removes the whole domain: the boundary around it is not closed");
   }
   const std::uint32_t slots = t.slotCount();
   const Plc& plc = *m.plc;
@@ -157,9 +179,27 @@ void classifyTriangles(MeshState& m) {
     }
   }
 
-  // Delete everything outside; the corners of the box go with it.
+  if (m.options->variant == Variant::BoundingBox) {
+    // Ruppert's original algorithm refines the whole box; the domain is cut out at the end.
+    m.inDomain.assign(slots, 0);
+    for (std::uint32_t s = 0; s < slots; ++s) {
+      m.inDomain[s] = t.alive(s) && state[s] != kOutside;
+      if (!m.inDomain[s]) m.maxArea[s] = 0, m.attribute[s] = 0;
+    }
+    return;
+  }
+  m.inDomain.assign(slots, 0);
+  for (std::uint32_t s = 0; s < slots; ++s) m.inDomain[s] = t.alive(s) && state[s] != kOutside;
+  removeOutside(m);
+}
+
+void removeOutside(MeshState& m) {
+  // Delete every triangle outside the domain; the corners of the box go with them. Afterwards every
+  // boundary edge of what remains is a constrained edge.
+  Triangulation& t = m.tri;
+  const std::uint32_t slots = t.slotCount();
   for (std::uint32_t s = 0; s < slots; ++s) {
-    if (!t.alive(s) || state[s] != kOutside) continue;
+    if (!t.alive(s) || m.inDomain[s]) continue;
     for (std::uint32_t i = 0; i < 3; ++i) {
       const std::uint32_t g = t.twin[3 * s + i];
       if (g != kNone) t.twin[g] = kNone;
@@ -167,6 +207,7 @@ void classifyTriangles(MeshState& m) {
     }
     t.killTriangle(s);
   }
+  m.inDomain.clear();
   for (std::uint32_t v = 0; v < t.vertexCount(); ++v) t.vtri[v] = kNone;
   for (std::uint32_t s = 0; s < slots; ++s)
     if (t.alive(s))

@@ -19,6 +19,7 @@ const char* errorCodeName(ErrorCode code) {
     case ErrorCode::TooLarge: return "TOO_LARGE";
     case ErrorCode::Cancelled: return "CANCELLED";
     case ErrorCode::MalformedInput: return "MALFORMED_INPUT";
+    case ErrorCode::EmptyDomain: return "EMPTY_DOMAIN";
     case ErrorCode::Internal: return "INTERNAL";
   }
   // A value outside the enum (a cast from a bad integer): still a valid C string, never null.

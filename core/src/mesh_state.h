@@ -23,6 +23,8 @@ struct MeshState {
   // Per triangle slot, valid after classification.
   std::vector<double> attribute;
   std::vector<double> maxArea;               // scaled; 0 = none
+  // Bounding-box variant only: triangles outside the domain stay (and are refined) until the end.
+  std::vector<std::uint8_t> inDomain;        // per slot: 1 inside the domain; empty in the CDT variant
   std::size_t segmentCount() const { return plc->segments.size() / 2; }
 
   std::uint32_t addVertex(double x, double y, VertexKind k, std::int32_t segment) {
@@ -30,10 +32,8 @@ struct MeshState {
     onSegment.push_back(segment);
     return tri.addVertex(x, y);
   }
-  // Index of internal vertex v in the output, where the four box corners are left out.
-  std::uint32_t outputIndex(std::uint32_t v) const {
-    return v < inputCount || boxFirst == kNone ? v : v - 4;
-  }
+  // Per internal vertex: its index in Mesh::points, or kNone if left out (built by the output stage).
+  std::vector<std::uint32_t> outputMap;
 };
 
 // Stages, in order.
@@ -41,5 +41,6 @@ void buildDelaunay(MeshState& m);          // box corners + every distinct input
 void insertHull(MeshState& m);             // convex hull edges as constraints (no segments / convexHull)
 void insertSegments(MeshState& m);         // input segments, repairing crossings and overlaps
 void classifyTriangles(MeshState& m);      // remove exterior and holes; regions' attributes and areas
+void removeOutside(MeshState& m);          // bounding-box variant: drop what lies outside, after refining
 
 }  // namespace ruppert::detail

@@ -27,9 +27,6 @@ namespace {
 void checkOptions(const Options& o) {
   if (!(o.minAngle >= 0 && o.minAngle <= 60))
     fail(ErrorCode::InvalidOption, "minAngle = " + formatNumber(o.minAngle) + " is outside [0, 60] degrees");
-  if (o.variant == Variant::BoundingBox)
-    fail(ErrorCode::InvalidOption,
-         "variant 'box' (Ruppert's original refinement inside a bounding box) is not available yet; use 'cdt'");
   if (std::isnan(o.maxArea) || o.maxArea < 0)
     fail(ErrorCode::InvalidOption,
          "maxArea = " + formatNumber(o.maxArea) + " must be a positive area (or 0 for no bound)");

@@ -111,7 +111,11 @@ class Refiner {
   int lowestBucket_ = kBuckets;
   std::vector<std::uint8_t> corner_;  // per vertex: acute input corner (concentric shells apply)
   std::vector<std::uint32_t> newTris_, parents_;
-  std::vector<double> inheritA_, inheritM_;
+  struct Inherited {
+    double attribute, maxArea;
+    std::uint8_t inDomain;
+  };
+  std::vector<Inherited> inherit_;
 
   // ---- set-up --------------------------------------------------------------------------------
   void markCorners() {
@@ -302,16 +306,20 @@ class Refiner {
   bool insertAt(std::uint32_t v, const Location& loc) {
     if (!t_.insertVertex(v, loc, &newTris_, &parents_)) return false;
     ++inserted_;
+    const bool box = !m_.inDomain.empty();
     if (m_.attribute.size() < t_.slotCount()) {
       m_.attribute.resize(t_.slotCount(), 0);
       m_.maxArea.resize(t_.slotCount(), 0);
+      if (box) m_.inDomain.resize(t_.slotCount(), 0);
     }
-    inheritA_.resize(newTris_.size());
-    inheritM_.resize(newTris_.size());
+    // Two passes: a new triangle may reuse the slot of another new triangle's parent.
+    inherit_.resize(newTris_.size());
     for (std::size_t k = 0; k < newTris_.size(); ++k)
-      inheritA_[k] = m_.attribute[parents_[k]], inheritM_[k] = m_.maxArea[parents_[k]];
-    for (std::size_t k = 0; k < newTris_.size(); ++k)
-      m_.attribute[newTris_[k]] = inheritA_[k], m_.maxArea[newTris_[k]] = inheritM_[k];
+      inherit_[k] = {m_.attribute[parents_[k]], m_.maxArea[parents_[k]], box ? m_.inDomain[parents_[k]] : std::uint8_t(1)};
+    for (std::size_t k = 0; k < newTris_.size(); ++k) {
+      m_.attribute[newTris_[k]] = inherit_[k].attribute, m_.maxArea[newTris_[k]] = inherit_[k].maxArea;
+      if (box) m_.inDomain[newTris_[k]] = inherit_[k].inDomain;
+    }
     for (std::uint32_t s : newTris_) {
       checkTriangle(s);
       for (std::uint32_t i = 0; i < 3; ++i) checkSubsegment(3 * s + i);

@@ -17,16 +17,23 @@ Mesh assemble(MeshState& m) {
   Mesh mesh;
   const Triangulation& t = m.tri;
   const Plc& plc = *m.plc;
-  const std::uint32_t corners = m.boxFirst == kNone ? 0 : 4;
-  auto outIndex = [&](std::uint32_t v) { return m.outputIndex(v); };
-  const std::uint32_t outVertices = t.vertexCount() - corners;
+  // Output numbering: input points keep their indices; Steiner vertices that some triangle uses
+  // follow in creation order; box corners and Steiner vertices in no triangle (refused insertions,
+  // or outside the domain in the bounding-box variant) are left out.
+  m.outputMap.assign(t.vertexCount(), kNone);
+  std::uint32_t outVertices = m.inputCount;
+  for (std::uint32_t v = 0; v < t.vertexCount(); ++v) {
+    if (v < m.inputCount) m.outputMap[v] = v;
+    else if (t.vtri[v] != kNone && m.kind[v] != VertexKind::Unused) m.outputMap[v] = outVertices++;
+  }
+  auto outIndex = [&](std::uint32_t v) { return m.outputMap[v]; };
 
-  mesh.points.resize(2 * outVertices);
+  mesh.points.resize(2 * std::size_t(outVertices));
   mesh.vertexKinds.resize(outVertices);
   const double inv = 1.0 / m.input.scale;  // a power of two: exact
   for (std::uint32_t v = 0; v < t.vertexCount(); ++v) {
-    if (corners && v >= m.boxFirst && v < m.boxFirst + 4) continue;
     const std::uint32_t o = outIndex(v);
+    if (o == kNone) continue;
     if (v < m.inputCount) {
       mesh.points[2 * o] = plc.points[2 * v];  // bit-identical to the input
       mesh.points[2 * o + 1] = plc.points[2 * v + 1];
@@ -41,8 +48,9 @@ Mesh assemble(MeshState& m) {
     mesh.pointMarkers.resize(outVertices, 0);
     for (std::uint32_t v = 0; v < m.inputCount && v < plc.pointMarkers.size(); ++v)
       mesh.pointMarkers[v] = plc.pointMarkers[v];
-    for (std::uint32_t v = m.inputCount + corners; v < t.vertexCount(); ++v)
-      mesh.pointMarkers[outIndex(v)] = m.onSegment[v] >= 0 || m.kind[v] == VertexKind::Intersection ? 1 : 0;
+    for (std::uint32_t v = m.inputCount; v < t.vertexCount(); ++v)
+      if (outIndex(v) != kNone)
+        mesh.pointMarkers[outIndex(v)] = m.onSegment[v] >= 0 || m.kind[v] == VertexKind::Intersection ? 1 : 0;
   }
 
   std::vector<std::uint32_t> slotToTri(t.slotCount(), kNone);
@@ -111,9 +119,17 @@ Mesh triangulate(const Plc& plc, const Options& options) {
   buildDelaunay(m);
   if (plc.segments.empty() || options.convexHull) insertHull(m);
   insertSegments(m);
+  if (options.variant == Variant::BoundingBox) {
+    // The box's sides are boundary edges of the triangulation; they bound what is refined.
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const std::uint32_t h = m.tri.findEdge(m.boxFirst + i, m.boxFirst + (i + 1) % 4);
+      m.tri.con[h] = kHullEdge;
+    }
+  }
   classifyTriangles(m);
   RefineOutcome outcome;
   if (refinementRequested(m)) outcome = refine(m);
+  if (!m.inDomain.empty()) removeOutside(m);
   Mesh mesh = assemble(m);
   // The chapter's exemptions (§6.6) are reported but do not make the mesh incomplete.
   mesh.complete = true;
@@ -121,12 +137,13 @@ Mesh triangulate(const Plc& plc, const Options& options) {
     if (r.kind != ReasonKind::SmallInputAngle && r.kind != ReasonKind::SeditiousEdge) mesh.complete = false;
   mesh.reasons = std::move(outcome.reasons);
   mesh.events = std::move(outcome.events);
-  auto outIndex = [&](std::uint32_t v) { return m.outputIndex(v); };
+  // Events keep vertices that are not in the output (see Event::vertex) as kNoVertex.
+  auto outIndex = [&](std::uint32_t v) { return v < m.outputMap.size() ? m.outputMap[v] : kNone; };
   const double inv = 1.0 / m.input.scale;
   for (Event& e : mesh.events) {
     e.vertex = outIndex(e.vertex), e.a = outIndex(e.a), e.b = outIndex(e.b);
     e.t0 = outIndex(e.t0), e.t1 = outIndex(e.t1), e.t2 = outIndex(e.t2);
-    if (e.by >= 0) e.by = outIndex(static_cast<std::uint32_t>(e.by));
+    if (e.by >= 0) e.by = outIndex(static_cast<std::uint32_t>(e.by)) == kNone ? -1 : outIndex(static_cast<std::uint32_t>(e.by));
     e.x *= inv, e.y *= inv, e.cx *= inv, e.cy *= inv;
   }
   mesh.stats.rejectedCircumcenters = outcome.rejected;

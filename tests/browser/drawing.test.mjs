@@ -151,6 +151,20 @@ test('select, drag and delete a vertex; zoom with the wheel', async () => {
   await page.waitForTimeout(100);
   assert.notEqual(await canvasFingerprint(page), picture, 'the wheel zoomed');
   assert.equal(await page.evaluate(() => location.hash), hash, 'zooming does not change the drawing');
+
+  // Pan: middle-button drag, and Space + left drag (over a vertex: it must not move).
+  for (const pan of ['middle', 'space']) {
+    const before = await canvasFingerprint(page);
+    await page.mouse.move(box.x + 120, box.y + 90);
+    if (pan === 'space') await page.keyboard.down('Space');
+    await page.mouse.down({ button: pan === 'middle' ? 'middle' : 'left' });
+    await page.mouse.move(box.x + 200, box.y + 150, { steps: 4 });
+    await page.mouse.up({ button: pan === 'middle' ? 'middle' : 'left' });
+    if (pan === 'space') await page.keyboard.up('Space');
+    await page.waitForTimeout(100);
+    assert.notEqual(await canvasFingerprint(page), before, `${pan} drag panned`);
+    assert.equal(await page.evaluate(() => location.hash), hash, `${pan} drag left the drawing alone`);
+  }
   await page.keyboard.press('f');
 });
 

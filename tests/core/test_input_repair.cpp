@@ -341,6 +341,15 @@ TEST_CASE("hole seeds outside the domain or on a segment", "[repair]") {
     plc.holes = {1, 1};
     CHECK(expectError(plc).code() == ErrorCode::HoleOnSegment);
   }
+  SECTION("inside an open inner polyline, reaching everything: EmptyDomain naming the hole") {
+    Plc plc;
+    plc.points = {0, 0, 10, 0, 10, 10, 0, 10, 4, 4, 6, 4, 4, 6};
+    plc.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 6, 4};
+    plc.holes = {5, 5};
+    const auto e = expectError(plc);
+    CHECK(e.code() == ErrorCode::EmptyDomain);
+    CHECK(mentionsWord(e.what(), "holes[0]"));
+  }
 }
 
 TEST_CASE("non-finite coordinates are rejected naming the item", "[repair]") {

@@ -178,3 +178,39 @@ TEST_CASE("thin slivers and extreme scales refine validly", "[refine]") {
     CHECK(mesh.complete);
   }
 }
+
+TEST_CASE("Ruppert's original bounding-box variant gives valid meshes of the domain", "[refine]") {
+  const auto files = ruppert_test::polyFilesIn(ruppert_test::sharedDataDir());
+  if (files.empty()) WARN("shared data folder not found: refinement fixtures skipped");
+  for (const auto& file : files) {
+    const Plc plc = ruppert::readFile(file);
+    Options o;
+    o.minAngle = 20;
+    o.variant = ruppert::Variant::BoundingBox;
+    const Mesh mesh = refineChecked(plc, o, file);
+    INFO(file);
+    CHECK(mesh.complete);
+  }
+}
+
+TEST_CASE("a comb over-refines in a box but not with a CDT (Figure 6.16)", "[refine]") {
+  // Teeth 1 wide and 3 long, 0.05 apart: the narrow gaps are outside the domain. Only a mesh of the
+  // whole box has to resolve them.
+  Plc plc;
+  const int teeth = 6;
+  const double pitch = 1.05;
+  plc.points = {0, 0, pitch * (teeth - 1) + 1, 0};
+  for (int k = teeth - 1; k >= 0; --k) {
+    const double x0 = pitch * k, x1 = x0 + 1;
+    for (double p : {x1, 1.0, x1, 4.0, x0, 4.0, x0, 1.0}) plc.points.push_back(p);
+  }
+  plc.points.resize(plc.points.size() - 2);  // the last tooth's foot is the base's start
+  const std::uint32_t n = static_cast<std::uint32_t>(plc.points.size() / 2);
+  for (std::uint32_t i = 0; i < n; ++i) plc.segments.insert(plc.segments.end(), {i, (i + 1) % n});
+  Options o;
+  o.minAngle = 20;
+  const Mesh cdt = refineChecked(plc, o, "comb, constrained");
+  o.variant = ruppert::Variant::BoundingBox;
+  const Mesh box = refineChecked(plc, o, "comb, box");
+  CHECK(box.triangles.size() > cdt.triangles.size());
+}

@@ -145,6 +145,9 @@ test('every error code of the core is reachable from JavaScript', async () => {
   reach(() => mesher.triangulate({ points: [0, 0, 1, 1, 2, 2] }, q), 'DEGENERATE_INPUT');
   reach(() => mesher.triangulate({ ...square, holes: [0.5, 0] }, q), 'HOLE_ON_SEGMENT', /holes\[0\]/);
   reach(() => mesher.triangulate({ ...square, regions: [{ x: 0.5, y: 0.5, maxArea: NaN }] }, q), 'INVALID_REGION', /regions\[0\]/);
+  // An open inner polyline: the hole seed reaches the whole square.
+  reach(() => mesher.triangulate({ points: [0, 0, 10, 0, 10, 10, 0, 10, 4, 4, 6, 4, 4, 6],
+    segments: [0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 6, 4], holes: [5, 5] }, q), 'EMPTY_DOMAIN', /holes\[0\]/);
   reach(() => mesher.triangulate(square, { minAngle: 60.5 }), 'INVALID_OPTION', /minAngle/);
   reach(() => mesher.parsePoly('4 2 0 0\n1 0 0\n'), 'PARSE_ERROR', /<poly>:\d/);
   reach(() => mesher.parsePoly('1000000000000 2 0 0\n'), 'TOO_LARGE');

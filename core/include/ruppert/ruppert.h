@@ -29,6 +29,7 @@ namespace ruppert {
 // ---------------------------------------------------------------------------------------------
 inline constexpr std::int32_t kNoNeighbor = -1;      // neighbors[]: edge on the domain boundary
 inline constexpr std::int32_t kNoInputSegment = -1;  // segmentIds[]: convex-hull edge added by us
+inline constexpr std::uint32_t kNoVertex = 0xFFFFFFFFu;  // Event vertex ids not in the output
 inline constexpr std::uint64_t kAutoSteinerBudget = std::numeric_limits<std::uint64_t>::max();
 
 // ---------------------------------------------------------------------------------------------
@@ -48,6 +49,7 @@ enum class ErrorCode : int {
   TooLarge,                // a count that cannot be allocated (e.g. 10^12 points declared)
   Cancelled,               // the progress callback asked to stop (only thrown before a mesh exists)
   MalformedInput,          // wrong shape: odd-length coordinate arrays, non-integer indices, wrong types
+  EmptyDomain,             // hole seeds remove everything (a hole's boundary is not closed)
   Internal,                // a bug: please report the input
 };
 
@@ -197,6 +199,8 @@ enum class EventKind : std::uint8_t {
   Rejected = 3,      // circumcenter (cx, cy) of (t0,t1,t2) encroached subsegment (a,b): it was split at (x, y)
 };
 
+// Vertex ids are indices into Mesh::points, or kNoVertex for a vertex that is not in the output (in
+// the bounding-box variant, vertices inserted outside the domain are removed with it).
 struct Event {
   EventKind kind;
   std::uint32_t vertex = 0;          // id of the vertex inserted
@@ -208,7 +212,8 @@ struct Event {
 };
 
 struct Mesh {
-  std::vector<double> points;             // input points first, same indices; then new vertices
+  std::vector<double> points;             // input points first, same indices; then the new vertices
+                                          // that triangles use, in the order they were inserted
   std::vector<std::uint32_t> triangles;   // 3 vertex indices per triangle, CCW
   std::vector<std::int32_t> neighbors;    // 3 per triangle, see conventions; kNoNeighbor on the boundary
   std::vector<std::uint32_t> segments;    // 2 per subsegment: every input segment is a chain of these

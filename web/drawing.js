@@ -1,0 +1,189 @@
+// The drawing: a planar straight-line graph the user edits, plus the meshing options.
+//
+// Plain data (flat number arrays, like the package's Plc) so that it copies cheaply for undo,
+// serialises into the URL and converts to the mesher's input without translation.
+//
+//   points   x0, y0, x1, y1, ...        world coordinates, y up
+//   segments a0, b0, a1, b1, ...        point indices
+//   holes    hx0, hy0, ...              hole seeds
+//   regions  [{ x, y, attribute, maxArea }]
+//   options  { minAngle, maxArea, placement, maxSteiner }   maxArea/maxSteiner: null = none/automatic
+
+export const DEFAULT_OPTIONS = Object.freeze({ minAngle: 30, maxArea: null, placement: 'offcenter', maxSteiner: null });
+
+export function emptyDrawing(options = DEFAULT_OPTIONS) {
+  return { points: [], segments: [], holes: [], regions: [], options: { ...options } };
+}
+
+export function cloneDrawing(d) {
+  return {
+    points: d.points.slice(),
+    segments: d.segments.slice(),
+    holes: d.holes.slice(),
+    regions: d.regions.map((r) => ({ ...r })),
+    options: { ...d.options },
+  };
+}
+
+export const pointCount = (d) => d.points.length / 2;
+
+/** The mesher's input (Plc of index.d.ts). */
+export function toPlc(d) {
+  return {
+    points: Float64Array.from(d.points),
+    segments: Uint32Array.from(d.segments),
+    holes: Float64Array.from(d.holes),
+    regions: d.regions.map((r) => ({
+      x: r.x, y: r.y, attribute: r.attribute ?? 0, ...(r.maxArea > 0 ? { maxArea: r.maxArea } : {}),
+    })),
+  };
+}
+
+/** The mesher's options (TriangulateOptions of index.d.ts) for the worker. */
+export function toMeshOptions(d, { trace = false } = {}) {
+  const o = d.options;
+  const options = { minAngle: o.minAngle, placement: o.placement, trace };
+  if (o.maxArea > 0) options.maxArea = o.maxArea;
+  if (Number.isInteger(o.maxSteiner) && o.maxSteiner >= 0) options.maxSteiner = o.maxSteiner;
+  return options;
+}
+
+/** A drawing from a parsed file (ParsedPlc), keeping the given options. */
+export function fromPlc(plc, options = DEFAULT_OPTIONS) {
+  return {
+    points: Array.from(plc.points ?? []),
+    segments: Array.from(plc.segments ?? []),
+    holes: Array.from(plc.holes ?? []),
+    regions: (plc.regions ?? []).map((r) => ({
+      x: r.x, y: r.y, attribute: r.attribute ?? 0, maxArea: r.maxArea > 0 ? r.maxArea : null,
+    })),
+    options: { ...options },
+  };
+}
+
+export function addPoint(d, x, y) {
+  d.points.push(x, y);
+  return d.points.length / 2 - 1;
+}
+
+/** Adds segment (a, b) unless it is degenerate or already present. Returns whether it was added. */
+export function addSegment(d, a, b) {
+  if (a === b) return false;
+  for (let i = 0; i < d.segments.length; i += 2) {
+    const s = d.segments[i];
+    const t = d.segments[i + 1];
+    if ((s === a && t === b) || (s === b && t === a)) return false;
+  }
+  d.segments.push(a, b);
+  return true;
+}
+
+/** Removes point i, the segments that use it, and renumbers the later points. */
+export function removePoint(d, i) {
+  d.points.splice(2 * i, 2);
+  const kept = [];
+  for (let k = 0; k < d.segments.length; k += 2) {
+    const a = d.segments[k];
+    const b = d.segments[k + 1];
+    if (a === i || b === i) continue;
+    kept.push(a > i ? a - 1 : a, b > i ? b - 1 : b);
+  }
+  d.segments = kept;
+}
+
+export function removeSegment(d, k) {
+  d.segments.splice(2 * k, 2);
+}
+
+/** Item addresses used by selection and hit testing. */
+export const Item = Object.freeze({ POINT: 'point', SEGMENT: 'segment', HOLE: 'hole', REGION: 'region' });
+
+export function itemPosition(d, item) {
+  switch (item.kind) {
+    case Item.POINT: return { x: d.points[2 * item.index], y: d.points[2 * item.index + 1] };
+    case Item.HOLE: return { x: d.holes[2 * item.index], y: d.holes[2 * item.index + 1] };
+    case Item.REGION: return { x: d.regions[item.index].x, y: d.regions[item.index].y };
+    default: return null;
+  }
+}
+
+export function moveItem(d, item, x, y) {
+  switch (item.kind) {
+    case Item.POINT: d.points[2 * item.index] = x; d.points[2 * item.index + 1] = y; break;
+    case Item.HOLE: d.holes[2 * item.index] = x; d.holes[2 * item.index + 1] = y; break;
+    case Item.REGION: d.regions[item.index].x = x; d.regions[item.index].y = y; break;
+    default: break;
+  }
+}
+
+export function removeItem(d, item) {
+  switch (item.kind) {
+    case Item.POINT: removePoint(d, item.index); break;
+    case Item.SEGMENT: removeSegment(d, item.index); break;
+    case Item.HOLE: d.holes.splice(2 * item.index, 2); break;
+    case Item.REGION: d.regions.splice(item.index, 1); break;
+    default: break;
+  }
+}
+
+function distanceToSegmentSquared(px, py, ax, ay, bx, by) {
+  const dx = bx - ax;
+  const dy = by - ay;
+  const length2 = dx * dx + dy * dy;
+  let t = length2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / length2 : 0;
+  t = Math.max(0, Math.min(1, t));
+  const ex = ax + t * dx - px;
+  const ey = ay + t * dy - py;
+  return ex * ex + ey * ey;
+}
+
+/**
+ * The item nearest to (x, y) within `radius` world units: seeds and points first (they sit on
+ * top), then segments. `kinds` restricts the search.
+ */
+export function hitTest(d, x, y, radius, kinds = [Item.HOLE, Item.REGION, Item.POINT, Item.SEGMENT]) {
+  const r2 = radius * radius;
+  let best = null;
+  let bestDistance = r2;
+  const consider = (kind, index, distance2) => {
+    if (distance2 <= bestDistance) {
+      best = { kind, index };
+      bestDistance = distance2;
+    }
+  };
+  const near = (px, py) => (px - x) ** 2 + (py - y) ** 2;
+  if (kinds.includes(Item.HOLE)) {
+    for (let i = 0; i < d.holes.length / 2; i++) consider(Item.HOLE, i, near(d.holes[2 * i], d.holes[2 * i + 1]));
+  }
+  if (kinds.includes(Item.REGION)) {
+    d.regions.forEach((r, i) => consider(Item.REGION, i, near(r.x, r.y)));
+  }
+  if (kinds.includes(Item.POINT)) {
+    for (let i = 0; i < d.points.length / 2; i++) consider(Item.POINT, i, near(d.points[2 * i], d.points[2 * i + 1]));
+  }
+  if (best === null && kinds.includes(Item.SEGMENT)) {
+    for (let k = 0; k < d.segments.length / 2; k++) {
+      const a = d.segments[2 * k];
+      const b = d.segments[2 * k + 1];
+      consider(Item.SEGMENT, k, distanceToSegmentSquared(x, y, d.points[2 * a], d.points[2 * a + 1],
+        d.points[2 * b], d.points[2 * b + 1]));
+    }
+  }
+  return best;
+}
+
+/** Axis-aligned bounds of everything drawn, or null when empty. */
+export function drawingBounds(d) {
+  let minX = Infinity;
+  let minY = Infinity;
+  let maxX = -Infinity;
+  let maxY = -Infinity;
+  const add = (x, y) => {
+    minX = Math.min(minX, x); minY = Math.min(minY, y);
+    maxX = Math.max(maxX, x); maxY = Math.max(maxY, y);
+  };
+  for (let i = 0; i < d.points.length; i += 2) add(d.points[i], d.points[i + 1]);
+  for (let i = 0; i < d.holes.length; i += 2) add(d.holes[i], d.holes[i + 1]);
+  for (const r of d.regions) add(r.x, r.y);
+  return minX <= maxX ? { minX, minY, maxX, maxY } : null;
+}

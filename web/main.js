@@ -1,0 +1,589 @@
+// The page: wires the drawing, the editor, the worker mesher, the renderer and the panels.
+//
+// Data flow: an edit changes `drawing` -> history + URL hash -> MeshScheduler (debounced, in a
+// worker) -> onMeshed: renderer, stats, stepper, notices, postMessage to a host.
+import { DEFAULT_OPTIONS, cloneDrawing, drawingBounds, emptyDrawing, fromPlc, pointCount, toMeshOptions, toPlc, Item } from './drawing.js';
+import { Editor, TOOL_HINTS } from './editor.js';
+import { isEmbedded, listenForLoad, postError, postMeshed } from './embed.js';
+import { canvasBlob, download, exportText, parseInput, parsePolyText } from './files.js';
+import { History } from './history.js';
+import { MeshScheduler } from './mesh-scheduler.js';
+import { findTriangle, triangleShape } from './mesh-geometry.js';
+import { DEFAULT_PRESET, PRESETS, presetDrawing } from './presets.js';
+import { Renderer, legendEntries } from './render.js';
+import { showStats } from './stats-panel.js';
+import { Stepper } from './stepper.js';
+import { MAX_HASH_LENGTH, decodeDrawing, encodeDrawing } from './url-state.js';
+import { View } from './view.js';
+
+const $ = (id) => document.getElementById(id);
+const VERTEX_KINDS = ['input', 'segment split', 'interior (circumcenter)', 'off-center', 'intersection', 'unused'];
+const PROGRESS_DELAY_MS = 200;
+
+const canvas = $('canvas');
+const view = new View();
+const renderer = new Renderer(canvas);
+const embedded = isEmbedded();
+if (embedded) document.body.classList.add('embed');
+
+const app = {
+  canvas,
+  view,
+  drawing: emptyDrawing(),
+  snap: false,
+  mesh: null,           // the latest mesh, or null
+  meshedPlc: null,      // the input it was made from (for exports)
+  notices: [],
+  colorMode: 'angle',
+  stepMode: false,
+  hoverTriangle: -1,
+  writtenHash: '',
+  viewMoved: false,     // set by the editor on pan and zoom
+  changed: ({ commit }) => {
+    if (commit) $('preset').value = '';  // an edit on the canvas: no longer the preset
+    changed(commit);
+  },
+  redraw: () => scheduleDraw(),
+  undo: () => restore(history.undo()),
+  redo: () => restore(history.redo()),
+  regionSeed: () => regionSeedFields(),
+  hover: (world) => hover(world),
+  setTool: (tool) => setTool(tool),
+  shortcut: (key) => shortcut(key),
+};
+const history = new History(app.drawing);
+const editor = new Editor(app);
+
+// ---------------------------------------------------------------- status
+function setStatus(text, kind = 'info') {
+  const status = $('status');
+  status.textContent = text;
+  status.dataset.kind = kind;
+}
+
+function showNotices(notices, error = null) {
+  const list = $('notices');
+  const items = notices.map((n) => {
+    const li = document.createElement('li');
+    li.className = 'notice';
+    li.textContent = `${n.kind}: ${n.message}`;
+    return li;
+  });
+  if (error) {
+    const li = document.createElement('li');
+    li.className = 'error';
+    li.textContent = `${error.code ?? error.name}: ${error.message}`;
+    items.unshift(li);
+  }
+  list.replaceChildren(...items);
+}
+
+// ---------------------------------------------------------------- drawing
+let drawQueued = false;
+function scheduleDraw() {
+  if (drawQueued) return;
+  drawQueued = true;
+  requestAnimationFrame(() => {
+    drawQueued = false;
+    draw();
+  });
+}
+
+function draw() {
+  const step = app.stepMode && app.mesh?.events ? { mesh: app.mesh, events: app.mesh.events, index: stepper.index } : null;
+  renderer.draw({
+    view,
+    drawing: app.drawing,
+    colorMode: app.colorMode,
+    snap: app.snap,
+    selection: editor.selection,
+    hoverItem: editor.hoverItem,
+    hoverTriangle: app.hoverTriangle,
+    pendingChain: editor.pendingChain(),
+    notices: app.notices,
+    step,
+  });
+}
+
+function resize() {
+  const wrap = $('canvas-wrap');
+  const rect = wrap.getBoundingClientRect();
+  view.resize(rect.width, rect.height);
+  renderer.resize(rect.width, rect.height, window.devicePixelRatio || 1);
+  // Until the user pans or zooms, keep the whole drawing in view as the layout settles.
+  if (!app.viewMoved) view.fit(drawingBounds(app.drawing));
+  draw();
+}
+new ResizeObserver(resize).observe($('canvas-wrap'));
+
+function fitView() {
+  app.viewMoved = false;
+  view.fit(drawingBounds(app.drawing));
+  scheduleDraw();
+}
+
+// ---------------------------------------------------------------- edits, history, URL
+function changed(commit) {
+  if (commit) {
+    history.commit(app.drawing);
+    writeHash();
+  }
+  updateButtons();
+  remesh();
+  scheduleDraw();
+}
+
+/** Replaces the drawing (preset, file, link, message); `fit` re-centres the view. */
+function setDrawing(drawing, { commit = true, fit = true } = {}) {
+  app.drawing = cloneDrawing(drawing);
+  editor.reset();
+  syncOptionFields();
+  if (commit) history.commit(app.drawing);
+  else history.reset(app.drawing);
+  writeHash();
+  if (fit) fitView();
+  updateButtons();
+  remesh(0);
+  scheduleDraw();
+}
+
+function restore(drawing) {
+  if (drawing === null) return;
+  app.drawing = drawing;
+  $('preset').value = '';
+  editor.reset();
+  syncOptionFields();
+  writeHash();
+  updateButtons();
+  remesh(0);
+  scheduleDraw();
+}
+
+function updateButtons() {
+  $('undo').disabled = !history.canUndo;
+  $('redo').disabled = !history.canRedo;
+  $('delete-selected').disabled = editor.selection === null;
+}
+
+function writeHash() {
+  const hash = encodeDrawing(app.drawing);
+  const base = `${location.pathname}${location.search}`;
+  if (hash.length > MAX_HASH_LENGTH) {
+    app.writtenHash = '';
+    window.history.replaceState(null, '', base);
+    return;
+  }
+  app.writtenHash = `#${hash}`;
+  if (location.hash !== app.writtenHash) window.history.replaceState(null, '', `${base}#${hash}`);
+}
+
+function readHash() {
+  try {
+    return decodeDrawing(location.hash);
+  } catch (error) {
+    setStatus(`The link's drawing could not be read (${error.message}); showing the default drawing.`, 'error');
+    return null;
+  }
+}
+
+window.addEventListener('hashchange', () => {
+  if (location.hash === app.writtenHash) return;
+  const drawing = readHash();
+  if (drawing) setDrawing(drawing);
+});
+
+// ---------------------------------------------------------------- meshing
+let progressTimer = null;
+
+const scheduler = new MeshScheduler({
+  onStart() {
+    document.body.dataset.meshState = 'meshing';
+    clearTimeout(progressTimer);
+    // Show the progress indicator only for work that takes a noticeable time.
+    progressTimer = setTimeout(() => {
+      $('progress').hidden = false;
+      $('cancel').hidden = false;
+      $('progress-text').textContent = 'Meshing…';
+    }, PROGRESS_DELAY_MS);
+  },
+  onProgress(p) {
+    $('progress-text').textContent =
+      `Meshing… ${p.insertedVertices.toLocaleString('en-US')} vertices inserted, ${p.triangles.toLocaleString('en-US')} triangles, worst angle ${p.worstAngle.toFixed(1)}°`;
+  },
+  onResult(mesh, request) {
+    stopProgress();
+    app.mesh = mesh;
+    app.meshedPlc = request.plc;
+    app.notices = mesh.notices;
+    app.hoverTriangle = -1;
+    renderer.setMesh(mesh);
+    showStats(statElements, mesh);
+    showNotices(mesh.notices);
+    updateLegend();
+    stepper.setEvents(app.stepMode ? mesh.events : null);
+    const s = mesh.stats;
+    const summary = `${s.triangles.toLocaleString('en-US')} triangles, ${s.vertices.toLocaleString('en-US')} vertices, ` +
+      `min angle ${s.minAngle.toFixed(2)}° in ${s.milliseconds.toFixed(1)} ms`;
+    if (mesh.notices.length) setStatus(`Meshed with ${mesh.notices.length} repair(s) of the input: ${summary}.`, 'warn');
+    else if (!mesh.complete) setStatus(`Meshed, not complete (see Mesh panel): ${summary}.`, 'warn');
+    else setStatus(`Meshed: ${summary}.`, 'ok');
+    // A result that a newer, still debounced request will replace is shown, but not 'done'.
+    document.body.dataset.meshState = scheduler.queued ? 'queued' : 'done';
+    document.body.dataset.meshCount = String(Number(document.body.dataset.meshCount ?? 0) + 1);
+    postMeshed(mesh);
+    scheduleDraw();
+  },
+  onError(error) {
+    stopProgress();
+    if (error?.code === 'CANCELLED') {
+      setStatus('Meshing cancelled. Change the drawing or a parameter to mesh again.', 'warn');
+      document.body.dataset.meshState = scheduler.queued ? 'queued' : 'cancelled';
+      return;
+    }
+    clearMesh();
+    setStatus(`Cannot mesh this drawing: ${error?.message ?? error}`, 'error');
+    showNotices([], error);
+    document.body.dataset.meshState = scheduler.queued ? 'queued' : 'error';
+    postError(error);
+    scheduleDraw();
+  },
+});
+
+function stopProgress() {
+  clearTimeout(progressTimer);
+  $('progress').hidden = true;
+  $('cancel').hidden = true;
+  $('progress-text').textContent = '';
+}
+
+function clearMesh() {
+  app.mesh = null;
+  app.meshedPlc = null;
+  app.notices = [];
+  app.hoverTriangle = -1;
+  $('hover-info').hidden = true;
+  renderer.setMesh(null);
+  showStats(statElements, null);
+  stepper.setEvents(null);
+  updateLegend();
+}
+
+function remesh(delay) {
+  if (pointCount(app.drawing) < 3) {
+    scheduler.clear();
+    stopProgress();
+    clearMesh();
+    showNotices([]);
+    setStatus(pointCount(app.drawing) === 0
+      ? 'Empty drawing: pick a tool and click on the canvas, or choose a preset.'
+      : 'Add at least three points (not all on one line) to mesh.', 'info');
+    document.body.dataset.meshState = 'empty';
+    return;
+  }
+  // 'queued' until the result of this very request arrives (tests and hosts can wait for 'done').
+  document.body.dataset.meshState = 'queued';
+  scheduler.request(toPlc(app.drawing), toMeshOptions(app.drawing, { trace: app.stepMode }), delay);
+}
+
+$('cancel').addEventListener('click', () => scheduler.cancel());
+
+// ---------------------------------------------------------------- hover
+function hover(world) {
+  const info = $('hover-info');
+  if (world === null || app.mesh === null) {
+    info.hidden = true;
+    if (app.hoverTriangle !== -1) { app.hoverTriangle = -1; }
+    scheduleDraw();
+    return;
+  }
+  const t = findTriangle(app.mesh, world.x, world.y, app.hoverTriangle);
+  app.hoverTriangle = t;
+  if (t < 0) {
+    info.hidden = true;
+  } else {
+    const shape = triangleShape(app.mesh, t);
+    const kinds = shape.vertices.map((v) => `${v} ${VERTEX_KINDS[app.mesh.vertexKinds[v]] ?? '?'}`);
+    const attribute = app.mesh.triangleAttributes[t];
+    info.textContent = `Triangle ${t}: angles ${shape.angles.map((a) => `${a.toFixed(2)}°`).join(', ')}; ` +
+      `radius-edge ratio ${shape.radiusEdge.toFixed(3)}; area ${shape.area.toPrecision(4)}; ` +
+      `vertices ${kinds.join(', ')}${attribute ? `; attribute ${attribute}` : ''}`;
+    info.hidden = false;
+  }
+  scheduleDraw();
+}
+
+// ---------------------------------------------------------------- tools and shortcuts
+function setTool(tool) {
+  editor.setTool(tool);
+  for (const button of document.querySelectorAll('[data-tool]')) {
+    button.setAttribute('aria-pressed', String(button.dataset.tool === tool));
+  }
+  $('tool-hint').textContent = TOOL_HINTS[tool];
+  canvas.style.cursor = tool === 'select' ? 'grab' : 'crosshair';
+}
+for (const button of document.querySelectorAll('[data-tool]')) {
+  button.addEventListener('click', () => setTool(button.dataset.tool));
+}
+
+function shortcut(key) {
+  switch (key) {
+    case 'f': fitView(); return true;
+    case 'g': $('snap').checked = !$('snap').checked; setSnap(); return true;
+    case 's': $('step-mode').checked = !$('step-mode').checked; setStepMode(); return true;
+    case 'k': if (app.stepMode) stepper.toggle(); return app.stepMode;
+    case ',': if (app.stepMode) stepper.step(-1); return app.stepMode;
+    case '.': if (app.stepMode) stepper.step(1); return app.stepMode;
+    case 'home': if (app.stepMode) stepper.go(0); return app.stepMode;
+    case 'end': if (app.stepMode) stepper.go(stepper.count - 1); return app.stepMode;
+    default: return false;
+  }
+}
+
+$('undo').addEventListener('click', () => app.undo());
+$('redo').addEventListener('click', () => app.redo());
+$('delete-selected').addEventListener('click', () => editor.deleteSelection());
+$('clear').addEventListener('click', () => setDrawing(emptyDrawing(app.drawing.options), { fit: false }));
+$('fit').addEventListener('click', fitView);
+function setSnap() {
+  app.snap = $('snap').checked;
+  scheduleDraw();
+}
+$('snap').addEventListener('change', setSnap);
+// The editor changes the selection on clicks; keep the Delete button's state in step.
+canvas.addEventListener('pointerup', () => { updateButtons(); syncRegionFields(); });
+canvas.addEventListener('pointerdown', () => queueMicrotask(() => { updateButtons(); syncRegionFields(); }));
+
+// ---------------------------------------------------------------- parameters
+const minAngleRange = $('min-angle-range');
+const minAngleNumber = $('min-angle');
+
+function readNumber(input) {
+  if (input.value.trim() === '') return null;
+  const value = Number(input.value);
+  return Number.isFinite(value) ? value : null;
+}
+
+function syncOptionFields() {
+  const o = app.drawing.options;
+  minAngleRange.value = String(o.minAngle);
+  minAngleNumber.value = String(o.minAngle);
+  $('max-area').value = o.maxArea > 0 ? String(o.maxArea) : '';
+  $('placement').value = o.placement;
+  $('max-steiner').value = Number.isInteger(o.maxSteiner) ? String(o.maxSteiner) : '';
+}
+
+function setMinAngle(value, commit) {
+  if (value === null || value < 0 || value > 60) {
+    minAngleNumber.setAttribute('aria-invalid', 'true');
+    setStatus('Min angle must be a number from 0 to 60 degrees.', 'error');
+    return;
+  }
+  minAngleNumber.removeAttribute('aria-invalid');
+  app.drawing.options.minAngle = value;
+  changed(commit);
+}
+// The slider re-meshes while it moves and records an undo step once it rests (browsers differ in
+// when they fire 'change' for keyboard input, so a short quiet period also commits).
+let sliderCommit = null;
+minAngleRange.addEventListener('input', () => {
+  minAngleNumber.value = minAngleRange.value;
+  setMinAngle(Number(minAngleRange.value), false);
+  clearTimeout(sliderCommit);
+  sliderCommit = setTimeout(() => changed(true), 600);
+});
+minAngleRange.addEventListener('change', () => {
+  clearTimeout(sliderCommit);
+  setMinAngle(Number(minAngleRange.value), true);
+});
+minAngleNumber.addEventListener('input', () => {
+  const value = readNumber(minAngleNumber);
+  if (value !== null && value >= 0 && value <= 60) minAngleRange.value = String(value);
+  setMinAngle(value, false);
+});
+minAngleNumber.addEventListener('change', () => setMinAngle(readNumber(minAngleNumber), true));
+
+$('max-area').addEventListener('change', () => {
+  const value = readNumber($('max-area'));
+  app.drawing.options.maxArea = value !== null && value > 0 ? value : null;
+  changed(true);
+});
+$('placement').addEventListener('change', () => {
+  app.drawing.options.placement = $('placement').value;
+  changed(true);
+});
+$('max-steiner').addEventListener('change', () => {
+  const value = readNumber($('max-steiner'));
+  app.drawing.options.maxSteiner = value !== null && value >= 0 ? Math.floor(value) : null;
+  changed(true);
+});
+
+// Region seed fields: values for new seeds, and the selected seed's values.
+function regionSeedFields() {
+  const attribute = readNumber($('region-attribute')) ?? 0;
+  const maxArea = readNumber($('region-max-area'));
+  return { attribute, maxArea: maxArea !== null && maxArea > 0 ? maxArea : null };
+}
+function syncRegionFields() {
+  const item = editor.selection;
+  if (item?.kind !== Item.REGION) return;
+  const region = app.drawing.regions[item.index];
+  if (!region) return;
+  $('region-attribute').value = String(region.attribute ?? 0);
+  $('region-max-area').value = region.maxArea > 0 ? String(region.maxArea) : '';
+}
+for (const id of ['region-attribute', 'region-max-area']) {
+  $(id).addEventListener('change', () => {
+    const item = editor.selection;
+    if (item?.kind !== Item.REGION || !app.drawing.regions[item.index]) return;
+    Object.assign(app.drawing.regions[item.index], regionSeedFields());
+    changed(true);
+  });
+}
+
+// ---------------------------------------------------------------- display and step mode
+function updateLegend() {
+  const entries = legendEntries(app.colorMode, app.mesh);
+  $('legend').replaceChildren(...entries.map(({ colour, label }) => {
+    const item = document.createElement('span');
+    item.className = 'legend-item';
+    const swatch = document.createElement('span');
+    swatch.className = 'swatch';
+    swatch.style.background = colour;
+    item.append(swatch, label);
+    return item;
+  }));
+}
+$('color-mode').addEventListener('change', () => {
+  app.colorMode = $('color-mode').value;
+  updateLegend();
+  scheduleDraw();
+});
+
+const stepper = new Stepper({
+  first: $('step-first'), back: $('step-back'), play: $('step-play'), forward: $('step-forward'),
+  last: $('step-last'), scrub: $('step-scrub'), speed: $('step-speed'), info: $('step-info'),
+}, () => scheduleDraw());
+
+function setStepMode() {
+  app.stepMode = $('step-mode').checked;
+  $('stepper').hidden = !app.stepMode;
+  if (!app.stepMode) stepper.pause();
+  // Events are recorded only on request (options.trace): mesh again.
+  remesh(0);
+  scheduleDraw();
+}
+$('step-mode').addEventListener('change', setStepMode);
+
+const statElements = {
+  vertices: $('stat-vertices'), triangles: $('stat-triangles'), minAngle: $('stat-min-angle'),
+  maxAngle: $('stat-max-angle'), complete: $('stat-complete'), time: $('stat-time'),
+  reasons: $('reasons'), histogram: $('histogram'),
+};
+
+// ---------------------------------------------------------------- presets, files, exports
+for (const preset of PRESETS) {
+  const option = document.createElement('option');
+  option.value = preset.id;
+  option.textContent = preset.name;
+  $('preset').append(option);
+}
+$('preset').addEventListener('change', () => {
+  const drawing = presetDrawing($('preset').value);
+  if (drawing) setDrawing({ ...drawing, options: { ...app.drawing.options } });
+});
+
+/** Marks the page busy while a file or message is read, so that nothing waits on an old mesh. */
+function loading() {
+  const previous = document.body.dataset.meshState;
+  document.body.dataset.meshState = 'loading';
+  return () => { if (document.body.dataset.meshState === 'loading') document.body.dataset.meshState = previous; };
+}
+
+async function loadFile(file) {
+  const failed = loading();
+  try {
+    const text = await file.text();
+    const plc = await parseInput(text, file.name);
+    setDrawing(fromPlc(plc, app.drawing.options));
+    setStatus(`Loaded ${file.name}: ${plc.points.length / 2} points, ${plc.segments.length / 2} segments.`, 'ok');
+  } catch (error) {
+    failed();
+    setStatus(`Could not load ${file.name}: ${error.message}`, 'error');
+    showNotices([], error);
+  }
+}
+$('file-input').addEventListener('change', () => {
+  const file = $('file-input').files[0];
+  if (file) loadFile(file);
+  $('file-input').value = '';
+});
+
+const wrap = $('canvas-wrap');
+wrap.addEventListener('dragover', (e) => {
+  if (![...(e.dataTransfer?.types ?? [])].includes('Files')) return;
+  e.preventDefault();
+  $('drop-hint').hidden = false;
+});
+wrap.addEventListener('dragleave', () => { $('drop-hint').hidden = true; });
+wrap.addEventListener('drop', (e) => {
+  e.preventDefault();
+  $('drop-hint').hidden = true;
+  const file = e.dataTransfer?.files?.[0];
+  if (file) loadFile(file);
+});
+
+async function exportAs(format) {
+  if (app.mesh === null) {
+    setStatus('Nothing to export: the drawing has no mesh yet.', 'error');
+    return;
+  }
+  try {
+    if (format === 'png') {
+      draw();
+      download(await canvasBlob(canvas), 'ruppert-mesh.png', 'png');
+    } else {
+      download(await exportText(format, app.mesh, app.meshedPlc), `ruppert-mesh.${format}`, format);
+    }
+    setStatus(`Exported ruppert-mesh.${format}.`, 'ok');
+  } catch (error) {
+    setStatus(`Export failed: ${error.message}`, 'error');
+  }
+}
+for (const format of ['poly', 'json', 'svg', 'png']) $(`export-${format}`).addEventListener('click', () => exportAs(format));
+
+$('copy-link').addEventListener('click', async () => {
+  writeHash();
+  if (app.writtenHash === '') {
+    setStatus('This drawing is too large to fit in a link; export a .poly file instead.', 'warn');
+    return;
+  }
+  try {
+    await navigator.clipboard.writeText(location.href);
+    setStatus('Link copied: it reproduces this drawing and its parameters.', 'ok');
+  } catch {
+    setStatus(`Copy this link: ${location.href}`, 'info');
+  }
+});
+
+// ---------------------------------------------------------------- embedding
+listenForLoad(async ({ poly, options }) => {
+  const failed = loading();
+  try {
+    const plc = await parsePolyText(poly, '<ruppert:load>');
+    const merged = { ...DEFAULT_OPTIONS, ...app.drawing.options };
+    if (options.minAngle !== undefined) merged.minAngle = Math.min(60, Math.max(0, options.minAngle));
+    if (options.maxArea !== undefined) merged.maxArea = options.maxArea > 0 ? options.maxArea : null;
+    setDrawing(fromPlc(plc, merged));
+  } catch (error) {
+    failed();
+    setStatus(`Could not load the posted drawing: ${error.message}`, 'error');
+    postError(error);
+  }
+});
+
+// ---------------------------------------------------------------- start
+const initial = readHash() ?? { ...presetDrawing(DEFAULT_PRESET), options: { ...DEFAULT_OPTIONS } };
+if (!location.hash) $('preset').value = DEFAULT_PRESET;
+setTool('polyline');
+setDrawing(initial, { commit: false });
+updateLegend();

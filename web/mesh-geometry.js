@@ -1,0 +1,90 @@
+// Per-triangle measures for colouring and hovering, and finding the triangle under the pointer.
+
+const DEG = 180 / Math.PI;
+
+/** The three angles (degrees) of triangle t, at its vertices 0, 1, 2, and its edge lengths. */
+export function triangleShape(mesh, t) {
+  const p = mesh.points;
+  const i = mesh.triangles[3 * t];
+  const j = mesh.triangles[3 * t + 1];
+  const k = mesh.triangles[3 * t + 2];
+  const ax = p[2 * i]; const ay = p[2 * i + 1];
+  const bx = p[2 * j]; const by = p[2 * j + 1];
+  const cx = p[2 * k]; const cy = p[2 * k + 1];
+  // Edge lengths opposite each vertex.
+  const a = Math.hypot(cx - bx, cy - by);
+  const b = Math.hypot(ax - cx, ay - cy);
+  const c = Math.hypot(bx - ax, by - ay);
+  // Angles from the law of cosines via atan2 of (|cross|, dot): accurate also for tiny angles.
+  const angleAt = (ox, oy, ux, uy, vx, vy) => {
+    const x1 = ux - ox; const y1 = uy - oy; const x2 = vx - ox; const y2 = vy - oy;
+    return Math.atan2(Math.abs(x1 * y2 - y1 * x2), x1 * x2 + y1 * y2) * DEG;
+  };
+  const angles = [angleAt(ax, ay, bx, by, cx, cy), angleAt(bx, by, cx, cy, ax, ay), angleAt(cx, cy, ax, ay, bx, by)];
+  const doubleArea = Math.abs((bx - ax) * (cy - ay) - (by - ay) * (cx - ax));
+  // Circumradius R = abc / (4 * area); radius-edge ratio = R / shortest edge.
+  const circumradius = doubleArea > 0 ? (a * b * c) / (2 * doubleArea) : Infinity;
+  const radiusEdge = circumradius / Math.min(a, b, c);
+  return { vertices: [i, j, k], angles, area: doubleArea / 2, radiusEdge };
+}
+
+/** Smallest angle (degrees) of every triangle, for colouring. */
+export function minAngles(mesh) {
+  const n = mesh.triangles.length / 3;
+  const result = new Float32Array(n);
+  const p = mesh.points;
+  const tri = mesh.triangles;
+  for (let t = 0; t < n; t++) {
+    const i = 2 * tri[3 * t]; const j = 2 * tri[3 * t + 1]; const k = 2 * tri[3 * t + 2];
+    const ux = p[j] - p[i]; const uy = p[j + 1] - p[i + 1];
+    const vx = p[k] - p[j]; const vy = p[k + 1] - p[j + 1];
+    const wx = p[i] - p[k]; const wy = p[i + 1] - p[k + 1];
+    // The smallest angle is opposite the shortest edge: sin(angle) = 2*area / (product of the two others).
+    const a2 = ux * ux + uy * uy; const b2 = vx * vx + vy * vy; const c2 = wx * wx + wy * wy;
+    const cross = Math.abs(ux * vy - uy * vx);
+    let s;
+    if (a2 <= b2 && a2 <= c2) s = cross / Math.sqrt(b2 * c2);
+    else if (b2 <= c2) s = cross / Math.sqrt(a2 * c2);
+    else s = cross / Math.sqrt(a2 * b2);
+    result[t] = Math.asin(Math.min(1, s)) * DEG;
+  }
+  return result;
+}
+
+function contains(mesh, t, x, y) {
+  const p = mesh.points;
+  const tri = mesh.triangles;
+  const i = 2 * tri[3 * t]; const j = 2 * tri[3 * t + 1]; const k = 2 * tri[3 * t + 2];
+  // Counter-clockwise triangles: inside when left of (or on) all three edges.
+  const side = (ax, ay, bx, by) => (bx - ax) * (y - ay) - (by - ay) * (x - ax);
+  return side(p[i], p[i + 1], p[j], p[j + 1]) >= 0 &&
+    side(p[j], p[j + 1], p[k], p[k + 1]) >= 0 &&
+    side(p[k], p[k + 1], p[i], p[i + 1]) >= 0;
+}
+
+/**
+ * The triangle containing (x, y), or -1. Walks from `hint` through neighbours (fast while the
+ * pointer moves a little); a walk can stop at a hole or the boundary, then every triangle is tried.
+ */
+export function findTriangle(mesh, x, y, hint = -1) {
+  const n = mesh.triangles.length / 3;
+  if (n === 0) return -1;
+  const p = mesh.points;
+  const tri = mesh.triangles;
+  let t = hint >= 0 && hint < n ? hint : 0;
+  for (let steps = 0; steps < 4096; steps++) {
+    let outside = -1;  // an edge the point lies strictly beyond
+    for (let e = 0; e < 3 && outside < 0; e++) {
+      const a = 2 * tri[3 * t + (e + 1) % 3];
+      const b = 2 * tri[3 * t + (e + 2) % 3];
+      // Edge e is opposite vertex e; counter-clockwise order puts the inside on its left.
+      if ((p[b] - p[a]) * (y - p[a + 1]) - (p[b + 1] - p[a + 1]) * (x - p[a]) < 0) outside = e;
+    }
+    if (outside < 0) return t;
+    const next = mesh.neighbors[3 * t + outside];
+    if (next < 0) break;  // the walk reached the boundary or a hole
+    t = next;
+  }
+  for (let s = 0; s < n; s++) if (contains(mesh, s, x, y)) return s;
+  return -1;
+}

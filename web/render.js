@@ -1,0 +1,408 @@
+// Canvas 2D rendering of the drawing and its mesh.
+//
+// Speed: the mesh's paths are built once per mesh in world coordinates (one Path2D per colour
+// class, one for all edges) and drawn under the view's transform, so panning and zooming only
+// replay them. Beyond LARGE_MESH triangles, per-triangle fills cost more than they show: only
+// the edges are drawn, as one path.
+import { minAngles } from './mesh-geometry.js';
+
+export const LARGE_MESH = 200_000;
+
+/** Min-angle classes for colouring: [upper bound in degrees, colour]. */
+export const ANGLE_CLASSES = [
+  [10, '#b2182b'],
+  [20, '#e0603f'],
+  [25, '#f4a259'],
+  [30, '#f6d77a'],
+  [35, '#c7e3a5'],
+  [40, '#88c9a1'],
+  [50, '#5aa9c9'],
+  [60.0001, '#4a78b5'],
+];
+
+const REGION_COLOURS = ['#dbe7f5', '#f6d8b8', '#cfe8cf', '#ead1ef', '#f8f1b6', '#cdeaea', '#f3cdd3', '#e0e0e0'];
+
+export const COLOURS = {
+  background: '#ffffff',
+  grid: '#eef0f4',
+  gridStrong: '#d9dde6',
+  edge: 'rgba(40, 48, 70, 0.55)',
+  segment: '#111827',
+  point: '#111827',
+  selected: '#d6336c',
+  hover: '#1d4ed8',
+  hole: '#c92a2a',
+  region: '#5f3dc4',
+  notice: '#e8590c',
+  step: '#d6336c',
+  stepSecondary: '#1d4ed8',
+  newVertex: '#d6336c',
+};
+
+function angleClass(angle) {
+  for (let c = 0; c < ANGLE_CLASSES.length; c++) if (angle < ANGLE_CLASSES[c][0]) return c;
+  return ANGLE_CLASSES.length - 1;
+}
+
+/** Legend rows for a colour mode: [{ colour, label }]. */
+export function legendEntries(mode, mesh) {
+  if (mode === 'angle') {
+    let lower = 0;
+    return ANGLE_CLASSES.map(([upper, colour]) => {
+      const label = `${lower}°–${Math.round(upper)}°`;
+      lower = Math.round(upper);
+      return { colour, label };
+    });
+  }
+  if (mode === 'region' && mesh) {
+    return regionValues(mesh).map((value, i) => ({ colour: REGION_COLOURS[i % REGION_COLOURS.length], label: `attribute ${value}` }));
+  }
+  return [];
+}
+
+function regionValues(mesh) {
+  return [...new Set(mesh.triangleAttributes)].sort((a, b) => a - b);
+}
+
+export class Renderer {
+  /** @param {HTMLCanvasElement} canvas */
+  constructor(canvas) {
+    this.canvas = canvas;
+    this.ctx = canvas.getContext('2d');
+    this.dpr = 1;
+    this.mesh = null;
+    this.cache = null;  // paths of the current mesh for the current colour mode
+    this.minAngle = null;  // per-triangle smallest angle
+  }
+
+  /** Matches the backing store to the element's CSS size and the device pixel ratio. */
+  resize(width, height, dpr) {
+    this.dpr = dpr;
+    const w = Math.max(1, Math.round(width * dpr));
+    const h = Math.max(1, Math.round(height * dpr));
+    if (this.canvas.width !== w || this.canvas.height !== h) {
+      this.canvas.width = w;
+      this.canvas.height = h;
+    }
+  }
+
+  setMesh(mesh) {
+    this.mesh = mesh;
+    this.cache = null;
+    this.minAngle = mesh ? minAngles(mesh) : null;
+  }
+
+  buildPaths(mode) {
+    const mesh = this.mesh;
+    const tri = mesh.triangles;
+    const p = mesh.points;
+    const n = tri.length / 3;
+    const fills = [];  // [{ colour, path }]
+    const large = n > LARGE_MESH;
+    // No closePath(): fill() closes every subpath anyway, and Chromium's Path2D.closePath()
+    // takes time proportional to the path's length (quadratic over a mesh: 20 s for 80k).
+    const addTriangle = (path, t) => {
+      const i = 2 * tri[3 * t]; const j = 2 * tri[3 * t + 1]; const k = 2 * tri[3 * t + 2];
+      path.moveTo(p[i], p[i + 1]);
+      path.lineTo(p[j], p[j + 1]);
+      path.lineTo(p[k], p[k + 1]);
+    };
+    if (!large && mode === 'angle') {
+      const paths = ANGLE_CLASSES.map(() => new Path2D());
+      for (let t = 0; t < n; t++) addTriangle(paths[angleClass(this.minAngle[t])], t);
+      ANGLE_CLASSES.forEach(([, colour], c) => fills.push({ colour, path: paths[c] }));
+    } else if (!large && mode === 'region') {
+      const values = regionValues(mesh);
+      const index = new Map(values.map((v, i) => [v, i]));
+      const paths = values.map(() => new Path2D());
+      for (let t = 0; t < n; t++) addTriangle(paths[index.get(mesh.triangleAttributes[t])], t);
+      values.forEach((v, i) => fills.push({ colour: REGION_COLOURS[i % REGION_COLOURS.length], path: paths[i] }));
+    } else if (!large) {
+      const path = new Path2D();
+      for (let t = 0; t < n; t++) addTriangle(path, t);
+      fills.push({ colour: '#eef2f8', path });
+    }
+    // Every interior edge is shared by two triangles: draw it once (from the triangle with the
+    // smaller index, or when there is no neighbour).
+    const edges = new Path2D();
+    for (let t = 0; t < n; t++) {
+      for (let e = 0; e < 3; e++) {
+        const other = mesh.neighbors[3 * t + e];
+        if (other >= 0 && other < t) continue;
+        const a = 2 * tri[3 * t + (e + 1) % 3];
+        const b = 2 * tri[3 * t + (e + 2) % 3];
+        edges.moveTo(p[a], p[a + 1]);
+        edges.lineTo(p[b], p[b + 1]);
+      }
+    }
+    this.cache = { mode, fills, edges, large };
+  }
+
+  /**
+   * @param {object} s what to draw:
+   *   view, drawing, colorMode, showGrid, snap, selection, hoverItem, hoverTriangle,
+   *   pendingChain: { from: pointIndex, to: {x,y} } | null, notices, step: { mesh, events, index } | null
+   */
+  draw(s) {
+    const { ctx, dpr } = this;
+    const view = s.view;
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.fillStyle = COLOURS.background;
+    ctx.fillRect(0, 0, this.canvas.width, this.canvas.height);
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    this.drawGrid(view, s.snap);
+
+    const px = 1 / view.scale;  // one CSS pixel in world units
+    const world = () => ctx.setTransform(...view.matrix(dpr));
+    const screen = () => ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+
+    if (this.mesh) {
+      if (this.cache === null || this.cache.mode !== s.colorMode) this.buildPaths(s.colorMode);
+      world();
+      ctx.globalAlpha = s.step ? 0.35 : 1;
+      for (const { colour, path } of this.cache.fills) {
+        ctx.fillStyle = colour;
+        ctx.fill(path);
+      }
+      ctx.strokeStyle = COLOURS.edge;
+      ctx.lineWidth = (this.cache.large ? 0.5 : 0.8) * px;
+      ctx.stroke(this.cache.edges);
+      ctx.globalAlpha = 1;
+      if (s.hoverTriangle >= 0 && s.hoverTriangle < this.mesh.triangles.length / 3) {
+        ctx.strokeStyle = COLOURS.hover;
+        ctx.lineWidth = 2.5 * px;
+        ctx.stroke(this.trianglePath(s.hoverTriangle));
+      }
+      screen();
+    }
+
+    this.drawDrawing(s, world, screen, px);
+    if (s.step) this.drawStep(s.step, view, world, screen, px);
+    this.drawNotices(s.notices ?? [], view);
+  }
+
+  trianglePath(t) {
+    const p = this.mesh.points;
+    const tri = this.mesh.triangles;
+    const path = new Path2D();
+    const i = 2 * tri[3 * t]; const j = 2 * tri[3 * t + 1]; const k = 2 * tri[3 * t + 2];
+    path.moveTo(p[i], p[i + 1]);
+    path.lineTo(p[j], p[j + 1]);
+    path.lineTo(p[k], p[k + 1]);
+    path.closePath();
+    return path;
+  }
+
+  drawGrid(view, snap) {
+    const { ctx } = this;
+    const step = view.gridStep();
+    const b = view.visibleBounds();
+    const lines = (strong) => {
+      ctx.beginPath();
+      const every = strong ? step * 5 : step;
+      for (let x = Math.ceil(b.minX / every) * every; x <= b.maxX; x += every) {
+        const sx = Math.round(view.toScreen(x, 0).x) + 0.5;
+        ctx.moveTo(sx, 0); ctx.lineTo(sx, view.height);
+      }
+      for (let y = Math.ceil(b.minY / every) * every; y <= b.maxY; y += every) {
+        const sy = Math.round(view.toScreen(0, y).y) + 0.5;
+        ctx.moveTo(0, sy); ctx.lineTo(view.width, sy);
+      }
+      ctx.strokeStyle = strong ? COLOURS.gridStrong : COLOURS.grid;
+      ctx.lineWidth = 1;
+      ctx.stroke();
+    };
+    if (snap) lines(false);
+    lines(true);
+  }
+
+  drawDrawing(s, world, screen, px) {
+    const { ctx } = this;
+    const d = s.drawing;
+    const view = s.view;
+    const selected = (kind, index) => s.selection?.kind === kind && s.selection.index === index;
+    const hovered = (kind, index) => s.hoverItem?.kind === kind && s.hoverItem.index === index;
+
+    // Input segments, bold.
+    world();
+    const segments = new Path2D();
+    for (let k = 0; k < d.segments.length; k += 2) {
+      const a = d.segments[k]; const b = d.segments[k + 1];
+      segments.moveTo(d.points[2 * a], d.points[2 * a + 1]);
+      segments.lineTo(d.points[2 * b], d.points[2 * b + 1]);
+    }
+    ctx.strokeStyle = COLOURS.segment;
+    ctx.lineWidth = 2.5 * px;
+    ctx.lineCap = 'round';
+    ctx.stroke(segments);
+    for (const [kind, colour] of [['segment', COLOURS.selected], ['segment-hover', COLOURS.hover]]) {
+      const item = kind === 'segment' ? s.selection : s.hoverItem;
+      if (item?.kind !== 'segment') continue;
+      const a = d.segments[2 * item.index]; const b = d.segments[2 * item.index + 1];
+      ctx.beginPath();
+      ctx.moveTo(d.points[2 * a], d.points[2 * a + 1]);
+      ctx.lineTo(d.points[2 * b], d.points[2 * b + 1]);
+      ctx.strokeStyle = colour;
+      ctx.lineWidth = 4 * px;
+      ctx.stroke();
+    }
+    screen();
+
+    // The polyline being drawn: a dashed segment from its last vertex to the pointer.
+    if (s.pendingChain) {
+      const from = view.toScreen(d.points[2 * s.pendingChain.from], d.points[2 * s.pendingChain.from + 1]);
+      const to = view.toScreen(s.pendingChain.to.x, s.pendingChain.to.y);
+      ctx.setLineDash([6, 4]);
+      ctx.beginPath(); ctx.moveTo(from.x, from.y); ctx.lineTo(to.x, to.y);
+      ctx.strokeStyle = COLOURS.hover; ctx.lineWidth = 1.5; ctx.stroke();
+      ctx.setLineDash([]);
+      if (s.pendingChain.first !== undefined && s.pendingChain.first !== s.pendingChain.from) {
+        const first = view.toScreen(d.points[2 * s.pendingChain.first], d.points[2 * s.pendingChain.first + 1]);
+        ctx.beginPath(); ctx.arc(first.x, first.y, 9, 0, 2 * Math.PI);
+        ctx.strokeStyle = COLOURS.hover; ctx.lineWidth = 1.5; ctx.stroke();
+      }
+    }
+
+    // Points.
+    const many = d.points.length / 2 > 5000;
+    ctx.fillStyle = COLOURS.point;
+    ctx.beginPath();
+    for (let i = 0; i < d.points.length / 2; i++) {
+      const q = view.toScreen(d.points[2 * i], d.points[2 * i + 1]);
+      if (many) ctx.rect(q.x - 1, q.y - 1, 2, 2);
+      else { ctx.moveTo(q.x + 3.5, q.y); ctx.arc(q.x, q.y, 3.5, 0, 2 * Math.PI); }
+    }
+    ctx.fill();
+    const ring = (x, y, colour, r = 7) => {
+      const q = view.toScreen(x, y);
+      ctx.beginPath(); ctx.arc(q.x, q.y, r, 0, 2 * Math.PI);
+      ctx.strokeStyle = colour; ctx.lineWidth = 2; ctx.stroke();
+    };
+    for (const item of [s.hoverItem, s.selection]) {
+      if (item?.kind !== 'point' || item.index >= d.points.length / 2) continue;
+      ring(d.points[2 * item.index], d.points[2 * item.index + 1], item === s.selection ? COLOURS.selected : COLOURS.hover);
+    }
+
+    // Hole seeds: a red cross in a circle.
+    for (let i = 0; i < d.holes.length / 2; i++) {
+      const q = view.toScreen(d.holes[2 * i], d.holes[2 * i + 1]);
+      ctx.beginPath();
+      ctx.arc(q.x, q.y, 7, 0, 2 * Math.PI);
+      ctx.fillStyle = '#fff'; ctx.fill();
+      ctx.moveTo(q.x - 4, q.y - 4); ctx.lineTo(q.x + 4, q.y + 4);
+      ctx.moveTo(q.x + 4, q.y - 4); ctx.lineTo(q.x - 4, q.y + 4);
+      ctx.strokeStyle = COLOURS.hole; ctx.lineWidth = 2; ctx.stroke();
+      if (selected('hole', i) || hovered('hole', i)) ring(d.holes[2 * i], d.holes[2 * i + 1], selected('hole', i) ? COLOURS.selected : COLOURS.hover, 11);
+    }
+
+    // Region seeds: a violet diamond with the attribute (and max area) beside it.
+    ctx.font = '12px system-ui, sans-serif';
+    d.regions.forEach((r, i) => {
+      const q = view.toScreen(r.x, r.y);
+      ctx.beginPath();
+      ctx.moveTo(q.x, q.y - 7); ctx.lineTo(q.x + 7, q.y); ctx.lineTo(q.x, q.y + 7); ctx.lineTo(q.x - 7, q.y); ctx.closePath();
+      ctx.fillStyle = '#fff'; ctx.fill();
+      ctx.strokeStyle = COLOURS.region; ctx.lineWidth = 2; ctx.stroke();
+      const label = `${r.attribute ?? 0}${r.maxArea > 0 ? ` ≤${r.maxArea}` : ''}`;
+      ctx.lineWidth = 3; ctx.strokeStyle = '#fff'; ctx.strokeText(label, q.x + 10, q.y + 4);
+      ctx.fillStyle = COLOURS.region; ctx.fillText(label, q.x + 10, q.y + 4);
+      if (selected('region', i) || hovered('region', i)) ring(r.x, r.y, selected('region', i) ? COLOURS.selected : COLOURS.hover, 11);
+    });
+  }
+
+  drawNotices(notices, view) {
+    const { ctx } = this;
+    for (const notice of notices) {
+      // NOTHING_ENCLOSED is about the whole input, not a place.
+      if (!Number.isFinite(notice.x) || !Number.isFinite(notice.y) || notice.kind === 'NOTHING_ENCLOSED') continue;
+      const q = view.toScreen(notice.x, notice.y);
+      ctx.beginPath(); ctx.arc(q.x, q.y, 10, 0, 2 * Math.PI);
+      ctx.strokeStyle = COLOURS.notice; ctx.lineWidth = 2.5; ctx.stroke();
+    }
+  }
+
+  /** Step mode: vertices inserted up to the current event, and the current event's geometry. */
+  drawStep(step, view, world, screen, px) {
+    const { ctx } = this;
+    const { mesh, events, index } = step;
+    if (!events || events.count === 0) return;
+    const p = mesh.points;
+    const at = (v) => view.toScreen(p[2 * v], p[2 * v + 1]);
+
+    // New vertices of events 0..index.
+    ctx.fillStyle = COLOURS.newVertex;
+    ctx.beginPath();
+    for (let e = 0; e <= index; e++) {
+      const q = view.toScreen(events.xy[2 * e], events.xy[2 * e + 1]);
+      ctx.moveTo(q.x + 2.5, q.y); ctx.arc(q.x, q.y, 2.5, 0, 2 * Math.PI);
+    }
+    ctx.fill();
+
+    const kind = events.kind[index];
+    const circle = (cx, cy, r, colour) => {
+      world();
+      ctx.beginPath(); ctx.arc(cx, cy, r, 0, 2 * Math.PI);
+      ctx.strokeStyle = colour; ctx.lineWidth = 1.5 * px; ctx.setLineDash([6 * px, 4 * px]); ctx.stroke();
+      ctx.setLineDash([]);
+      screen();
+    };
+    const line = (a, b, colour, width) => {
+      const qa = at(a); const qb = at(b);
+      ctx.beginPath(); ctx.moveTo(qa.x, qa.y); ctx.lineTo(qb.x, qb.y);
+      ctx.strokeStyle = colour; ctx.lineWidth = width; ctx.stroke();
+    };
+    const triangle = (e, colour) => {
+      const [i, j, k] = [events.triangle[3 * e], events.triangle[3 * e + 1], events.triangle[3 * e + 2]];
+      const qi = at(i); const qj = at(j); const qk = at(k);
+      ctx.beginPath(); ctx.moveTo(qi.x, qi.y); ctx.lineTo(qj.x, qj.y); ctx.lineTo(qk.x, qk.y); ctx.closePath();
+      ctx.fillStyle = 'rgba(214, 51, 108, 0.18)'; ctx.fill();
+      ctx.strokeStyle = colour; ctx.lineWidth = 2.5; ctx.stroke();
+      const c = circumcircle(p, i, j, k);
+      if (c) circle(c.x, c.y, c.r, colour);
+    };
+    const subsegment = (e, colour) => {
+      const a = events.a[e]; const b = events.b[e];
+      line(a, b, colour, 4);
+      // The diametral circle: centred at the midpoint, through both endpoints.
+      const mx = (p[2 * a] + p[2 * b]) / 2; const my = (p[2 * a + 1] + p[2 * b + 1]) / 2;
+      circle(mx, my, Math.hypot(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]) / 2, colour);
+    };
+    const marker = (x, y, colour, r = 6) => {
+      const q = view.toScreen(x, y);
+      ctx.beginPath(); ctx.arc(q.x, q.y, r, 0, 2 * Math.PI);
+      ctx.fillStyle = colour; ctx.fill();
+      ctx.strokeStyle = '#fff'; ctx.lineWidth = 2; ctx.stroke();
+    };
+
+    if (kind === 0) {  // SEGMENT_SPLIT
+      subsegment(index, COLOURS.step);
+      const by = events.by[index];
+      if (by >= 0) marker(p[2 * by], p[2 * by + 1], COLOURS.stepSecondary, 5);  // the encroaching vertex
+    } else if (kind === 1 || kind === 2) {  // CIRCUMCENTER, OFF_CENTER
+      triangle(index, COLOURS.step);
+    } else if (kind === 3) {  // REJECTED
+      triangle(index, COLOURS.stepSecondary);
+      subsegment(index, COLOURS.step);
+      const cx = events.circumcenter[2 * index]; const cy = events.circumcenter[2 * index + 1];
+      const q = view.toScreen(cx, cy);
+      ctx.beginPath();
+      ctx.moveTo(q.x - 6, q.y - 6); ctx.lineTo(q.x + 6, q.y + 6);
+      ctx.moveTo(q.x + 6, q.y - 6); ctx.lineTo(q.x - 6, q.y + 6);
+      ctx.strokeStyle = COLOURS.stepSecondary; ctx.lineWidth = 3; ctx.stroke();
+    }
+    marker(events.xy[2 * index], events.xy[2 * index + 1], COLOURS.newVertex, 6);
+  }
+}
+
+export function circumcircle(p, i, j, k) {
+  const ax = p[2 * i]; const ay = p[2 * i + 1];
+  const bx = p[2 * j] - ax; const by = p[2 * j + 1] - ay;
+  const cx = p[2 * k] - ax; const cy = p[2 * k + 1] - ay;
+  const d = 2 * (bx * cy - by * cx);
+  if (d === 0) return null;
+  const b2 = bx * bx + by * by;
+  const c2 = cx * cx + cy * cy;
+  const ux = (cy * b2 - by * c2) / d;
+  const uy = (bx * c2 - cx * b2) / d;
+  return { x: ax + ux, y: ay + uy, r: Math.hypot(ux, uy) };
+}

@@ -1,0 +1,144 @@
+#!/usr/bin/env node
+// A tiny static file server for the web page: it serves the repository root, so the page at
+// /web/ imports the very module the npm package publishes (/wasm/index.js, /wasm/dist/ruppert.wasm).
+//
+//   node web/serve.mjs            # PORT from the environment, else 8080, else any free port
+//
+// Listens on 127.0.0.1 only. No dependencies: node:http + node:fs.
+import { createServer } from 'node:http';
+import { createReadStream } from 'node:fs';
+import { stat } from 'node:fs/promises';
+import { extname, resolve, sep } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const root = resolve(fileURLToPath(new URL('..', import.meta.url)));
+
+const MIME_TYPES = {
+  '.html': 'text/html; charset=utf-8',
+  '.js': 'text/javascript; charset=utf-8',
+  '.mjs': 'text/javascript; charset=utf-8',
+  '.css': 'text/css; charset=utf-8',
+  '.json': 'application/json; charset=utf-8',
+  '.wasm': 'application/wasm',
+  '.svg': 'image/svg+xml',
+  '.png': 'image/png',
+  '.ico': 'image/x-icon',
+  '.txt': 'text/plain; charset=utf-8',
+  '.md': 'text/plain; charset=utf-8',
+  '.ts': 'text/plain; charset=utf-8',
+  '.poly': 'text/plain; charset=utf-8',
+  '.node': 'text/plain; charset=utf-8',
+  '.ele': 'text/plain; charset=utf-8',
+};
+
+function send(response, status, text) {
+  response.writeHead(status, { 'content-type': 'text/plain; charset=utf-8', 'cache-control': 'no-store' });
+  response.end(text);
+}
+
+/** Maps a URL path to a file under root, or null when it would leave root. */
+function resolvePath(urlPath) {
+  let decoded;
+  try {
+    decoded = decodeURIComponent(urlPath);
+  } catch {
+    return null;
+  }
+  if (decoded.includes('\0')) return null;
+  // resolve() collapses '..'; the prefix check then rejects anything that climbed out of root.
+  const file = resolve(root, `.${decoded.startsWith('/') ? '' : '/'}${decoded}`);
+  if (file !== root && !file.startsWith(root + sep)) return null;
+  return file;
+}
+
+async function handle(request, response) {
+  if (request.method !== 'GET' && request.method !== 'HEAD') {
+    send(response, 405, 'method not allowed\n');
+    return;
+  }
+  const url = new URL(request.url ?? '/', 'http://localhost');
+  if (url.pathname === '/') {
+    response.writeHead(302, { location: '/web/' });
+    response.end();
+    return;
+  }
+  let file = resolvePath(url.pathname);
+  if (file === null) {
+    send(response, 403, 'forbidden\n');
+    return;
+  }
+  let info;
+  try {
+    info = await stat(file);
+    if (info.isDirectory()) {
+      if (!url.pathname.endsWith('/')) {
+        response.writeHead(301, { location: `${url.pathname}/${url.search}` });
+        response.end();
+        return;
+      }
+      file = resolve(file, 'index.html');
+      info = await stat(file);
+    }
+  } catch {
+    send(response, 404, 'not found\n');
+    return;
+  }
+  if (!info.isFile()) {
+    send(response, 404, 'not found\n');
+    return;
+  }
+  response.writeHead(200, {
+    'content-type': MIME_TYPES[extname(file).toLowerCase()] ?? 'application/octet-stream',
+    'content-length': info.size,
+    // A development server: always serve the file as it is on disk now.
+    'cache-control': 'no-cache',
+    'x-content-type-options': 'nosniff',
+  });
+  if (request.method === 'HEAD') {
+    response.end();
+    return;
+  }
+  createReadStream(file).on('error', () => response.destroy()).pipe(response);
+}
+
+/**
+ * Starts the server. Resolves to { server, url } once it listens.
+ * @param {{ port?: number, quiet?: boolean }} [options] port 0 picks a free port
+ */
+export function startServer({ port = 8080, quiet = false } = {}) {
+  return new Promise((resolvePromise, reject) => {
+    const server = createServer((request, response) => {
+      handle(request, response).catch(() => {
+        if (!response.headersSent) send(response, 500, 'internal error\n');
+        else response.destroy();
+      });
+    });
+    const listen = (wanted) => {
+      server.once('error', (error) => {
+        // The wanted port is taken: any free port will do for a development server.
+        if (error.code === 'EADDRINUSE' && wanted !== 0) {
+          if (!quiet) console.error(`port ${wanted} is busy; using a free port instead`);
+          listen(0);
+        } else {
+          reject(error);
+        }
+      });
+      server.listen(wanted, '127.0.0.1', () => {
+        const url = `http://127.0.0.1:${server.address().port}/web/`;
+        resolvePromise({ server, url });
+      });
+    };
+    listen(port);
+  });
+}
+
+const isMain = process.argv[1] !== undefined && resolve(process.argv[1]) === fileURLToPath(import.meta.url);
+if (isMain) {
+  const port = process.env.PORT !== undefined && process.env.PORT !== '' ? Number(process.env.PORT) : 8080;
+  if (!Number.isInteger(port) || port < 0 || port > 65535) {
+    console.error(`PORT=${process.env.PORT} is not a port number`);
+    process.exit(2);
+  }
+  const { url } = await startServer({ port });
+  console.log(`ruppert web page: ${url}`);
+}

@@ -1,0 +1,80 @@
+// The statistics panel: counts, angle range, completeness and the angle histogram.
+
+/**
+ * Angles worth seeing against the histogram: Ruppert's guaranteed 20.7°, the 26.45° and 28.6°
+ * bounds of later analyses, and the ~34° that off-centers reach in practice (chapter 6.8).
+ */
+export const REFERENCE_ANGLES = [20.7, 26.45, 28.6, 34];
+
+const format = (value, digits = 2) => (Number.isFinite(value) ? value.toFixed(digits) : '–');
+
+export function showStats(elements, mesh) {
+  const { vertices, triangles, minAngle, maxAngle, complete, time, reasons } = elements;
+  if (!mesh) {
+    for (const el of [vertices, triangles, minAngle, maxAngle, complete, time]) el.textContent = '–';
+    reasons.replaceChildren();
+    drawHistogram(elements.histogram, null);
+    return;
+  }
+  const s = mesh.stats;
+  vertices.textContent = s.vertices.toLocaleString('en-US');
+  triangles.textContent = s.triangles.toLocaleString('en-US');
+  minAngle.textContent = `${format(s.minAngle)}°`;
+  maxAngle.textContent = `${format(s.maxAngle)}°`;
+  complete.textContent = mesh.complete ? 'yes' : 'no';
+  complete.className = mesh.complete ? 'good' : 'bad';
+  time.textContent = `${format(s.milliseconds, 1)} ms`;
+  reasons.replaceChildren(...mesh.reasons.map((r) => {
+    const li = document.createElement('li');
+    li.textContent = `${r.kind} ×${r.count}: ${r.message}`;
+    return li;
+  }));
+  drawHistogram(elements.histogram, s.angleHistogram);
+}
+
+/** Bars of the 180 one-degree bins, with the reference angles as vertical lines. */
+export function drawHistogram(canvas, histogram) {
+  const dpr = window.devicePixelRatio || 1;
+  const cssWidth = canvas.clientWidth || 320;
+  const cssHeight = canvas.clientHeight || 140;
+  if (canvas.width !== Math.round(cssWidth * dpr)) {
+    canvas.width = Math.round(cssWidth * dpr);
+    canvas.height = Math.round(cssHeight * dpr);
+  }
+  const ctx = canvas.getContext('2d');
+  ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+  ctx.clearRect(0, 0, cssWidth, cssHeight);
+  const left = 4;
+  const bottom = cssHeight - 16;
+  const width = cssWidth - 8;
+  const x = (angle) => left + (angle / 180) * width;
+
+  ctx.fillStyle = '#f7f8fa';
+  ctx.fillRect(left, 0, width, bottom);
+  if (histogram && histogram.length) {
+    let max = 0;
+    for (const count of histogram) max = Math.max(max, count);
+    ctx.fillStyle = '#3b5bdb';
+    for (let bin = 0; bin < histogram.length; bin++) {
+      if (!histogram[bin]) continue;
+      const h = Math.max(1, (histogram[bin] / max) * (bottom - 4));
+      ctx.fillRect(x(bin), bottom - h, Math.max(1, width / 180), h);
+    }
+  }
+  ctx.strokeStyle = '#c92a2a';
+  ctx.lineWidth = 1;
+  ctx.setLineDash([3, 2]);
+  for (const angle of REFERENCE_ANGLES) {
+    ctx.beginPath();
+    ctx.moveTo(Math.round(x(angle)) + 0.5, 0);
+    ctx.lineTo(Math.round(x(angle)) + 0.5, bottom);
+    ctx.stroke();
+  }
+  ctx.setLineDash([]);
+  ctx.fillStyle = '#343a40';
+  ctx.font = '10px system-ui, sans-serif';
+  ctx.textAlign = 'center';
+  for (const angle of [0, 30, 60, 90, 120, 150, 180]) {
+    ctx.fillText(`${angle}°`, Math.min(Math.max(x(angle), 10), cssWidth - 12), cssHeight - 4);
+  }
+}

@@ -1,0 +1,71 @@
+// The drawing in the URL hash, so that a link reproduces it:
+//
+//   #d=<base64url of compact JSON>
+//   { "v": 1, "p": [x0, y0, ...], "s": [a0, b0, ...], "h": [hx0, hy0, ...],
+//     "r": [[x, y, attribute, maxArea], ...], "o": [minAngle, maxArea, "o" | "c", maxSteiner] }
+//
+// maxArea 0 = none, maxSteiner -1 = automatic, "o"/"c" = off-center / circumcenter placement.
+import { DEFAULT_OPTIONS } from './drawing.js';
+
+/** Links longer than this are not written (browsers and chat apps truncate them). */
+export const MAX_HASH_LENGTH = 64_000;
+
+function toBase64Url(text) {
+  const bytes = new TextEncoder().encode(text);
+  let binary = '';
+  for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+  return btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+}
+
+function fromBase64Url(text) {
+  const base64 = text.replace(/-/g, '+').replace(/_/g, '/');
+  const binary = atob(base64 + '='.repeat((4 - (base64.length % 4)) % 4));
+  return new TextDecoder().decode(Uint8Array.from(binary, (c) => c.charCodeAt(0)));
+}
+
+export function encodeDrawing(d) {
+  const o = d.options;
+  const compact = {
+    v: 1,
+    p: d.points,
+    s: d.segments,
+    h: d.holes,
+    r: d.regions.map((r) => [r.x, r.y, r.attribute ?? 0, r.maxArea > 0 ? r.maxArea : 0]),
+    o: [o.minAngle, o.maxArea > 0 ? o.maxArea : 0, o.placement === 'circumcenter' ? 'c' : 'o',
+      Number.isInteger(o.maxSteiner) ? o.maxSteiner : -1],
+  };
+  return `d=${toBase64Url(JSON.stringify(compact))}`;
+}
+
+const finiteArray = (value, what) => {
+  if (!Array.isArray(value) || !value.every((x) => typeof x === 'number' && Number.isFinite(x))) {
+    throw new Error(`link: ${what} must be an array of numbers`);
+  }
+  return value;
+};
+
+/** The drawing in a location hash ('#d=...'), or null when there is none. Throws on a damaged one. */
+export function decodeDrawing(hash) {
+  const match = /(?:^#?|&)d=([A-Za-z0-9_-]+)/.exec(hash);
+  if (!match) return null;
+  const data = JSON.parse(fromBase64Url(match[1]));
+  if (data === null || typeof data !== 'object' || data.v !== 1) throw new Error('link: unknown format version');
+  const points = finiteArray(data.p ?? [], 'points');
+  const segments = finiteArray(data.s ?? [], 'segments');
+  const holes = finiteArray(data.h ?? [], 'holes');
+  if (points.length % 2 || segments.length % 2 || holes.length % 2) throw new Error('link: odd coordinate count');
+  const n = points.length / 2;
+  if (!segments.every((i) => Number.isInteger(i) && i >= 0 && i < n)) throw new Error('link: segment index out of range');
+  const regions = (data.r ?? []).map((r) => {
+    finiteArray(r, 'a region');
+    return { x: r[0], y: r[1], attribute: r[2] ?? 0, maxArea: r[3] > 0 ? r[3] : null };
+  });
+  const [minAngle, maxArea, placement, maxSteiner] = Array.isArray(data.o) ? data.o : [];
+  const options = {
+    minAngle: Number.isFinite(minAngle) ? Math.min(60, Math.max(0, minAngle)) : DEFAULT_OPTIONS.minAngle,
+    maxArea: maxArea > 0 ? maxArea : null,
+    placement: placement === 'c' ? 'circumcenter' : 'offcenter',
+    maxSteiner: Number.isInteger(maxSteiner) && maxSteiner >= 0 ? maxSteiner : null,
+  };
+  return { points, segments, holes, regions, options };
+}
