@@ -113,6 +113,7 @@ ruppert::Options optionsFromJs(const val& js) {
   o.convexHull = js["convexHull"].as<bool>();
   o.autoHoles = js["autoHoles"].as<bool>();
   o.trace = js["trace"].as<bool>();
+  o.sizeMeasure = js["sizeMeasure"].as<bool>();
 
   // The JavaScript wrappers never throw: they return NaN (size) or -1 (progress) after storing
   // the user's error, and we unwind with CallbackFailed.
@@ -364,6 +365,7 @@ val parseCliArgs(val argsJs) {
     options.set("convexHull", o.convexHull);
     options.set("autoHoles", o.autoHoles);
     options.set("trace", !args.tracePath.empty());
+    options.set("sizeMeasure", o.sizeMeasure);
     out.set("options", options);
     return out;
   });

@@ -59,6 +59,8 @@ export interface TriangulateOptions {
   sizeFunction?: (x: number, y: number) => number;
   /** Record mesh.events (every insertion). */
   trace?: boolean;
+  /** Compute stats.lfsIntegral, the chapter's size measure (section 6.5). */
+  sizeMeasure?: boolean;
   placement?: 'offcenter' | 'circumcenter';
   /** 'lens' (default): diametral lenses, fewer splits; 'disk': the closed diametral disk of the chapter. */
   encroachment?: 'lens' | 'disk';

@@ -163,7 +163,7 @@ const PLACEMENTS = { circumcenter: 0, offcenter: 1 };
 const ENCROACHMENTS = { disk: 0, lens: 1 };
 const VARIANTS = { cdt: 0, box: 1 };
 const OPTION_KEYS = ['minAngle', 'maxArea', 'maxSteiner', 'sizeFunction', 'onProgress', 'trace',
-  'placement', 'encroachment', 'variant', 'convexHull', 'autoHoles'];
+  'placement', 'encroachment', 'variant', 'convexHull', 'autoHoles', 'sizeMeasure'];
 
 function badOption(message) {
   return new MeshError('INVALID_OPTION', message);
@@ -234,6 +234,7 @@ export function normalizeOptions(options) {
     convexHull: booleanOption(options, 'convexHull'),
     autoHoles: booleanOption(options, 'autoHoles'),
     trace: booleanOption(options, 'trace'),
+    sizeMeasure: booleanOption(options, 'sizeMeasure'),
     sizeFunction: functionOption(options, 'sizeFunction'),
     onProgress: functionOption(options, 'onProgress'),
   };

@@ -7,9 +7,12 @@
 //   segments a0, b0, a1, b1, ...        point indices
 //   holes    hx0, hy0, ...              hole seeds
 //   regions  [{ x, y, attribute, maxArea }]
-//   options  { minAngle, maxArea, placement, maxSteiner }   maxArea/maxSteiner: null = none/automatic
+//   options  { minAngle, maxArea, placement, maxSteiner, variant, encroachment }
+//            maxArea/maxSteiner: null = none/automatic; variant 'cdt' | 'box'; encroachment 'lens' | 'disk'
 
-export const DEFAULT_OPTIONS = Object.freeze({ minAngle: 30, maxArea: null, placement: 'offcenter', maxSteiner: null });
+export const DEFAULT_OPTIONS = Object.freeze({
+  minAngle: 30, maxArea: null, placement: 'offcenter', maxSteiner: null, variant: 'cdt', encroachment: 'lens',
+});
 
 export function emptyDrawing(options = DEFAULT_OPTIONS) {
   return { points: [], segments: [], holes: [], regions: [], options: { ...options } };
@@ -42,7 +45,14 @@ export function toPlc(d) {
 /** The mesher's options (TriangulateOptions of index.d.ts) for the worker. */
 export function toMeshOptions(d, { trace = false } = {}) {
   const o = d.options;
-  const options = { minAngle: o.minAngle, placement: o.placement, trace };
+  const options = {
+    minAngle: o.minAngle,
+    placement: o.placement,
+    // Drawings from before these options existed (undo snapshots, old links) mean the defaults.
+    variant: o.variant ?? DEFAULT_OPTIONS.variant,
+    encroachment: o.encroachment ?? DEFAULT_OPTIONS.encroachment,
+    trace,
+  };
   if (o.maxArea > 0) options.maxArea = o.maxArea;
   if (Number.isInteger(o.maxSteiner) && o.maxSteiner >= 0) options.maxSteiner = o.maxSteiner;
   return options;

@@ -370,6 +370,8 @@ function syncOptionFields() {
   $('max-area').value = o.maxArea > 0 ? String(o.maxArea) : '';
   $('placement').value = o.placement;
   $('max-steiner').value = Number.isInteger(o.maxSteiner) ? String(o.maxSteiner) : '';
+  $('variant').value = o.variant ?? DEFAULT_OPTIONS.variant;
+  $('encroachment').value = o.encroachment ?? DEFAULT_OPTIONS.encroachment;
 }
 
 function setMinAngle(value, commit) {
@@ -409,6 +411,14 @@ $('max-area').addEventListener('change', () => {
 });
 $('placement').addEventListener('change', () => {
   app.drawing.options.placement = $('placement').value;
+  changed(true);
+});
+$('variant').addEventListener('change', () => {
+  app.drawing.options.variant = $('variant').value;
+  changed(true);
+});
+$('encroachment').addEventListener('change', () => {
+  app.drawing.options.encroachment = $('encroachment').value;
   changed(true);
 });
 $('max-steiner').addEventListener('change', () => {
@@ -485,6 +495,7 @@ for (const preset of PRESETS) {
   const option = document.createElement('option');
   option.value = preset.id;
   option.textContent = preset.name;
+  if (preset.title) option.title = preset.title;
   $('preset').append(option);
 }
 $('preset').addEventListener('change', () => {

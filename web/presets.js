@@ -68,14 +68,26 @@ function smallAngleFan() {
   return d;
 }
 
+/**
+ * The chapter's Figure 6.16: a comb whose teeth are separated by narrow gaps outside the domain.
+ * Constrained Delaunay refinement never looks across a gap; Ruppert's original algorithm meshes
+ * the bounding box, so the gaps themselves are refined to their tiny width and the small
+ * triangles spread into the teeth (several times more triangles).
+ */
 function comb() {
   const d = blank();
   const teeth = 6;
-  // Teeth are 1 wide, 5 tall, 1 apart, standing on a 1.5 high back; tooth i spans x in [2i, 2i+1].
-  const coordinates = [0, 0, 2 * teeth - 1, 0];
+  const width = 1;      // of a tooth
+  const gap = 0.05;     // between teeth: narrow compared to the teeth
+  const height = 5;     // of a tooth above the back
+  const back = 1.5;     // height of the back the teeth stand on
+  const pitch = width + gap;
+  const at = (x) => Number(x.toFixed(6));  // 1.05 * 6 - 0.05 is 6.250000000000001 in binary
+  // Along the bottom, then right to left over the teeth; tooth i spans x in [i pitch, i pitch + width].
+  const coordinates = [0, 0, at(teeth * pitch - gap), 0];
   for (let i = teeth - 1; i >= 0; i--) {
-    coordinates.push(2 * i + 1, 6.5, 2 * i, 6.5);
-    if (i > 0) coordinates.push(2 * i, 1.5, 2 * i - 1, 1.5);
+    coordinates.push(at(i * pitch + width), back + height, at(i * pitch), back + height);
+    if (i > 0) coordinates.push(at(i * pitch), back, at(i * pitch - gap), back);
   }
   ring(d, coordinates);
   return d;
@@ -87,7 +99,13 @@ export const PRESETS = [
   { id: 'skyline', name: 'Skyline', build: skyline },
   { id: 'two-sizes', name: 'Two polygons of very different sizes', build: twoSizes },
   { id: 'fan', name: 'Small-angle fan (5°)', build: smallAngleFan },
-  { id: 'comb', name: 'Comb', build: comb },
+  {
+    id: 'comb',
+    name: 'Comb (Fig. 6.16): try Algorithm “box”',
+    title: 'Teeth 1 wide, gaps 0.05 wide. Switch Algorithm to "Delaunay in a bounding box" to see the ' +
+      'over-refinement of Ruppert\'s original algorithm in the gaps.',
+    build: comb,
+  },
 ];
 
 export const DEFAULT_PRESET = 'figure-6-4';

@@ -2,9 +2,12 @@
 //
 //   #d=<base64url of compact JSON>
 //   { "v": 1, "p": [x0, y0, ...], "s": [a0, b0, ...], "h": [hx0, hy0, ...],
-//     "r": [[x, y, attribute, maxArea], ...], "o": [minAngle, maxArea, "o" | "c", maxSteiner] }
+//     "r": [[x, y, attribute, maxArea], ...],
+//     "o": [minAngle, maxArea, "o" | "c", maxSteiner, "c" | "b", "l" | "d"] }
 //
-// maxArea 0 = none, maxSteiner -1 = automatic, "o"/"c" = off-center / circumcenter placement.
+// maxArea 0 = none, maxSteiner -1 = automatic, "o"/"c" = off-center / circumcenter placement,
+// "c"/"b" = CDT / bounding-box variant, "l"/"d" = diametral lens / disk encroachment. The last two
+// were appended later: links without them (or with unknown values) get the defaults, CDT and lens.
 import { DEFAULT_OPTIONS } from './drawing.js';
 
 /** Links longer than this are not written (browsers and chat apps truncate them). */
@@ -32,7 +35,8 @@ export function encodeDrawing(d) {
     h: d.holes,
     r: d.regions.map((r) => [r.x, r.y, r.attribute ?? 0, r.maxArea > 0 ? r.maxArea : 0]),
     o: [o.minAngle, o.maxArea > 0 ? o.maxArea : 0, o.placement === 'circumcenter' ? 'c' : 'o',
-      Number.isInteger(o.maxSteiner) ? o.maxSteiner : -1],
+      Number.isInteger(o.maxSteiner) ? o.maxSteiner : -1,
+      o.variant === 'box' ? 'b' : 'c', o.encroachment === 'disk' ? 'd' : 'l'],
   };
   return `d=${toBase64Url(JSON.stringify(compact))}`;
 }
@@ -60,12 +64,14 @@ export function decodeDrawing(hash) {
     finiteArray(r, 'a region');
     return { x: r[0], y: r[1], attribute: r[2] ?? 0, maxArea: r[3] > 0 ? r[3] : null };
   });
-  const [minAngle, maxArea, placement, maxSteiner] = Array.isArray(data.o) ? data.o : [];
+  const [minAngle, maxArea, placement, maxSteiner, variant, encroachment] = Array.isArray(data.o) ? data.o : [];
   const options = {
     minAngle: Number.isFinite(minAngle) ? Math.min(60, Math.max(0, minAngle)) : DEFAULT_OPTIONS.minAngle,
     maxArea: maxArea > 0 ? maxArea : null,
     placement: placement === 'c' ? 'circumcenter' : 'offcenter',
     maxSteiner: Number.isInteger(maxSteiner) && maxSteiner >= 0 ? maxSteiner : null,
+    variant: variant === 'b' ? 'box' : 'cdt',
+    encroachment: encroachment === 'd' ? 'disk' : 'lens',
   };
   return { points, segments, holes, regions, options };
 }

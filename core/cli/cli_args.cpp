@@ -150,6 +150,7 @@ CliArgs parseArgs(const std::vector<std::string>& args) {
       out.quiet = flag();
     } else if (name == "--stats") {
       out.stats = flag();
+      out.options.sizeMeasure = out.stats;
     } else if (name == "--convex-hull") {
       out.options.convexHull = flag();
     } else if (name == "--auto-holes") {

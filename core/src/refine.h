@@ -20,4 +20,7 @@ bool refinementRequested(const MeshState& m);
 
 RefineOutcome refine(MeshState& m);
 
+// Estimate of the integral of 1/lfs^2 over the meshed domain (§6.5), from the final mesh.
+double estimateLfsIntegral(const MeshState& m);
+
 }  // namespace ruppert::detail

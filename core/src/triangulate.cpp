@@ -130,6 +130,7 @@ Mesh triangulate(const Plc& plc, const Options& options) {
   RefineOutcome outcome;
   if (refinementRequested(m)) outcome = refine(m);
   if (!m.inDomain.empty()) removeOutside(m);
+  if (options.sizeMeasure) outcome.lfsIntegral = estimateLfsIntegral(m);
   Mesh mesh = assemble(m);
   // The chapter's exemptions (§6.6) are reported but do not make the mesh incomplete.
   mesh.complete = true;

@@ -214,3 +214,27 @@ TEST_CASE("a comb over-refines in a box but not with a CDT (Figure 6.16)", "[ref
   const Mesh box = refineChecked(plc, o, "comb, box");
   CHECK(box.triangles.size() > cdt.triangles.size());
 }
+
+TEST_CASE("the size measure of section 6.5 is computed on request and grows as features come close",
+          "[refine]") {
+  auto measure = [](double gap) {
+    // A 1 x 1 square with a slit segment `gap` away from its bottom side.
+    Plc plc;
+    plc.points = {0, 0, 1, 0, 1, 1, 0, 1, 0.25, gap, 0.75, gap};
+    plc.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5};
+    Options o;
+    o.minAngle = 25;
+    o.sizeMeasure = true;
+    const Mesh mesh = ruppert::triangulate(plc, o);
+    REQUIRE(mesh.stats.lfsIntegral > 0);
+    CHECK(mesh.stats.trianglesPerLfsIntegral == Approx(mesh.stats.triangles / mesh.stats.lfsIntegral));
+    return mesh.stats.lfsIntegral;
+  };
+  const double wide = measure(0.25), narrow = measure(0.01);
+  CHECK(narrow > 2 * wide);
+
+  Plc square;
+  square.points = {0, 0, 1, 0, 1, 1, 0, 1};
+  square.segments = {0, 1, 1, 2, 2, 3, 3, 0};
+  CHECK(ruppert::triangulate(square).stats.lfsIntegral == 0);  // not requested
+}

@@ -128,6 +128,7 @@ struct Options {
   bool convexHull = false;  // mesh the whole convex hull, not only what segments enclose
   bool autoHoles = false;   // with no hole seeds: regions at odd nesting depth are domain, even are holes
   bool trace = false;       // record Mesh::events (every insertion, for step-by-step replay)
+  bool sizeMeasure = false; // compute Stats::lfsIntegral (§6.5; one shortest-path pass over the mesh)
   // Called every few thousand insertions; return false to stop early (complete=false, "cancelled").
   std::function<bool(const Progress&)> onProgress;
 };
@@ -187,7 +188,9 @@ struct Stats {
   std::uint64_t inputVertices = 0, segmentVertices = 0, interiorVertices = 0, offCenterVertices = 0,
                 intersectionVertices = 0;
   std::uint64_t rejectedCircumcenters = 0;
-  double lfsIntegral = 0;  // estimate of the integral of 1/lfs^2 over the domain (§6.5); 0 if not computed
+  // Estimate of the integral of 1/lfs^2 over the domain (§6.5), with Options::sizeMeasure; else 0.
+  // lfs is bounded from above from the mesh (see size_measure.cpp), so this tends to be low.
+  double lfsIntegral = 0;
   double trianglesPerLfsIntegral = 0;
   double milliseconds = 0;  // wall time of triangulate()
 };
