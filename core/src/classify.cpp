@@ -62,7 +62,7 @@ std::uint32_t seedTriangle(MeshState& m, double x, double y, ErrorCode code, con
 }
 
 std::string at(const MeshState& m, double x, double y) {
-  return "(" + formatNumber(x / m.input.scale) + ", " + formatNumber(y / m.input.scale) + ")";
+  return "(" + formatNumber(m.input.toUser(x)) + ", " + formatNumber(m.input.toUser(y)) + ")";
 }
 
 }  // namespace

@@ -106,11 +106,12 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
   if (maxAbs > 0) {
     int e = 0;
     std::frexp(maxAbs, &e);
-    out.scale = std::ldexp(1.0, 1 - e);
+    out.exponent = 1 - e;
   }
   auto scaled = [&](double v, const char* array, std::size_t i, const char* field) {
-    const double s = v * out.scale;
-    if (!isSafeCoordinate(s))
+    const double s = out.toInternal(v);
+    // A nonzero value that scaling takes below the safe range (even down to 0) is an error too.
+    if (!isSafeCoordinate(s) || (v != 0 && s == 0))
       fail(ErrorCode::CoordinateRange,
            name(array, i, field) + " = " + formatNumber(v) + " is nonzero but over 2^128 times smaller than the largest coordinate " +
                formatNumber(maxAbs) + "; exact arithmetic cannot resolve such a range");
@@ -127,10 +128,10 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
     Region r = plc.regions[i];
     r.x = scaled(r.x, "regions", i, ".x");
     r.y = scaled(r.y, "regions", i, ".y");
-    r.maxArea = r.maxArea * out.scale * out.scale;
+    r.maxArea = out.areaToInternal(r.maxArea);
     out.regions.push_back(r);
   }
-  out.maxArea = std::isinf(options.maxArea) ? 0 : options.maxArea * out.scale * out.scale;
+  out.maxArea = std::isinf(options.maxArea) ? 0 : out.areaToInternal(options.maxArea);
 
   // One sort along a Hilbert curve serves two purposes: identical points share a key, so duplicates
   // are found within runs of equal keys; and the curve order keeps point-location walks short.

@@ -5,7 +5,9 @@
 // the robust predicates then work in their safe range whatever the user's units (1e-200 or 1e200).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "ruppert/ruppert.h"
@@ -13,7 +15,16 @@
 namespace ruppert::detail {
 
 struct PreparedInput {
-  double scale = 1;                        // internal coordinate = input coordinate * scale
+  // internal coordinate = input coordinate * 2^exponent (exact; ldexp reaches factors beyond the
+  // range of a double, which subnormal inputs need)
+  int exponent = 0;
+  double toInternal(double v) const { return std::ldexp(v, exponent); }
+  double toUser(double v) const { return std::ldexp(v, -exponent); }
+  // Areas scale by 2^(2 exponent); a positive bound never rounds to 0 ("none").
+  double areaToInternal(double a) const {
+    const double s = std::ldexp(a, 2 * exponent);
+    return a > 0 && s == 0 ? std::numeric_limits<double>::denorm_min() : s;
+  }
   std::vector<double> xy;                  // all input points, scaled (duplicates included)
   std::vector<std::uint32_t> representative;  // per point: the lowest index of an identical point
   std::vector<std::uint32_t> insertionOrder;  // distinct points in a spatially coherent random order

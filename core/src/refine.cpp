@@ -38,7 +38,10 @@ bool refinementRequested(const MeshState& m) {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kLengthFloor = 0x1p-40;  // internal units; coordinates lie within (-2, 2)
+// No vertex is placed closer than this to another (internal units: coordinates lie within (-2, 2),
+// where it is over 10^4 ulps): subsegments shorter than 3 floors and triangles whose shortest edge is
+// under 2 floors are not split, and a split point this close to a vertex is refused.
+constexpr double kLengthFloor = 0x1p-38;
 constexpr int kBuckets = 64;              // bad-triangle priority classes by smallest angle
 
 struct BadTriangle {
@@ -55,7 +58,6 @@ class Refiner {
     // Lens apex angle 180 - 2 theta, never below the disk's 90 degrees: cos(180 - 2 theta) = -cos(2 theta).
     if (o_.encroachment == Encroachment::DiametralLens && theta_ < kPi / 4)
       lensCos2_ = std::cos(2 * theta_) * std::cos(2 * theta_);
-    scale2_ = m.input.scale * m.input.scale;
     buckets_.resize(kBuckets);
   }
 
@@ -99,7 +101,6 @@ class Refiner {
   double theta_ = 0;  // radians
   double sin2Theta_ = 0;
   double lensCos2_ = 0;  // 0: closed diametral disk
-  double scale2_ = 1;
   std::uint64_t budget_ = 0, inserted_ = 0;
   bool cancelled_ = false, budgetHit_ = false;
   std::uint64_t floorHits_ = 0;
@@ -149,9 +150,11 @@ class Refiner {
       budget_ = o_.maxSteiner;
       return;
     }
-    // Generous for any reasonable input: a million, plus a thousand per input vertex, plus eight
-    // vertices per unit of area bound (a mesh of area A with triangles of area a needs ~A/(2a)).
-    double estimate = 1e6 + 1000.0 * m_.inputCount;
+    // Generous for any reasonable input, yet small enough that a runaway at an unreachable angle
+    // stops within a second or so: ten thousand, plus a thousand per input vertex (graded meshes of
+    // real inputs use tens), plus eight per unit of area bound (area A with triangles of area a
+    // needs about A / (2 a) vertices).
+    double estimate = 1e4 + 1000.0 * m_.inputCount;
     for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
       if (!t_.alive(s) || m_.maxArea[s] <= 0) continue;
       estimate += 8 * qualityAt(s).area / m_.maxArea[s];
@@ -209,10 +212,13 @@ class Refiner {
       const double* p0 = t_.pt(t_.tv[3 * s]);
       const double* p1 = t_.pt(t_.tv[3 * s + 1]);
       const double* p2 = t_.pt(t_.tv[3 * s + 2]);
-      const double cx = (p0[0] + p1[0] + p2[0]) / 3 / m_.input.scale;
-      const double cy = (p0[1] + p1[1] + p2[1]) / 3 / m_.input.scale;
+      const double cx = m_.input.toUser((p0[0] + p1[0] + p2[0]) / 3);
+      const double cy = m_.input.toUser((p0[1] + p1[1] + p2[1]) / 3);
       const double user = o_.sizeFunction(cx, cy);
-      if (std::isfinite(user) && user > 0) bound = bound > 0 ? std::min(bound, user * scale2_) : user * scale2_;
+      if (std::isfinite(user) && user > 0) {
+        const double internal = m_.input.areaToInternal(user);
+        bound = bound > 0 ? std::min(bound, internal) : internal;
+      }
     }
     return bound;
   }
@@ -304,7 +310,10 @@ class Refiner {
   // subsegments are checked for encroachment. False (nothing changed) if the insertion would
   // create an inverted triangle (rounding at the precision limit).
   bool insertAt(std::uint32_t v, const Location& loc) {
-    if (!t_.insertVertex(v, loc, &newTris_, &parents_)) return false;
+    // Bowyer-Watson first; where its cavity would wrap around a vertex at which the domain touches
+    // itself, split and flip instead.
+    if (!t_.insertVertex(v, loc, &newTris_, &parents_) && !t_.insertVertexByFlips(v, loc, &newTris_, &parents_))
+      return false;
     ++inserted_;
     const bool box = !m_.inDomain.empty();
     if (m_.attribute.size() < t_.slotCount()) {
@@ -339,7 +348,7 @@ class Refiner {
     const double pa[2] = {t_.xy[2 * a], t_.xy[2 * a + 1]};
     const double pb[2] = {t_.xy[2 * b], t_.xy[2 * b + 1]};
     const double len = dist(pa, pb);
-    if (len < kLengthFloor) {
+    if (len < 3 * kLengthFloor) {
       ++floorHits_;
       return false;
     }
@@ -352,6 +361,16 @@ class Refiner {
       f = ca ? d / len : 1.0 - d / len;
     }
     const double x = pa[0] + f * (pb[0] - pa[0]), y = pa[1] + f * (pb[1] - pa[1]);
+    // The vertices facing the subsegment are the nearest candidates (an encroacher 1e-15 above the
+    // midpoint, say): splitting next to one of them would make a needle, not a better mesh.
+    for (std::uint32_t side : {h, t_.twin[h]}) {
+      if (side == kNone) continue;
+      const double* q = t_.pt(t_.apex(side));
+      if (std::hypot(q[0] - x, q[1] - y) < kLengthFloor) {
+        ++floorHits_;
+        return false;
+      }
+    }
     const std::int32_t segment = t_.con[h] >= 0 ? t_.con[h] : -1;
     const std::uint32_t v = m_.addVertex(x, y, VertexKind::SegmentSplit, segment);
     corner_.push_back(0);
@@ -419,7 +438,7 @@ class Refiner {
       const double bound = maxAreaAt(s);
       if (!(bound > 0 && q.area > bound)) return;  // left alone on purpose; counted in finish()
     }
-    if (sh.shortest < kLengthFloor) {
+    if (sh.shortest < 2 * kLengthFloor) {
       ++floorHits_;
       return;
     }

@@ -74,7 +74,7 @@ class SegmentInserter {
 
   void vertexOnSegment(std::uint32_t w, std::int32_t id) {
     if (id < 0 || w >= m_.inputCount) return;  // hull edges and repair vertices need no report
-    Notice n{NoticeKind::VertexOnSegment, id, w, t_.xy[2 * w] / m_.input.scale, t_.xy[2 * w + 1] / m_.input.scale, ""};
+    Notice n{NoticeKind::VertexOnSegment, id, w, m_.input.toUser(t_.xy[2 * w]), m_.input.toUser(t_.xy[2 * w + 1]), ""};
     n.message = "points[" + std::to_string(w) + "] lies inside " + segName(id) + "; the segment is split there";
     m_.notices.push_back(std::move(n));
   }
@@ -165,15 +165,16 @@ class SegmentInserter {
         w = loc.vertex;
       } else {
         w = m_.addVertex(q[0], q[1], VertexKind::Intersection, -1);
-        if ((loc.kind != Location::InTriangle && loc.kind != Location::OnEdge) || !t_.insertVertex(w, loc))
+        if ((loc.kind != Location::InTriangle && loc.kind != Location::OnEdge) ||
+            (!t_.insertVertex(w, loc) && !t_.insertVertexByFlips(w, loc)))
           throw Error(ErrorCode::Internal, "could not insert the crossing of " + segName(id) + " at (" +
-                                               formatNumber(q[0] / m_.input.scale) + ", " +
-                                               formatNumber(q[1] / m_.input.scale) + ")");
+                                               formatNumber(m_.input.toUser(q[0])) + ", " +
+                                               formatNumber(m_.input.toUser(q[1])) + ")");
       }
     }
     if (id >= 0 && other >= 0) {
-      Notice n{NoticeKind::SegmentsCross, std::min(id, other), std::max(id, other), q[0] / m_.input.scale,
-               q[1] / m_.input.scale, ""};
+      Notice n{NoticeKind::SegmentsCross, std::min(id, other), std::max(id, other), m_.input.toUser(q[0]),
+               m_.input.toUser(q[1]), ""};
       n.message = segName(n.a) + " and " + segName(n.b) + " cross at (" + formatNumber(n.x) + ", " +
                   formatNumber(n.y) + "); both are split there";
       m_.notices.push_back(std::move(n));

@@ -30,7 +30,6 @@ Mesh assemble(MeshState& m) {
 
   mesh.points.resize(2 * std::size_t(outVertices));
   mesh.vertexKinds.resize(outVertices);
-  const double inv = 1.0 / m.input.scale;  // a power of two: exact
   for (std::uint32_t v = 0; v < t.vertexCount(); ++v) {
     const std::uint32_t o = outIndex(v);
     if (o == kNone) continue;
@@ -39,8 +38,8 @@ Mesh assemble(MeshState& m) {
       mesh.points[2 * o + 1] = plc.points[2 * v + 1];
       mesh.vertexKinds[o] = static_cast<std::uint8_t>(t.vtri[v] == kNone ? VertexKind::Unused : VertexKind::Input);
     } else {
-      mesh.points[2 * o] = t.xy[2 * v] * inv;
-      mesh.points[2 * o + 1] = t.xy[2 * v + 1] * inv;
+      mesh.points[2 * o] = m.input.toUser(t.xy[2 * v]);  // a power of two: exact
+      mesh.points[2 * o + 1] = m.input.toUser(t.xy[2 * v + 1]);
       mesh.vertexKinds[o] = static_cast<std::uint8_t>(m.kind[v]);
     }
   }
@@ -140,12 +139,11 @@ Mesh triangulate(const Plc& plc, const Options& options) {
   mesh.events = std::move(outcome.events);
   // Events keep vertices that are not in the output (see Event::vertex) as kNoVertex.
   auto outIndex = [&](std::uint32_t v) { return v < m.outputMap.size() ? m.outputMap[v] : kNone; };
-  const double inv = 1.0 / m.input.scale;
   for (Event& e : mesh.events) {
     e.vertex = outIndex(e.vertex), e.a = outIndex(e.a), e.b = outIndex(e.b);
     e.t0 = outIndex(e.t0), e.t1 = outIndex(e.t1), e.t2 = outIndex(e.t2);
     if (e.by >= 0) e.by = outIndex(static_cast<std::uint32_t>(e.by)) == kNone ? -1 : outIndex(static_cast<std::uint32_t>(e.by));
-    e.x *= inv, e.y *= inv, e.cx *= inv, e.cy *= inv;
+    e.x = m.input.toUser(e.x), e.y = m.input.toUser(e.y), e.cx = m.input.toUser(e.cx), e.cy = m.input.toUser(e.cy);
   }
   mesh.stats.rejectedCircumcenters = outcome.rejected;
   mesh.stats.lfsIntegral = outcome.lfsIntegral;

@@ -102,6 +102,13 @@ class Triangulation {
   bool insertVertex(std::uint32_t v, const Location& loc, std::vector<std::uint32_t>* newTris = nullptr,
                     std::vector<std::uint32_t>* parents = nullptr, bool checkOrientation = true);
 
+  // The same insertion by splitting the containing triangle (or the two sharing the edge) and Lawson
+  // flips. Slower, but it needs no fan around any other vertex: it works where insertVertex refuses a
+  // cavity that wraps around a vertex at which the domain touches itself. False, changing nothing,
+  // if a new triangle would not be strictly counter-clockwise.
+  bool insertVertexByFlips(std::uint32_t v, const Location& loc, std::vector<std::uint32_t>* newTris = nullptr,
+                           std::vector<std::uint32_t>* parents = nullptr);
+
   // Cavity computation without modifying anything (the first half of insertVertex). Returns the
   // boundary half-edges (outer side twins are looked up from the cavity triangles' half-edges).
   void cavity(const double* p, const Location& loc, std::vector<std::uint32_t>& tris,
