@@ -168,7 +168,8 @@ struct Notice {
 // Why a refinement did not reach every bound.
 enum class ReasonKind : std::uint8_t {
   SmallInputAngle,  // triangles nestled in an input angle < 60 deg cannot be fixed (§6.6)
-  SeditiousEdge,    // triangles whose shortest edge is seditious are left alone on purpose (§6.6)
+  SeditiousEdge,    // triangles whose shortest edge is seditious (between segments meeting at under
+                    // 45 degrees, §6.6) are left alone on purpose
   SteinerBudget,    // maxSteiner reached
   PrecisionFloor,   // an edge would become shorter than doubles can place points on
   Cancelled,        // onProgress returned false
