@@ -7,7 +7,8 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 # Native build and core tests: cmake g++ make catch2 libgmp-dev.
 # WebAssembly build and browser tests: emscripten chromium, plus Node.js and npm.
-debian_packages=(cmake g++ make catch2 libgmp-dev emscripten chromium)
+# Sanitizer and fuzz runs: clang with its runtime libraries (libFuzzer), which clang only recommends.
+debian_packages=(cmake g++ make catch2 libgmp-dev emscripten chromium clang libclang-rt-14-dev)
 
 missing=()
 for package in "${debian_packages[@]}"; do

@@ -13,3 +13,8 @@ if [[ -f package.json ]] && node -e 'process.exit(require("./package.json").scri
 else
   bash tests/run-native.sh
 fi
+
+# Hostile input (issue 6): the core tests again under AddressSanitizer + UBSan, then each libFuzzer
+# target for 60 s (any crash, sanitizer report, hang or runaway memory fails the run).
+bash tests/run-sanitize.sh
+bash tests/run-fuzz.sh 60
