@@ -16,15 +16,12 @@ namespace ruppert::detail {
 
 void buildDelaunay(MeshState& m) {
   const PreparedInput& in = m.input;
-  const std::uint32_t n = static_cast<std::uint32_t>(in.xy.size() / 2);
+  const std::uint32_t n = in.distinctCount();
   m.inputCount = n;
   m.tri.xy.reserve(2 * (n + 4));
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const bool used = in.representative[i] == i;
-    m.addVertex(in.xy[2 * i], in.xy[2 * i + 1], used ? VertexKind::Input : VertexKind::Unused, -1);
-  }
-  if (in.insertionOrder.size() < 3)
-    throw Error(ErrorCode::DegenerateInput, "the input has " + std::to_string(in.insertionOrder.size()) +
+  for (std::uint32_t v = 0; v < n; ++v) m.addVertex(in.xy[2 * v], in.xy[2 * v + 1], VertexKind::Input, -1);
+  if (n < 3)
+    throw Error(ErrorCode::DegenerateInput, "the input has " + std::to_string(n) +
                                                 " distinct point(s); at least 3 not on one line are needed");
   // Constrained variant: scaled coordinates lie in (-2, 2); corners at +-8 are exact and the domain
   // never sees them. Bounding-box variant (Ruppert's original): the box is part of what is refined,
@@ -32,7 +29,7 @@ void buildDelaunay(MeshState& m) {
   double lo[2] = {-8, -8}, hi[2] = {8, 8};
   if (m.options->variant == Variant::BoundingBox) {
     double minX = HUGE_VAL, minY = HUGE_VAL, maxX = -HUGE_VAL, maxY = -HUGE_VAL;
-    for (std::uint32_t v : in.insertionOrder) {
+    for (std::uint32_t v = 0; v < n; ++v) {
       minX = std::min(minX, in.xy[2 * v]), maxX = std::max(maxX, in.xy[2 * v]);
       minY = std::min(minY, in.xy[2 * v + 1]), maxY = std::max(maxY, in.xy[2 * v + 1]);
     }
@@ -53,19 +50,19 @@ void buildDelaunay(MeshState& m) {
   t.link(3 * t0 + 1, 3 * t1 + 2);  // edge c+2 -> c  and  c -> c+2
 
   bool allCollinear = true;
-  const std::uint32_t p0 = in.insertionOrder[0], p1 = in.insertionOrder[1];
+  const std::uint32_t p0 = 0, p1 = 1;
   std::uint32_t hint = t0;
-  for (std::uint32_t v : in.insertionOrder) {
+  for (std::uint32_t v = 0; v < n; ++v) {  // internal numbering is the insertion order
     if (allCollinear && orient2d(t.pt(p0), t.pt(p1), t.pt(v)) != 0) allCollinear = false;
     Location loc = t.locate(t.pt(v), hint);
     if (loc.kind != Location::InTriangle && loc.kind != Location::OnEdge)
-      throw Error(ErrorCode::Internal, "point location failed for points[" + std::to_string(v) + "]");
+      throw Error(ErrorCode::Internal, "point location failed for points[" + std::to_string(in.inputIndex[v]) + "]");
     if (!t.insertVertex(v, loc, nullptr, nullptr, /*checkOrientation=*/false))
-      throw Error(ErrorCode::Internal, "could not insert points[" + std::to_string(v) + "]");
+      throw Error(ErrorCode::Internal, "could not insert points[" + std::to_string(in.inputIndex[v]) + "]");
     hint = t.vtri[v];
   }
   if (allCollinear)
-    throw Error(ErrorCode::DegenerateInput, "all " + std::to_string(in.insertionOrder.size()) +
+    throw Error(ErrorCode::DegenerateInput, "all " + std::to_string(n) +
                                                 " distinct points lie on one line; there is nothing to triangulate");
 }
 

@@ -117,10 +117,10 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
                formatNumber(maxAbs) + "; exact arithmetic cannot resolve such a range");
     return s;
   };
-  out.xy.resize(2 * n);
+  std::vector<double> xy(2 * n);  // every input point, scaled, in input order
   for (std::size_t i = 0; i < n; ++i) {
-    out.xy[2 * i] = scaled(plc.points[2 * i], "points", i, ".x");
-    out.xy[2 * i + 1] = scaled(plc.points[2 * i + 1], "points", i, ".y");
+    xy[2 * i] = scaled(plc.points[2 * i], "points", i, ".x");
+    xy[2 * i + 1] = scaled(plc.points[2 * i + 1], "points", i, ".y");
   }
   for (std::size_t i = 0; i < plc.holes.size(); ++i)
     out.holes.push_back(scaled(plc.holes[i], "holes", i / 2, ""));
@@ -137,8 +137,8 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
   // are found within runs of equal keys; and the curve order keeps point-location walks short.
   double minX = HUGE_VAL, minY = HUGE_VAL, maxX = -HUGE_VAL, maxY = -HUGE_VAL;
   for (std::size_t i = 0; i < n; ++i) {
-    minX = std::min(minX, out.xy[2 * i]), maxX = std::max(maxX, out.xy[2 * i]);
-    minY = std::min(minY, out.xy[2 * i + 1]), maxY = std::max(maxY, out.xy[2 * i + 1]);
+    minX = std::min(minX, xy[2 * i]), maxX = std::max(maxX, xy[2 * i]);
+    minY = std::min(minY, xy[2 * i + 1]), maxY = std::max(maxY, xy[2 * i + 1]);
   }
   const double span = std::max(maxX - minX, maxY - minY);
   const double toGrid = span > 0 ? 65535.0 / span : 0;
@@ -148,7 +148,7 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
   };
   std::vector<Keyed> sorted(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const double x = out.xy[2 * i], y = out.xy[2 * i + 1];
+    const double x = xy[2 * i], y = xy[2 * i + 1];
     sorted[i] = {hilbertKey(static_cast<std::uint32_t>((x - minX) * toGrid), static_cast<std::uint32_t>((y - minY) * toGrid)),
                  static_cast<std::uint32_t>(i), x, y};
   }
@@ -159,7 +159,7 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
     if (a.y != b.y) return a.y < b.y;
     return a.index < b.index;
   });
-  out.representative.resize(n);
+  std::vector<std::uint32_t> representative(n);  // input index of the lowest identical point
   std::vector<std::uint32_t> distinct;
   distinct.reserve(n);
   std::vector<Notice> duplicates;
@@ -170,7 +170,7 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
     distinct.push_back(rep);
     for (std::size_t m = k; m < j; ++m) {
       const std::uint32_t dup = sorted[m].index;
-      out.representative[dup] = rep;
+      representative[dup] = rep;
       if (dup != rep) {
         Notice nt{NoticeKind::DuplicatePoint, dup, rep, plc.points[2 * rep], plc.points[2 * rep + 1], ""};
         nt.message = "points[" + std::to_string(dup) + "] duplicates points[" + std::to_string(rep) + "] (" +
@@ -201,8 +201,19 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
   for (int k = 0; k < kRounds; ++k) count[k + 1] += count[k];
   std::vector<std::uint32_t> order(distinct.size());
   for (std::size_t i = 0; i < distinct.size(); ++i) order[count[round[i]]++] = distinct[i];
-  distinct = std::move(order);
-  out.insertionOrder = std::move(distinct);
+  // Renumber: internal vertex k is the k-th point inserted.
+  out.inputIndex = std::move(order);
+  const std::uint32_t d = out.distinctCount();
+  out.xy.resize(2 * std::size_t(d));
+  std::vector<std::uint32_t> internalOf(n, 0);
+  for (std::uint32_t k = 0; k < d; ++k) {
+    const std::uint32_t i = out.inputIndex[k];
+    internalOf[i] = k;
+    out.xy[2 * std::size_t(k)] = xy[2 * std::size_t(i)];
+    out.xy[2 * std::size_t(k) + 1] = xy[2 * std::size_t(i) + 1];
+  }
+  out.representative.resize(n);
+  for (std::size_t i = 0; i < n; ++i) out.representative[i] = internalOf[representative[i]];
   return out;
 }
 

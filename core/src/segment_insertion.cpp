@@ -74,8 +74,9 @@ class SegmentInserter {
 
   void vertexOnSegment(std::uint32_t w, std::int32_t id) {
     if (id < 0 || w >= m_.inputCount) return;  // hull edges and repair vertices need no report
-    Notice n{NoticeKind::VertexOnSegment, id, w, m_.input.toUser(t_.xy[2 * w]), m_.input.toUser(t_.xy[2 * w + 1]), ""};
-    n.message = "points[" + std::to_string(w) + "] lies inside " + segName(id) + "; the segment is split there";
+    const std::uint32_t point = m_.input.inputIndex[w];  // the user's index, not the internal one
+    Notice n{NoticeKind::VertexOnSegment, id, point, m_.input.toUser(t_.xy[2 * w]), m_.input.toUser(t_.xy[2 * w + 1]), ""};
+    n.message = "points[" + std::to_string(point) + "] lies inside " + segName(id) + "; the segment is split there";
     m_.notices.push_back(std::move(n));
   }
 
@@ -273,9 +274,9 @@ void insertHull(MeshState& m) {
     std::uint32_t v;
   };
   std::vector<P> sorted;
-  sorted.reserve(m.input.insertionOrder.size());
+  sorted.reserve(m.inputCount);
   const Triangulation& t = m.tri;
-  for (std::uint32_t v : m.input.insertionOrder) sorted.push_back({t.xy[2 * v], t.xy[2 * v + 1], v});
+  for (std::uint32_t v = 0; v < m.inputCount; ++v) sorted.push_back({t.xy[2 * v], t.xy[2 * v + 1], v});
   std::sort(sorted.begin(), sorted.end(), [](const P& a, const P& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
   std::vector<std::uint32_t> pts(sorted.size());
   for (std::size_t k = 0; k < sorted.size(); ++k) pts[k] = sorted[k].v;

@@ -19,7 +19,7 @@ namespace ruppert::detail {
 namespace {
 
 struct Feature {
-  std::uint32_t a, b;  // input point indices; a == b for a point
+  std::uint32_t a, b;  // internal vertices of input points; a == b for a point
 };
 
 class FeatureGrid {
@@ -27,7 +27,7 @@ class FeatureGrid {
   FeatureGrid(const MeshState& m) : xy_(m.tri.xy) {
     const Plc& plc = *m.plc;
     const auto& rep = m.input.representative;
-    for (std::uint32_t v : m.input.insertionOrder) features_.push_back({v, v});
+    for (std::uint32_t v = 0; v < m.inputCount; ++v) features_.push_back({v, v});
     std::vector<std::uint64_t> seen;
     for (std::size_t s = 0; s < plc.segments.size() / 2; ++s) {
       std::uint32_t a = rep[plc.segments[2 * s]], b = rep[plc.segments[2 * s + 1]];
@@ -40,7 +40,7 @@ class FeatureGrid {
     for (std::uint64_t k : seen) features_.push_back({std::uint32_t(k >> 32), std::uint32_t(k)});
 
     double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
-    for (std::uint32_t v : m.input.insertionOrder)
+    for (std::uint32_t v = 0; v < m.inputCount; ++v)
       for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], xy_[2 * v + k]), hi[k] = std::max(hi[k], xy_[2 * v + k]);
     origin_[0] = lo[0], origin_[1] = lo[1];
     const double span = std::max({hi[0] - lo[0], hi[1] - lo[1], 1e-300});

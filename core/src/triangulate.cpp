@@ -17,36 +17,41 @@ Mesh assemble(MeshState& m) {
   Mesh mesh;
   const Triangulation& t = m.tri;
   const Plc& plc = *m.plc;
-  // Output numbering: input points keep their indices; Steiner vertices that some triangle uses
-  // follow in creation order; box corners and Steiner vertices in no triangle (refused insertions,
-  // or outside the domain in the bounding-box variant) are left out.
+  // Output numbering: input points keep their indices (internal vertices of input points are numbered
+  // in insertion order, see PreparedInput); Steiner vertices that some triangle uses follow in
+  // creation order; box corners and Steiner vertices in no triangle (refused insertions, or outside
+  // the domain in the bounding-box variant) are left out.
+  const std::uint32_t inputPoints = static_cast<std::uint32_t>(plc.points.size() / 2);
   m.outputMap.assign(t.vertexCount(), kNone);
-  std::uint32_t outVertices = m.inputCount;
+  std::uint32_t outVertices = inputPoints;
   for (std::uint32_t v = 0; v < t.vertexCount(); ++v) {
-    if (v < m.inputCount) m.outputMap[v] = v;
+    if (v < m.inputCount) m.outputMap[v] = m.input.inputIndex[v];
     else if (t.vtri[v] != kNone && m.kind[v] != VertexKind::Unused) m.outputMap[v] = outVertices++;
   }
   auto outIndex = [&](std::uint32_t v) { return m.outputMap[v]; };
 
   mesh.points.resize(2 * std::size_t(outVertices));
   mesh.vertexKinds.resize(outVertices);
-  for (std::uint32_t v = 0; v < t.vertexCount(); ++v) {
+  // Every input point, duplicates included, keeps its coordinates bit-identical; only the lowest index
+  // of a set of identical points is an Input vertex of the mesh (if a triangle still uses it).
+  for (std::uint32_t i = 0; i < inputPoints; ++i) {
+    const std::uint32_t v = m.input.representative[i];
+    mesh.points[2 * std::size_t(i)] = plc.points[2 * std::size_t(i)];
+    mesh.points[2 * std::size_t(i) + 1] = plc.points[2 * std::size_t(i) + 1];
+    const bool used = m.input.inputIndex[v] == i && t.vtri[v] != kNone;
+    mesh.vertexKinds[i] = static_cast<std::uint8_t>(used ? VertexKind::Input : VertexKind::Unused);
+  }
+  for (std::uint32_t v = m.inputCount; v < t.vertexCount(); ++v) {
     const std::uint32_t o = outIndex(v);
     if (o == kNone) continue;
-    if (v < m.inputCount) {
-      mesh.points[2 * o] = plc.points[2 * v];  // bit-identical to the input
-      mesh.points[2 * o + 1] = plc.points[2 * v + 1];
-      mesh.vertexKinds[o] = static_cast<std::uint8_t>(t.vtri[v] == kNone ? VertexKind::Unused : VertexKind::Input);
-    } else {
-      mesh.points[2 * o] = m.input.toUser(t.xy[2 * v]);  // a power of two: exact
-      mesh.points[2 * o + 1] = m.input.toUser(t.xy[2 * v + 1]);
-      mesh.vertexKinds[o] = static_cast<std::uint8_t>(m.kind[v]);
-    }
+    mesh.points[2 * std::size_t(o)] = m.input.toUser(t.xy[2 * v]);  // a power of two: exact
+    mesh.points[2 * std::size_t(o) + 1] = m.input.toUser(t.xy[2 * v + 1]);
+    mesh.vertexKinds[o] = static_cast<std::uint8_t>(m.kind[v]);
   }
   if (!plc.pointMarkers.empty()) {
     mesh.pointMarkers.resize(outVertices, 0);
-    for (std::uint32_t v = 0; v < m.inputCount && v < plc.pointMarkers.size(); ++v)
-      mesh.pointMarkers[v] = plc.pointMarkers[v];
+    for (std::uint32_t i = 0; i < inputPoints && i < plc.pointMarkers.size(); ++i)
+      mesh.pointMarkers[i] = plc.pointMarkers[i];
     for (std::uint32_t v = m.inputCount; v < t.vertexCount(); ++v)
       if (outIndex(v) != kNone)
         mesh.pointMarkers[outIndex(v)] = m.onSegment[v] >= 0 || m.kind[v] == VertexKind::Intersection ? 1 : 0;
