@@ -3,8 +3,8 @@
 //   §6.2  encroachment = a vertex in a subsegment's closed diametral disk; encroached subsegments are
 //         split first; a skinny triangle's circumcenter is rejected if it encroaches a subsegment,
 //         which is split instead;
-//   §6.3  a queue of encroached subsegments and bucketed bad-triangle queues (worst first), both
-//         lazily invalidated; only new triangles and their edges are checked; O(1) encroachment test
+//   §6.3  a queue of encroached subsegments and bucketed bad-triangle queues (smallest shortest
+//         edge first, see checkTriangle), both lazily invalidated; only new triangles and their edges are checked; O(1) encroachment test
 //         (the angle opposite a subsegment is >= 90 degrees);
 //   §6.4  size bounds: triangles larger than the region's / global / user-function area are split too;
 //   §6.6  concentric-shell splitting of subsegments at acute input corners; triangles nestled in a
@@ -42,7 +42,11 @@ constexpr double kPi = 3.14159265358979323846;
 // where it is over 10^4 ulps): subsegments shorter than 3 floors and triangles whose shortest edge is
 // under 2 floors are not split, and a split point this close to a vertex is refused.
 constexpr double kLengthFloor = 0x1p-38;
-constexpr int kBuckets = 64;  // bad-triangle priority classes by smallest angle
+// Bad-triangle priority classes: four per power of two of the squared shortest edge, from 2^-80 (below
+// the length floor) to 2^4 (above the scaled input's extent), and one last class for size alone.
+constexpr int kLowestExponent = -80;
+constexpr int kBuckets = 4 * (4 - kLowestExponent) + 1;
+constexpr int kAngleClasses = 64;  // queued triangles counted by smallest angle, for progress
 // Segments meeting below this angle can make seditious edges. Prop. 6.14 proves termination with
 // 60 degrees; §6.6 advises a smaller angle in practice (fewer triangles left skinny), which threatens
 // termination only well below 20 degrees, and the Steiner budget bounds the work regardless. 45
@@ -51,9 +55,11 @@ constexpr double kSeditiousAngle = kPi / 4;
 
 struct BadTriangle {
   std::uint32_t slot, a, b, c;
+  std::uint8_t angleClass;  // sin^2 of the smallest angle in kAngleClasses steps
 };
 
 double dist(const double* p, const double* q) { return std::hypot(p[0] - q[0], p[1] - q[1]); }
+double sq(const double* p, const double* q) { return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]); }
 
 class Refiner {
  public:
@@ -87,7 +93,7 @@ class Refiner {
       }
       if (stop) break;
       BadTriangle bt;
-      if (!popWorst(bt)) break;
+      if (!popNext(bt)) break;
       if (!t_.alive(bt.slot) || t_.tv[3 * bt.slot] != bt.a || t_.tv[3 * bt.slot + 1] != bt.b ||
           t_.tv[3 * bt.slot + 2] != bt.c)
         continue;  // stale entry: the triangle is gone
@@ -115,6 +121,7 @@ class Refiner {
   std::vector<EdgeRef> encroached_;
   std::vector<std::vector<BadTriangle>> buckets_;
   int lowestBucket_ = kBuckets;
+  std::uint64_t queuedByAngle_[kAngleClasses] = {};
   std::vector<std::uint8_t> corner_;  // per vertex: acute input corner (concentric shells apply)
   std::vector<std::uint32_t> newTris_, parents_;
   struct Inherited {
@@ -232,30 +239,55 @@ class Refiner {
   bool isSkinny(const TriangleQuality& q) const { return theta_ > 0 && q.sin2MinAngle < sin2Theta_; }
 
   void checkTriangle(std::uint32_t s) {
-    const TriangleQuality q = qualityAt(s);
+    const double* p0 = t_.pt(t_.tv[3 * s]);
+    const double* p1 = t_.pt(t_.tv[3 * s + 1]);
+    const double* p2 = t_.pt(t_.tv[3 * s + 2]);
+    const TriangleQuality q = qualityOf(p0, p1, p2);
     const double bound = maxAreaAt(s);
     const bool large = bound > 0 && q.area > bound;
     const bool skinny = isSkinny(q);
     if (!skinny && !large) return;
-    // Worst first: bucket by sin^2 of the smallest angle (0..3/4 for 0..60 degrees, monotone), too-large
-    // but shapely ones last.
-    int k = skinny ? static_cast<int>(q.sin2MinAngle / 0.75 * (kBuckets - 1)) : kBuckets - 1;
-    k = std::clamp(k, 0, kBuckets - 1);
-    buckets_[k].push_back({s, t_.tv[3 * s], t_.tv[3 * s + 1], t_.tv[3 * s + 2]});
+    // Order: skinny triangles with the shortest shortest-edge first, too-large but shapely ones last.
+    // Fixing the smallest features first lets the mesh grade outwards from them; splitting the
+    // skinniest first (measured on the 61 shared PLCs) spreads small triangles far from any feature:
+    // 1.33x Triangle's count at 33 degrees against 0.99x with this order.
+    int k = kBuckets - 1;
+    if (skinny) {
+      const double l2 = std::min({sq(p1, p2), sq(p2, p0), sq(p0, p1)});
+      int e = 0;
+      const double mantissa = std::frexp(l2, &e);  // l2 = mantissa * 2^e, mantissa in [0.5, 1)
+      // Four classes per power of two (of the squared length): cuts at 2^-0.75, 2^-0.5, 2^-0.25.
+      const int quarter = (mantissa >= 0.5946035575013605) + (mantissa >= 0.7071067811865476) +
+                          (mantissa >= 0.8408964152537145);
+      k = std::clamp(4 * (e - kLowestExponent) + quarter, 0, kBuckets - 2);
+    }
+    const auto angleClass = static_cast<std::uint8_t>(
+        std::min<double>(kAngleClasses - 1, q.sin2MinAngle / 0.75 * (kAngleClasses - 1)));
+    buckets_[k].push_back({s, t_.tv[3 * s], t_.tv[3 * s + 1], t_.tv[3 * s + 2], angleClass});
+    ++queuedByAngle_[angleClass];
     lowestBucket_ = std::min(lowestBucket_, k);
   }
 
-  bool popWorst(BadTriangle& out) {
+  bool popNext(BadTriangle& out) {
     while (lowestBucket_ < kBuckets) {
       auto& b = buckets_[lowestBucket_];
       if (!b.empty()) {
         out = b.back();
         b.pop_back();
+        --queuedByAngle_[out.angleClass];
         return true;
       }
       ++lowestBucket_;
     }
     return false;
+  }
+
+  // The smallest angle among queued triangles (entries whose triangle has changed since included),
+  // to within 60 / (kAngleClasses - 1) degrees; for progress reports only.
+  double worstQueuedAngle() const {
+    for (int c = 0; c < kAngleClasses; ++c)
+      if (queuedByAngle_[c]) return std::asin(std::sqrt(0.75 * c / (kAngleClasses - 1))) * 180 / kPi;
+    return o_.minAngle;
   }
 
   bool outOfBudget() {
@@ -267,7 +299,7 @@ class Refiner {
       Progress p;
       p.insertedVertices = inserted_;
       p.triangles = t_.slotCount() - t_.freeSlots.size();
-      p.worstAngle = lowestBucket_ < kBuckets ? 60.0 * lowestBucket_ / (kBuckets - 1) : o_.minAngle;
+      p.worstAngle = worstQueuedAngle();
       if (!o_.onProgress(p)) {
         cancelled_ = true;
         return true;
