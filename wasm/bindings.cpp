@@ -359,7 +359,9 @@ val parseCliArgs(val argsJs) {
     options.set("minAngle", o.minAngle);
     options.set("maxArea", o.maxArea);
     if (o.maxSteiner != ruppert::kAutoSteinerBudget) options.set("maxSteiner", static_cast<double>(o.maxSteiner));
-    options.set("placement", std::string(o.placement == ruppert::Placement::Circumcenter ? "circumcenter" : "offcenter"));
+    options.set("placement", std::string(o.placement == ruppert::Placement::Circumcenter ? "circumcenter"
+                                         : o.placement == ruppert::Placement::Petal   ? "petal"
+                                                                                      : "offcenter"));
     options.set("encroachment", std::string(o.encroachment == ruppert::Encroachment::DiametralDisk ? "disk" : "lens"));
     options.set("variant", std::string(o.variant == ruppert::Variant::BoundingBox ? "box" : "cdt"));
     options.set("convexHull", o.convexHull);

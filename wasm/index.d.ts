@@ -61,7 +61,7 @@ export interface TriangulateOptions {
   trace?: boolean;
   /** Compute stats.lfsIntegral, the chapter's size measure (section 6.5). */
   sizeMeasure?: boolean;
-  placement?: 'offcenter' | 'circumcenter';
+  placement?: 'offcenter' | 'circumcenter' | 'petal';
   /** 'lens' (default): diametral lenses, fewer splits; 'disk': the closed diametral disk of the chapter. */
   encroachment?: 'lens' | 'disk';
   /** 'cdt': constrained Delaunay refinement; 'box': Ruppert's original, conforming, in a box. */

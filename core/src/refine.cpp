@@ -11,7 +11,8 @@
 //         small input angle and triangles whose shortest edge is seditious are not split;
 //   §6.7  the CDT holds only the domain, so refinement never leaves it;
 //   §6.8  off-centers (Üngör): the new vertex sits on the shortest edge's bisector, no farther than
-//         where the triangle it forms with that edge just meets the bound.
+//         where the triangle it forms with that edge just meets the bound; Placement::Petal goes on
+//         to search the shortest edge's petal for a point that makes no new skinny triangle.
 // Termination for any input: besides §6.6, a Steiner budget and a floor on subsegment length below
 // which doubles cannot place new points; hitting either ends refinement with complete = false.
 //
@@ -21,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <string>
 
 #include "predicates.h"
@@ -70,6 +72,7 @@ class Refiner {
     if (o_.encroachment == Encroachment::DiametralLens && theta_ < kPi / 4)
       lensCos2_ = std::cos(2 * theta_) * std::cos(2 * theta_);
     buckets_.resize(kBuckets);
+    if (o_.placement == Placement::Petal && theta_ > 0) preparePetal();
   }
 
   RefineOutcome run() {
@@ -163,10 +166,11 @@ class Refiner {
       return;
     }
     // Generous for any reasonable input, yet small enough that a runaway at an unreachable angle
-    // stops within a second or so: ten thousand, plus a thousand per input vertex (graded meshes of
-    // real inputs use tens), plus eight per unit of area bound (area A with triangles of area a
-    // needs about A / (2 a) vertices).
-    double estimate = 1e4 + 1000.0 * m_.inputCount;
+    // stops within a second or so: ten thousand, plus 200 per input vertex (of the 61 shared PLCs,
+    // the complete meshes at 33 and 35 degrees use at most 40 Steiner vertices per input vertex once
+    // past the first ten thousand), plus eight per unit of area bound (area A with triangles of
+    // area a needs about A / (2 a) vertices).
+    double estimate = 1e4 + 200.0 * m_.inputCount;
     for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
       if (!t_.alive(s) || m_.maxArea[s] <= 0) continue;
       estimate += 8 * qualityAt(s).area / m_.maxArea[s];
@@ -491,7 +495,7 @@ class Refiner {
     double cc[2] = {p[0][0] + (cy * b2 - by * c2) / d, p[0][1] + (bx * c2 - cx * b2) / d};
     double target[2] = {cc[0], cc[1]};
     VertexKind kind = VertexKind::Interior;
-    if (skinny && o_.placement == Placement::OffCenter) {
+    if (skinny && o_.placement != Placement::Circumcenter) {
       // Off-center: on the bisector of the shortest edge, where the isosceles triangle on that edge
       // has apex angle exactly theta (so it just meets the bound).
       const int e = sh.shortestEdge;
@@ -542,6 +546,11 @@ class Refiner {
       if (splitSome) requeue(bt);
       return;
     }
+    // Only where no area bound applies: with one, the bound sets the size and the search buys little
+    // (unit square, max area 1e-6: 794.6 k vertices with it, 794.7 k without, at 4x the time).
+    if (skinny && o_.placement == Placement::Petal && !(maxAreaAt(s) > 0) &&
+        newMinSin2(target, cavityBoundary_) < sin2Theta_ && betterPlacement(s, sh, p, target, loc))
+      kind = VertexKind::OffCenter;
     const std::uint32_t v = m_.addVertex(target[0], target[1], kind, -1);
     corner_.push_back(0);
     if (!insertAt(v, loc)) {
@@ -557,6 +566,83 @@ class Refiner {
     }
   }
 
+  // Candidate points for betterPlacement, for a shortest edge from (-1/2, 0) to (1/2, 0) with the
+  // triangle above it (scaled and rotated onto the real edge when used), sorted by `bound`, their
+  // distance to the nearer endpoint (which no real placement's insertion radius can exceed).
+  struct PetalPoint {
+    double along, across, bound;
+  };
+  std::vector<PetalPoint> petal_;
+  void preparePetal() {
+    static constexpr double kFractions[] = {0, 0.125, -0.125, 0.25, -0.25, 0.375, -0.375, 0.5, -0.5, 0.75, -0.75, 1, -1};
+    for (double extra = 0; extra < 0.35; extra += 0.1) {
+      const double alpha = theta_ + extra;
+      const double phiMax = kPi - alpha - 2 * theta_;
+      if (phiMax < 0) break;
+      const double radius = 1 / (2 * std::sin(alpha)), centre = 0.5 / std::tan(alpha);
+      for (double f : kFractions) {
+        const double along = radius * std::sin(f * phiMax), across = centre + radius * std::cos(f * phiMax);
+        petal_.push_back({along, across, std::hypot(std::fabs(along) - 0.5, across)});
+      }
+    }
+    std::sort(petal_.begin(), petal_.end(), [](const PetalPoint& a, const PetalPoint& b) { return a.bound > b.bound; });
+  }
+
+  // Smallest sin^2 angle among the triangles that inserting x creates, given x's cavity boundary.
+  double newMinSin2(const double* x, const std::vector<std::uint32_t>& boundary) const {
+    double worst = 1;
+    for (std::uint32_t h : boundary)
+      worst = std::min(worst, qualityOf(t_.pt(t_.origin(h)), t_.pt(t_.dest(h)), x).sin2MinAngle);
+    return worst;
+  }
+
+  // Locally better Steiner points, in the spirit of Erten and Üngör's: when the off-center (or the
+  // circumcenter) would itself create a skinny triangle, look in the shortest edge's petal for a
+  // point whose new triangles all meet the bound, and take the one farthest from its neighbours.
+  // The petal of edge uw: points x with angle uxw >= theta and both base angles >= theta. Candidates
+  // lie on the arcs where angle uxw = alpha for alpha = theta .. theta + 0.3 rad: on such an arc,
+  // at central angle phi from its top, the base angles are (pi - alpha - phi) / 2 and
+  // (pi - alpha + phi) / 2, so |phi| <= pi - alpha - 2 theta keeps both >= theta.
+  // Measured on the 61 shared PLCs (geo-mean triangle count against Triangle's, off-centers -> petal):
+  // 0.973 -> 0.882 at 30 degrees, 0.987 -> 0.859 at 33; but 4-7x the refinement time without an area
+  // bound (earcut_water_huge.poly at 33: 42 -> 159 ms), as most searches find no such point.
+  // Returns true (and sets target, loc) if a candidate was found.
+  bool betterPlacement(std::uint32_t s, const TriangleShape& sh, const double* const* p, double* target, Location& loc) {
+    const int e = sh.shortestEdge;
+    const double* u = p[(e + 1) % 3];
+    const double* w = p[(e + 2) % 3];
+    const double len = sh.shortest;
+    const double dx = (w[0] - u[0]) / len, dy = (w[1] - u[1]) / len;
+    const double nx = -dy, ny = dx;  // towards the triangle's side of u->w (counter-clockwise)
+    const double mx = (u[0] + w[0]) / 2, my = (u[1] + w[1]) / 2;
+    double bestRadius = 0, best[2] = {0, 0};
+    Location bestLoc;
+    for (const PetalPoint& c : petal_) {
+      if (c.bound * len <= bestRadius) break;
+      const double x[2] = {mx + len * (c.along * dx + c.across * nx), my + len * (c.along * dy + c.across * ny)};
+      std::uint32_t blocked;
+      const Location l = walk(s, x, blocked);
+      if (blocked != kNone || l.kind != Location::InTriangle) continue;
+      t_.cavity(x, l, candidateTris_, candidateBoundary_);
+      // x must destroy the skinny triangle (lie in its circumcircle), and make nothing skinny.
+      if (std::find(candidateTris_.begin(), candidateTris_.end(), s) == candidateTris_.end() ||
+          newMinSin2(x, candidateBoundary_) < sin2Theta_)
+        continue;
+      bool encroaching = false;
+      double nearest = HUGE_VAL;
+      for (std::uint32_t h : candidateBoundary_) {
+        nearest = std::min(nearest, dist(x, t_.pt(t_.origin(h))));
+        if (t_.con[h] != kFree && encroaches(x, t_.pt(t_.origin(h)), t_.pt(t_.dest(h)))) encroaching = true;
+      }
+      if (encroaching || nearest <= bestRadius) continue;
+      bestRadius = nearest, best[0] = x[0], best[1] = x[1], bestLoc = l;
+    }
+    if (bestRadius == 0) return false;
+    target[0] = best[0], target[1] = best[1];
+    loc = bestLoc;
+    return true;
+  }
+
   void reject(const BadTriangle& bt, std::uint32_t h, const double* target) {
     ++out_.rejected;
     if (splitSubsegment(h, &bt, target)) requeue(bt);
@@ -569,7 +655,7 @@ class Refiner {
       checkTriangle(bt.slot);
   }
 
-  std::vector<std::uint32_t> cavityTris_, cavityBoundary_;
+  std::vector<std::uint32_t> cavityTris_, cavityBoundary_, candidateTris_, candidateBoundary_;
   std::vector<EdgeRef> rejectPairs_;
 
   // ---- result ------------------------------------------------------------------------------------

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "plc_generators.h"
 #include "validator.h"
@@ -89,6 +91,33 @@ TEST_CASE("closed diametral disks (the chapter's definition) also refine the cor
     const Mesh disk = refineChecked(plc, o, file);
     INFO(file);
     CHECK(disk.complete);
+  }
+}
+
+// Petal placement must keep every guarantee and earn its time: fewer triangles than off-centers in
+// total, over the shared corpus (when present) and over random star polygons with holes.
+TEST_CASE("petal placement refines validly and with fewer triangles than off-centers", "[refine]") {
+  std::vector<std::pair<std::string, Plc>> inputs;
+  for (const auto& file : ruppert_test::polyFilesIn(ruppert_test::sharedDataDir()))
+    inputs.emplace_back(file, ruppert::readFile(file));
+  if (inputs.empty()) WARN("shared data folder not found: petal placement checked on generated PLCs only");
+  for (std::uint64_t seed = 1; seed <= 20; ++seed)
+    inputs.emplace_back("star polygon seed " + std::to_string(seed), ruppert_test::randomStarPolygon(seed, 40, 2).plc);
+  for (double angle : {30.0, 33.0}) {
+    std::uint64_t offCenter = 0, petal = 0;
+    for (const auto& [name, plc] : inputs) {
+      Options o;
+      o.minAngle = angle;
+      offCenter += ruppert::triangulate(plc, o).stats.triangles;
+      o.placement = ruppert::Placement::Petal;
+      const Mesh mesh = refineChecked(plc, o, name);
+      INFO(name << " at " << angle);
+      for (const auto& r : mesh.reasons) INFO(r.message);
+      CHECK(mesh.complete);
+      petal += mesh.stats.triangles;
+    }
+    INFO("at " << angle << " degrees: off-centers " << offCenter << " triangles, petal " << petal);
+    CHECK(petal < offCenter);
   }
 }
 

@@ -83,59 +83,107 @@ struct Scaled {
 };
 
 // Uniform grid of triangle bounding boxes for point-in-mesh queries (overlap and coverage checks).
-class TriangleGrid {
+// Bounding-volume hierarchy over the triangles' bounding boxes: split at the median centroid along
+// the longer side, leaves of up to 8 triangles. Unlike a uniform grid it stays O(log n) per query on
+// strongly graded meshes (a grid cell over a cluster holds thousands of triangles).
+class TriangleIndex {
  public:
-  explicit TriangleGrid(const Scaled& s) : s_(s) {
+  explicit TriangleIndex(const Scaled& s) : s_(s) {
     if (s.nt == 0) return;
-    lo_[0] = lo_[1] = INFINITY;
-    double hi[2] = {-INFINITY, -INFINITY};
-    for (std::uint32_t v : s.mesh.triangles)
-      for (int k = 0; k < 2; ++k) {
-        lo_[k] = std::min(lo_[k], s.p(v)[k]);
-        hi[k] = std::max(hi[k], s.p(v)[k]);
-      }
-    n_ = std::max<std::size_t>(1, std::min<std::size_t>(1024, std::size_t(std::sqrt(double(s.nt)))));
-    for (int k = 0; k < 2; ++k) size_[k] = std::max((hi[k] - lo_[k]) / double(n_), 1e-300);
-    cells_.resize(n_ * n_);
+    boxes_.resize(s.nt);
+    order_.resize(s.nt);
     for (std::size_t t = 0; t < s.nt; ++t) {
-      double bl[2] = {INFINITY, INFINITY}, bh[2] = {-INFINITY, -INFINITY};
+      Box& b = boxes_[t];
       for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 2; ++k) {
-          bl[k] = std::min(bl[k], s.p(s.v(t, i))[k]);
-          bh[k] = std::max(bh[k], s.p(s.v(t, i))[k]);
+          b.lo[k] = std::min(b.lo[k], s.p(s.v(t, i))[k]);
+          b.hi[k] = std::max(b.hi[k], s.p(s.v(t, i))[k]);
         }
-      const std::size_t x0 = cell(bl[0], 0), x1 = cell(bh[0], 0), y0 = cell(bl[1], 1), y1 = cell(bh[1], 1);
-      for (std::size_t y = y0; y <= y1; ++y)
-        for (std::size_t x = x0; x <= x1; ++x) cells_[y * n_ + x].push_back(std::uint32_t(t));
+      order_[t] = std::uint32_t(t);
     }
+    nodes_.reserve(2 * s.nt / kLeaf + 2);
+    build(0, s.nt);
   }
 
   // Triangles whose closed region contains q (strict = open region only).
   std::vector<std::uint32_t> containing(const double* q, bool strict) const {
     std::vector<std::uint32_t> result;
-    if (cells_.empty() || !(q[0] >= lo_[0] && q[1] >= lo_[1])) return result;
-    const std::size_t x = cell(q[0], 0), y = cell(q[1], 1);
-    for (std::uint32_t t : cells_[y * n_ + x]) {
-      const double* a = s_.p(s_.v(t, 0));
-      const double* b = s_.p(s_.v(t, 1));
-      const double* c = s_.p(s_.v(t, 2));
-      const double o1 = orient2d(a, b, q), o2 = orient2d(b, c, q), o3 = orient2d(c, a, q);
-      const bool inside = strict ? (o1 > 0 && o2 > 0 && o3 > 0) : (o1 >= 0 && o2 >= 0 && o3 >= 0);
-      if (inside) result.push_back(t);
+    if (nodes_.empty()) return result;
+    std::vector<std::uint32_t> stack{0};
+    while (!stack.empty()) {
+      const Node& n = nodes_[stack.back()];
+      stack.pop_back();
+      if (!(q[0] >= n.box.lo[0] && q[0] <= n.box.hi[0] && q[1] >= n.box.lo[1] && q[1] <= n.box.hi[1])) continue;
+      if (n.left != kLeafMark) {
+        stack.push_back(n.left);
+        stack.push_back(n.left + 1);
+        continue;
+      }
+      for (std::size_t i = n.first; i < n.first + n.count; ++i) {
+        const std::uint32_t t = order_[i];
+        const double* a = s_.p(s_.v(t, 0));
+        const double* b = s_.p(s_.v(t, 1));
+        const double* c = s_.p(s_.v(t, 2));
+        const double o1 = orient2d(a, b, q), o2 = orient2d(b, c, q), o3 = orient2d(c, a, q);
+        const bool inside = strict ? (o1 > 0 && o2 > 0 && o3 > 0) : (o1 >= 0 && o2 >= 0 && o3 >= 0);
+        if (inside) result.push_back(t);
+      }
     }
     return result;
   }
 
  private:
-  std::size_t cell(double v, int k) const {
-    const double f = (v - lo_[k]) / size_[k];
-    if (!(f > 0)) return 0;
-    return std::min(n_ - 1, std::size_t(f));
+  static constexpr std::size_t kLeaf = 8;
+  static constexpr std::uint32_t kLeafMark = 0xffffffffu;
+  struct Box {
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  };
+  struct Node {
+    Box box;
+    std::uint32_t left = kLeafMark;  // children are left and left + 1
+    std::size_t first = 0, count = 0;
+  };
+
+  // Builds the tree over order_[first, first + count), root at nodes_[0], with an explicit stack.
+  void build(std::size_t first, std::size_t count) {
+    nodes_.push_back({});
+    struct Job {
+      std::uint32_t node;
+      std::size_t first, count;
+    };
+    std::vector<Job> jobs{{0, first, count}};
+    while (!jobs.empty()) {
+      const Job j = jobs.back();
+      jobs.pop_back();
+      Box box;
+      for (std::size_t i = j.first; i < j.first + j.count; ++i)
+        for (int k = 0; k < 2; ++k) {
+          box.lo[k] = std::min(box.lo[k], boxes_[order_[i]].lo[k]);
+          box.hi[k] = std::max(box.hi[k], boxes_[order_[i]].hi[k]);
+        }
+      nodes_[j.node].box = box;
+      nodes_[j.node].first = j.first;
+      nodes_[j.node].count = j.count;
+      if (j.count <= kLeaf) continue;
+      const int axis = box.hi[0] - box.lo[0] >= box.hi[1] - box.lo[1] ? 0 : 1;
+      const std::size_t half = j.count / 2;
+      auto centre = [&](std::uint32_t t) { return boxes_[t].lo[axis] + boxes_[t].hi[axis]; };
+      std::nth_element(order_.begin() + std::ptrdiff_t(j.first), order_.begin() + std::ptrdiff_t(j.first + half),
+                       order_.begin() + std::ptrdiff_t(j.first + j.count),
+                       [&](std::uint32_t a, std::uint32_t b) { return centre(a) < centre(b); });
+      const std::uint32_t left = std::uint32_t(nodes_.size());
+      nodes_.push_back({});
+      nodes_.push_back({});
+      nodes_[j.node].left = left;
+      jobs.push_back({left, j.first, half});
+      jobs.push_back({left + 1, j.first + half, j.count - half});
+    }
   }
+
   const Scaled& s_;
-  double lo_[2] = {0, 0}, size_[2] = {1, 1};
-  std::size_t n_ = 0;
-  std::vector<std::vector<std::uint32_t>> cells_;
+  std::vector<Box> boxes_;
+  std::vector<std::uint32_t> order_;
+  std::vector<Node> nodes_;
 };
 
 // --- structural checks (sizes and indices) -------------------------------------------------------
@@ -340,7 +388,7 @@ void checkVertexFans(const Scaled& s, const std::vector<bool>& used, Problems& o
 // No used vertex lies in the closed region of a triangle it is not a vertex of: that would be an
 // overlap or a T-junction (a vertex on another triangle's edge). Catches overlapping patches that
 // share no vertex, which the fan check cannot see. Exact: only input coordinates reach orient2d.
-void checkNoOverlap(const Scaled& s, const std::vector<bool>& used, const TriangleGrid& grid, Problems& out) {
+void checkNoOverlap(const Scaled& s, const std::vector<bool>& used, const TriangleIndex& grid, Problems& out) {
   for (std::size_t v = 0; v < s.np; ++v) {
     if (!used[v]) continue;
     for (std::uint32_t t : grid.containing(s.p(std::uint32_t(v)), false))
@@ -403,7 +451,7 @@ void checkVertexKinds(const Scaled& s, const std::vector<bool>& used, const Vali
 
 // Input points no triangle uses must be merged duplicates or lie outside the meshed domain.
 void checkUnusedInputPoints(const Scaled& s, const std::vector<bool>& used, const ValidateOptions& o,
-                            const TriangleGrid& grid, Problems& out) {
+                            const TriangleIndex& grid, Problems& out) {
   std::unordered_set<std::int64_t> merged;
   for (const auto& n : s.mesh.notices)
     if (n.kind == NoticeKind::DuplicatePoint) merged.insert(n.a);
@@ -418,7 +466,7 @@ void checkUnusedInputPoints(const Scaled& s, const std::vector<bool>& used, cons
 }
 
 // A hole seed eats its whole region, so no triangle may contain it.
-void checkHoles(const Scaled& s, const ValidateOptions& o, const TriangleGrid& grid, Problems& out) {
+void checkHoles(const Scaled& s, const ValidateOptions& o, const TriangleIndex& grid, Problems& out) {
   const std::vector<double>& holes = o.input->holes;
   for (std::size_t h = 0; h + 1 < holes.size(); h += 2) {
     const double q[2] = {std::ldexp(holes[h], -s.exponent), std::ldexp(holes[h + 1], -s.exponent)};
@@ -429,7 +477,7 @@ void checkHoles(const Scaled& s, const ValidateOptions& o, const TriangleGrid& g
 }
 
 // Every input segment is a chain of subsegments from its first endpoint to its last (see header).
-void checkSegmentCoverage(const Scaled& s, const EdgeMaps& maps, const ValidateOptions& o, const TriangleGrid& grid,
+void checkSegmentCoverage(const Scaled& s, const EdgeMaps& maps, const ValidateOptions& o, const TriangleIndex& grid,
                           Problems& out) {
   const Mesh& m = s.mesh;
   const ruppert::Plc& in = *o.input;
@@ -606,7 +654,7 @@ std::vector<std::string> validateMesh(const Mesh& mesh, const ValidateOptions& o
   checkNeighbors(s, maps, out);
   if (options.checkDelaunay) checkDelaunay(s, maps, out);
   checkVertexFans(s, used, out);
-  const TriangleGrid grid(s);
+  const TriangleIndex grid(s);
   checkNoOverlap(s, used, grid, out);
   checkNearDuplicates(s, used, options, out);
   checkVertexKinds(s, used, options, out);

@@ -4,6 +4,7 @@
 //   byte 0   minimum angle: value % 46 degrees (0..45)
 //   byte 1   global max area: 0 = none, else (bounding-box area) / value
 //   byte 2   flags: bit 0 circumcenters instead of off-centers, bit 1 convex hull, bit 2 auto holes,
+//            bit 3 petal placement (unless bit 0),
 //            bits 4-5 coordinate encoding (below), bit 6 the rest is .poly text, not binary
 //   byte 3   scale: integer coordinates are multiplied by 2^(signed byte), reaching 2^-128..2^127
 //   binary:  count, then points; count, then segments (2 index bytes; 255 = one past the end);
@@ -110,7 +111,7 @@ void dumpPlc(const ruppert::Plc& plc, const ruppert::Options& o) {
   std::FILE* f = std::fopen(path, "w");
   if (!f) return;
   std::fprintf(f, "# options: minAngle %.17g maxArea %.17g placement %s convexHull %d autoHoles %d maxSteiner %llu\n",
-               o.minAngle, o.maxArea, o.placement == ruppert::Placement::OffCenter ? "offcenter" : "circumcenter",
+               o.minAngle, o.maxArea, o.placement == ruppert::Placement::OffCenter ? "offcenter" : o.placement == ruppert::Placement::Petal ? "petal" : "circumcenter",
                o.convexHull, o.autoHoles, static_cast<unsigned long long>(o.maxSteiner));
   std::fprintf(f, "%zu 2 0 0\n", plc.points.size() / 2);
   for (std::size_t i = 0; i < plc.points.size() / 2; ++i)
@@ -137,7 +138,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::uint8_t areaSelector = in.byte();
   const std::uint8_t flags = in.byte();
   const double scale = std::ldexp(1.0, static_cast<std::int8_t>(in.byte()));
-  o.placement = (flags & 1) ? ruppert::Placement::Circumcenter : ruppert::Placement::OffCenter;
+  o.placement = (flags & 1) ? ruppert::Placement::Circumcenter
+                : (flags & 8) ? ruppert::Placement::Petal
+                              : ruppert::Placement::OffCenter;
   o.convexHull = (flags & 2) != 0;
   o.autoHoles = (flags & 4) != 0;
   o.maxSteiner = kMaxSteiner;

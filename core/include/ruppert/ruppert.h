@@ -91,6 +91,10 @@ struct Plc {
 enum class Placement : std::uint8_t {
   Circumcenter = 0,  // Ruppert's rule (§6.2)
   OffCenter = 1,     // Üngör's off-centers (§6.8): fewer triangles at the same angle
+  Petal = 2,         // off-centers, but where one would itself make a skinny triangle, the point of
+                     // the shortest edge's petal that makes none and lies farthest from its
+                     // neighbours (after Erten and Üngör): fewer triangles still, slower without an
+                     // area bound (with one it is the same as OffCenter)
 };
 
 // When a vertex v encroaches a subsegment ab (and so ab is split, or v rejected).
