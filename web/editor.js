@@ -3,6 +3,10 @@
 // Tools: select (pick, drag, delete), point, polyline (click, click, ..., click the first vertex
 // to close; Enter, double-click or Esc ends an open one), hole seed, region seed.
 // Everywhere: wheel zooms, middle-drag or Space+drag pans.
+// Touch: two fingers pinch-zoom and pan; one finger on empty space pans once it moves, and a tap
+// (no movement) does what a click does, so a pinch never leaves a stray vertex behind.
+// Keyboard: with the canvas focused and nothing selected, the arrow keys move a keyboard cursor
+// (a crosshair, one grid step, five with Shift) and Enter does what a click there would do.
 //
 // The editor mutates app.drawing and then calls app.changed({ commit }): commit = true records
 // an undo step (a click, the end of a drag), false only re-meshes (while dragging).
@@ -10,14 +14,23 @@ import { Item, addPoint, addSegment, hitTest, itemPosition, moveItem, removeItem
 import { snapToGrid } from './view.js';
 
 const PICK_RADIUS = 9;  // CSS pixels
+const TAP_SLOP = 10;    // CSS pixels a touch may move and still be a tap
 
 export const TOOL_HINTS = {
   select: 'Select: click a vertex, segment or seed; drag to move it; Delete removes it. Drag empty space to pan.',
-  point: 'Point: click to add a vertex (drag an existing one to move it).',
+  point: 'Point: click (or arrows, then Enter) to add a vertex (drag an existing one to move it).',
   polyline: 'Polygon: click to add vertices, click the first vertex to close, Enter or double-click ends an open polyline.',
   hole: 'Hole: click inside a closed polygon to make it a hole.',
   region: 'Region: click inside a polygon to give it the attribute and max area set in the panel.',
 };
+
+// Capture can fail (a pointer that is already gone throws NotFoundError): the gesture works without it.
+function capture(element, pointerId) {
+  try { element.setPointerCapture?.(pointerId); } catch { /* not capturable: fine */ }
+}
+function release(element, pointerId) {
+  try { element.releasePointerCapture?.(pointerId); } catch { /* not captured: fine */ }
+}
 
 const isTextField = (el) => el instanceof HTMLElement &&
   (el.isContentEditable || el.tagName === 'TEXTAREA' || el.tagName === 'SELECT' ||
@@ -37,6 +50,8 @@ export class Editor {
     this.cursor = null;      // world position of the pointer
     this.gesture = null;     // { type: 'pan' | 'drag', ... } while a button is down
     this.spaceDown = false;
+    this.touches = new Map(); // pointerId -> { x, y } (client pixels) of fingers on the canvas
+    this.keyCursor = null;    // world position of the keyboard cursor, once arrows moved it
     this.bind();
   }
 
@@ -89,6 +104,7 @@ export class Editor {
     this.hoverItem = null;
     this.chain = null;
     this.gesture = null;
+    this.keyCursor = null;
   }
 
   bind() {
@@ -124,6 +140,15 @@ export class Editor {
     this.app.viewMoved = true;  // from now on the view stays where the user works
     const world = this.worldOf(e);
     this.cursor = world;
+    this.keyCursor = null;
+    const touch = e.pointerType === 'touch';
+    if (touch) {
+      this.touches.set(e.pointerId, { x: e.clientX, y: e.clientY });
+      if (this.touches.size >= 2) {
+        this.startPinch();
+        return;
+      }
+    }
     if (e.button === 1 || (e.button === 0 && this.spaceDown)) {
       e.preventDefault();
       this.startGesture(e, { type: 'pan', x: e.clientX, y: e.clientY });
@@ -134,7 +159,8 @@ export class Editor {
     const r = this.radius;
 
     if (this.tool === 'polyline') {
-      this.polylineClick(world);
+      if (touch) this.startGesture(e, { type: 'tap', x: e.clientX, y: e.clientY, world });
+      else this.polylineClick(world);
       return;
     }
     // Every other tool drags an existing vertex or seed it is pressed on.
@@ -148,11 +174,21 @@ export class Editor {
       }
       return;
     }
-    const at = this.place(world);
     if (this.tool === 'select') {
       this.select(null);
       this.startGesture(e, { type: 'pan', x: e.clientX, y: e.clientY });
-    } else if (this.tool === 'point') {
+    } else if (touch) {
+      this.startGesture(e, { type: 'tap', x: e.clientX, y: e.clientY, world });
+    } else {
+      this.placeAt(world);
+    }
+  }
+
+  /** What a click on empty space does with the point, hole and region tools. */
+  placeAt(world) {
+    const d = this.app.drawing;
+    const at = this.place(world);
+    if (this.tool === 'point') {
       const index = addPoint(d, at.x, at.y);
       this.selection = { kind: Item.POINT, index };
       this.app.changed({ commit: true });
@@ -193,18 +229,53 @@ export class Editor {
 
   startGesture(e, gesture) {
     this.gesture = { ...gesture, pointerId: e.pointerId };
-    this.app.canvas.setPointerCapture?.(e.pointerId);
+    capture(this.app.canvas, e.pointerId);
+  }
+
+  /** Two fingers down: whatever the first one started ends (a drag keeps what it moved). */
+  startPinch() {
+    const g = this.gesture;
+    if (g?.type === 'drag' && g.moved) this.app.changed({ commit: true });
+    const [a, b] = [...this.touches.values()];
+    this.gesture = { type: 'pinch', distance: Math.hypot(a.x - b.x, a.y - b.y), mid: { x: (a.x + b.x) / 2, y: (a.y + b.y) / 2 } };
+    for (const id of this.touches.keys()) capture(this.app.canvas, id);
+  }
+
+  pinchMove() {
+    const g = this.gesture;
+    const [a, b] = [...this.touches.values()];
+    const distance = Math.hypot(a.x - b.x, a.y - b.y);
+    const mid = { x: (a.x + b.x) / 2, y: (a.y + b.y) / 2 };
+    const rect = this.app.canvas.getBoundingClientRect();
+    this.app.view.panBy(mid.x - g.mid.x, mid.y - g.mid.y);
+    if (g.distance > 0 && distance > 0) this.app.view.zoomAt(mid.x - rect.left, mid.y - rect.top, distance / g.distance);
+    g.distance = distance;
+    g.mid = mid;
+    this.app.viewMoved = true;
+    this.app.redraw();
   }
 
   pointerMove(e) {
+    if (this.touches.has(e.pointerId)) this.touches.set(e.pointerId, { x: e.clientX, y: e.clientY });
+    this.keyCursor = null;  // the pointer is back in charge
     const world = this.worldOf(e);
     this.cursor = world;
     const g = this.gesture;
-    if (g?.type === 'pan') {
-      this.app.view.panBy(e.clientX - g.x, e.clientY - g.y);
+    if (g?.type === 'pinch') {
+      if (this.touches.size >= 2) this.pinchMove();
+      return;
+    }
+    if (g?.type === 'tap') {
+      // A finger that moves is panning, not tapping.
+      if (Math.hypot(e.clientX - g.x, e.clientY - g.y) > TAP_SLOP) this.gesture = { type: 'pan', x: g.x, y: g.y, pointerId: g.pointerId };
+      else return;
+    }
+    if (this.gesture?.type === 'pan') {
+      const p = this.gesture;
+      this.app.view.panBy(e.clientX - p.x, e.clientY - p.y);
       this.app.viewMoved = true;
-      g.x = e.clientX;
-      g.y = e.clientY;
+      p.x = e.clientX;
+      p.y = e.clientY;
       this.app.redraw();
       return;
     }
@@ -224,11 +295,29 @@ export class Editor {
   }
 
   pointerUp(e) {
+    this.touches.delete(e.pointerId);
     const g = this.gesture;
+    if (g?.type === 'pinch') {
+      release(this.app.canvas, e.pointerId);
+      if (this.touches.size < 2) this.gesture = null;  // the finger left behind does nothing
+      return;
+    }
     if (!g || (e.pointerId !== undefined && g.pointerId !== e.pointerId)) return;
     this.gesture = null;
-    this.app.canvas.releasePointerCapture?.(e.pointerId);
+    release(this.app.canvas, e.pointerId);
     if (g.type === 'drag' && g.moved) this.app.changed({ commit: true });
+    if (g.type === 'tap' && e.type === 'pointerup') this.clickAt(g.world);
+  }
+
+  /** A click (or tap, or Enter at the keyboard cursor) on empty space or a vertex, by tool. */
+  clickAt(world) {
+    if (this.tool === 'polyline') {
+      this.polylineClick(world);
+      return;
+    }
+    const hit = hitTest(this.app.drawing, world.x, world.y, this.radius, this.tool === 'select' ? undefined : [Item.HOLE, Item.REGION, Item.POINT]);
+    if (hit !== null || this.tool === 'select') this.select(hit);
+    else this.placeAt(world);
   }
 
   /** The pending polyline for the renderer. */
@@ -257,10 +346,13 @@ export class Editor {
       handled = this.deleteSelection();
     } else if (key === 'Escape') {
       if (!this.endChain()) this.select(null);
+    } else if (key === 'Enter' && this.keyCursor !== null && e.target === this.app.canvas) {
+      this.clickAt(this.keyCursor);
+      this.select(null);  // the arrows keep moving the cursor, not what was just placed
     } else if (key === 'Enter' && this.chain !== null && e.target === this.app.canvas) {
       this.endChain();
     } else if (key.startsWith('Arrow') && (e.target === this.app.canvas || e.target === document.body)) {
-      this.arrow(key, e.shiftKey);
+      this.arrow(key, e.shiftKey, e.target === this.app.canvas);
     } else if (key === '+' || key === '=') {
       this.app.view.zoomAt(this.app.view.width / 2, this.app.view.height / 2, 1.25);
       this.app.viewMoved = true;
@@ -278,8 +370,11 @@ export class Editor {
     if (handled) e.preventDefault();
   }
 
-  /** Arrow keys move the selected vertex or seed by one grid step, else pan the view. */
-  arrow(key, large) {
+  /**
+   * Arrow keys move the selected vertex or seed by one grid step; with nothing selected they move
+   * the keyboard cursor on the focused canvas (the view follows it), else pan the view.
+   */
+  arrow(key, large, onCanvas) {
     const dx = key === 'ArrowLeft' ? -1 : key === 'ArrowRight' ? 1 : 0;
     const dy = key === 'ArrowUp' ? 1 : key === 'ArrowDown' ? -1 : 0;
     const item = this.selection;
@@ -289,6 +384,22 @@ export class Editor {
       const round = (v) => (this.app.snap ? snapToGrid(v, step) : Number(v.toPrecision(12)));
       moveItem(this.app.drawing, item, round(at.x + dx * step), round(at.y + dy * step));
       this.app.changed({ commit: true });
+    } else if (onCanvas && this.tool !== 'select') {
+      const view = this.app.view;
+      const step = view.gridStep() * (large ? 5 : 1);
+      const start = this.keyCursor ?? this.place(view.toWorld(view.width / 2, view.height / 2));
+      const round = (v) => snapToGrid(v, step / (large ? 5 : 1));
+      this.keyCursor = { x: round(start.x + dx * step), y: round(start.y + dy * step) };
+      this.cursor = this.keyCursor;
+      // Keep the cursor in view: pan by the part that left it (plus a margin).
+      const s = view.toScreen(this.keyCursor.x, this.keyCursor.y);
+      const margin = 40;
+      const px = s.x < margin ? margin - s.x : s.x > view.width - margin ? view.width - margin - s.x : 0;
+      const py = s.y < margin ? margin - s.y : s.y > view.height - margin ? view.height - margin - s.y : 0;
+      if (px || py) view.panBy(px, py);
+      this.app.viewMoved = true;
+      this.app.hover(this.keyCursor);
+      this.app.redraw();
     } else {
       const pixels = large ? 200 : 40;
       this.app.view.panBy(-dx * pixels, dy * pixels);

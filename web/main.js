@@ -100,6 +100,7 @@ function draw() {
     hoverItem: editor.hoverItem,
     hoverTriangle: app.hoverTriangle,
     pendingChain: editor.pendingChain(),
+    keyCursor: editor.keyCursor,
     notices: app.notices,
     step,
   });
@@ -499,9 +500,55 @@ for (const preset of PRESETS) {
   $('preset').append(option);
 }
 $('preset').addEventListener('change', () => {
-  const drawing = presetDrawing($('preset').value);
+  const value = $('preset').value;
+  if (value.startsWith(SHARED_PRESET)) {
+    loadSharedPreset(value.slice(SHARED_PRESET.length));
+    return;
+  }
+  const drawing = presetDrawing(value);
   if (drawing) setDrawing({ ...drawing, options: { ...app.drawing.options } });
 });
+
+// The corpus of real PLCs beside the repository (../shared/data), when the server offers it
+// (web/serve.mjs does; a plain static host does not, and the group is simply absent).
+const SHARED_PRESET = 'shared:';
+async function addSharedPresets() {
+  let list;
+  try {
+    const response = await fetch('../shared-data/index.json', { cache: 'no-cache' });
+    if (!response.ok) return;
+    list = await response.json();
+  } catch {
+    return;
+  }
+  if (!list?.available || !Array.isArray(list.files) || list.files.length === 0) return;
+  const group = document.createElement('optgroup');
+  group.label = 'Real inputs (../shared/data)';
+  group.id = 'shared-presets';
+  for (const name of list.files) {
+    const option = document.createElement('option');
+    option.value = SHARED_PRESET + name;
+    option.textContent = name;
+    group.append(option);
+  }
+  $('preset').append(group);
+}
+
+async function loadSharedPreset(name) {
+  const failed = loading();
+  try {
+    const response = await fetch(`../shared-data/${encodeURIComponent(name)}`, { cache: 'no-cache' });
+    if (!response.ok) throw new Error(`the server answered ${response.status}`);
+    const plc = await parseInput(await response.text(), name);
+    setDrawing(fromPlc(plc, app.drawing.options));
+    $('preset').value = SHARED_PRESET + name;
+    setStatus(`Loaded ${name}: ${plc.points.length / 2} points, ${plc.segments.length / 2} segments.`, 'ok');
+  } catch (error) {
+    failed();
+    setStatus(`Could not load ${name}: ${error.message}`, 'error');
+  }
+}
+if (!embedded) addSharedPresets();
 
 /** Marks the page busy while a file or message is read, so that nothing waits on an old mesh. */
 function loading() {

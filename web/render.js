@@ -141,7 +141,8 @@ export class Renderer {
   /**
    * @param {object} s what to draw:
    *   view, drawing, colorMode, showGrid, snap, selection, hoverItem, hoverTriangle,
-   *   pendingChain: { from: pointIndex, to: {x,y} } | null, notices, step: { mesh, events, index } | null
+   *   pendingChain: { from: pointIndex, to: {x,y} } | null, keyCursor: {x,y} | null (keyboard cursor),
+   *   notices, step: { mesh, events, index } | null
    */
   draw(s) {
     const { ctx, dpr } = this;
@@ -261,6 +262,15 @@ export class Renderer {
         ctx.beginPath(); ctx.arc(first.x, first.y, 9, 0, 2 * Math.PI);
         ctx.strokeStyle = COLOURS.hover; ctx.lineWidth = 1.5; ctx.stroke();
       }
+    }
+
+    // The keyboard cursor: a crosshair where Enter places the next vertex or seed.
+    if (s.keyCursor) {
+      const c = view.toScreen(s.keyCursor.x, s.keyCursor.y);
+      ctx.beginPath();
+      ctx.moveTo(c.x - 10, c.y); ctx.lineTo(c.x + 10, c.y);
+      ctx.moveTo(c.x, c.y - 10); ctx.lineTo(c.x, c.y + 10);
+      ctx.strokeStyle = COLOURS.hover; ctx.lineWidth = 2; ctx.stroke();
     }
 
     // Points.

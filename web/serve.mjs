@@ -5,13 +5,54 @@
 //   node web/serve.mjs            # PORT from the environment, else 8080, else any free port
 //
 // Listens on 127.0.0.1 only. No dependencies: node:http + node:fs.
+//
+// When the corpus of real PLCs sits beside the repository (../shared/data, or RUPPERT_SHARED_DATA),
+// its .poly files are served read-only under /shared-data/, listed by /shared-data/index.json
+// ({ available, files }), so the page can offer them as presets. Without the folder the list is
+// empty (a 200 answer, so the page logs no failed request).
 import { createServer } from 'node:http';
-import { createReadStream } from 'node:fs';
-import { stat } from 'node:fs/promises';
-import { extname, resolve, sep } from 'node:path';
+import { createReadStream, existsSync } from 'node:fs';
+import { readdir, stat } from 'node:fs/promises';
+import { basename, extname, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 const root = resolve(fileURLToPath(new URL('..', import.meta.url)));
+const sharedData = resolve(process.env.RUPPERT_SHARED_DATA || resolve(root, '..', 'shared', 'data'));
+const SHARED_PREFIX = '/shared-data/';
+
+/** The corpus's top-level .poly files, sorted; [] when the folder is absent. */
+async function sharedDataFiles() {
+  if (!existsSync(sharedData)) return [];
+  const entries = await readdir(sharedData, { withFileTypes: true });
+  return entries.filter((e) => e.isFile() && e.name.endsWith('.poly')).map((e) => e.name).sort();
+}
+
+async function handleSharedData(pathname, request, response) {
+  let name;
+  try {
+    name = decodeURIComponent(pathname.slice(SHARED_PREFIX.length));
+  } catch {
+    send(response, 404, 'not found\n');
+    return;
+  }
+  const files = await sharedDataFiles();
+  if (name === 'index.json') {
+    const body = JSON.stringify({ available: files.length > 0, files });
+    response.writeHead(200, { 'content-type': MIME_TYPES['.json'], 'cache-control': 'no-cache' });
+    response.end(request.method === 'HEAD' ? undefined : body);
+    return;
+  }
+  // Only a listed file name (no folders, no '..'): the list is the whitelist.
+  if (basename(name) !== name || !files.includes(name)) {
+    send(response, 404, 'not found\n');
+    return;
+  }
+  const file = resolve(sharedData, name);
+  const info = await stat(file);
+  response.writeHead(200, { 'content-type': MIME_TYPES['.poly'], 'content-length': info.size, 'cache-control': 'no-cache' });
+  if (request.method === 'HEAD') response.end();
+  else createReadStream(file).on('error', () => response.destroy()).pipe(response);
+}
 
 const MIME_TYPES = {
   '.html': 'text/html; charset=utf-8',
@@ -60,6 +101,10 @@ async function handle(request, response) {
   if (url.pathname === '/') {
     response.writeHead(302, { location: '/web/' });
     response.end();
+    return;
+  }
+  if (url.pathname.startsWith(SHARED_PREFIX)) {
+    await handleSharedData(url.pathname, request, response);
     return;
   }
   let file = resolvePath(url.pathname);
