@@ -77,6 +77,36 @@ test('meshes of real PLCs pass the independent validator', { skip: !haveData && 
   }
 });
 
+// A star-shaped polygon around (0.5, 0.5) with n vertices (a deterministic generator: LCG).
+function starPolygon(seed, n) {
+  let state = seed >>> 0;
+  const random = () => ((state = (Math.imul(state, 1664525) + 1013904223) >>> 0) / 2 ** 32);
+  const angles = Array.from({ length: n }, () => random() * 2 * Math.PI).sort((a, b) => a - b);
+  const points = [];
+  const segments = [];
+  angles.forEach((a, i) => {
+    const r = 0.2 + 0.3 * random();
+    points.push(0.5 + r * Math.cos(a), 0.5 + r * Math.sin(a));
+    segments.push(i, (i + 1) % n);
+  });
+  return { points, segments };
+}
+
+test("placement 'petal' gives valid meshes with fewer triangles than off-centers", async () => {
+  const mesher = await init();
+  let offCenter = 0;
+  let petal = 0;
+  for (let seed = 1; seed <= 12; seed++) {
+    const plc = starPolygon(seed, 30);
+    offCenter += mesher.triangulate(plc, { minAngle: 33 }).triangles.length / 3;
+    const mesh = mesher.triangulate(plc, { minAngle: 33, placement: 'petal' });
+    assert.deepEqual(validateMesh(mesh, { input: plc }), [], `seed ${seed}`);
+    assert.equal(mesh.complete, true, `seed ${seed}: ${JSON.stringify(mesh.reasons)}`);
+    petal += mesh.triangles.length / 3;
+  }
+  assert.ok(petal < offCenter, `petal ${petal} triangles, off-centers ${offCenter}`);
+});
+
 test('parsePoly / toPoly / toSVG round trip through the C++ readers and writers', async () => {
   const mesher = await init();
   const text = '# a square\n4 2 0 1\n1 0 0 1\n2 1 0 1\n3 1 1 1\n4 0 1 1\n4 1\n1 1 2 5\n2 2 3 5\n3 3 4 5\n4 4 1 5\n0\n';
