@@ -6,6 +6,7 @@
 //   `npm install` in the repo prunes a --no-save package, even in the middle of a run)
 //   node tests/bench/compare-triangle.mjs [--runs N] [--timeout SECONDS] [--only SUBSTRING]
 //        [--angles 20,30,33] [--ruppert-only-angles 35,38,40] [--sizes 1e-4,...] [--no-native] [--no-write]
+//        [--placement offcenter|circumcenter|petal]   (ruppert's Steiner placement; default offcenter)
 //
 // For every clean .poly in the shared data folder and every angle it meshes the same PLC with
 // Triangle (switches -pzQq<angle>, plus -a when a region carries an area bound) and with ruppert
@@ -18,7 +19,8 @@
 // Quality is judged from the output arrays by one function for both meshers (measureMesh below).
 // The native CLI (build-native/core/ruppert, or RUPPERT_CLI) is timed on the same inputs; its time
 // is the core time it prints with --stats.
-// Writes tests/bench/results/triangle-comparison.{md,json} unless --no-write.
+// Writes tests/bench/results/triangle-comparison.{md,json} unless --no-write (with --placement P
+// other than offcenter: triangle-comparison-P.{md,json}).
 import { execFileSync, spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
@@ -221,6 +223,7 @@ function parseArgs(argv) {
     // Global area bounds on the unit square: Triangle and ruppert near 1e4, 1e5, 1e6 triangles.
     sizes: list(get('--sizes', '1.5e-4,1.5e-5,1.5e-6,5e-7')),
     sizeAngle: Number(get('--size-angle', 30)),
+    placement: get('--placement', 'offcenter'),
     native: !argv.includes('--no-native'),
     write: !argv.includes('--no-write'),
   };
@@ -309,7 +312,7 @@ function markdownReport(report) {
   lines.push(`ruppert ${meta.ruppert} (wasm/dist + native CLI \`${meta.nativeCli ?? 'absent'}\`); Triangle: npm triangle-wasm ${meta.triangleWasm} (Triangle 1.6 compiled by Emscripten, fixed 16 MiB heap).`);
   lines.push(`Command: \`${meta.command}\``, '');
   lines.push('How: the same PLC (read by ruppert\'s .poly reader) goes to both meshers in worker threads of one Node process.',
-    `Triangle runs with \`-pzQq<angle>\` (plus \`-a\` when a region has an area bound); ruppert with \`{ minAngle }\` (off-centers, constrained variant).`,
+    `Triangle runs with \`-pzQq<angle>\` (plus \`-a\` when a region has an area bound); ruppert with \`{ minAngle, placement: '${meta.placement ?? 'offcenter'}' }\` (constrained variant).`,
     `Times are per call, end to end (copy in, mesh, copy out), median of ${meta.runs} after one warm-up (a call over 1 s: its single first run); a single run longer than ${meta.timeoutMs / 1000} s is "timeout".`,
     'Min angles and triangle counts are measured from the output arrays by the same code for both. "native" is the core time printed by the ruppert CLI (`--stats`), measured at the angles compared with Triangle only.',
     'Ratios: tri ratio = ruppert triangles / Triangle triangles (< 1: ruppert smaller); speed = Triangle ms / ruppert wasm ms (> 1: ruppert faster).', '');
@@ -455,8 +458,8 @@ async function main() {
       if (withTriangle) {
         row.triangle = await triangle.run({ plc, switches: `pzQq${angle}${areaSwitch}`, runs: options.runs }, options.timeoutMs);
       }
-      row.ruppert = await ruppert.run({ plc, options: { minAngle: angle }, runs: options.runs }, options.timeoutMs);
-      if (cli && withTriangle) row.native = runNative(cli, path, ['--min-angle', String(angle)], options.runs, options.timeoutMs);
+      row.ruppert = await ruppert.run({ plc, options: { minAngle: angle, placement: options.placement }, runs: options.runs }, options.timeoutMs);
+      if (cli && withTriangle) row.native = runNative(cli, path, ['--min-angle', String(angle), '--placement', options.placement], options.runs, options.timeoutMs);
       fixtureRows.push(row);
       log(`${name} @${angle}: Triangle ${row.triangle ? triangleCell(row.triangle) : '-'}  ruppert ${triangleCell(row.ruppert)}${row.ruppert.complete === false ? ' (incomplete)' : ''}`);
     }
@@ -473,8 +476,8 @@ async function main() {
       ? { status: 'skipped', error: 'failed at a smaller size' }
       : await triangle.run({ plc: square, switches: `pzQq${options.sizeAngle}a${maxArea}`, runs: options.runs }, 60000);
     if (row.triangle.status === 'error') triangleDied = true;
-    row.ruppert = await ruppert.run({ plc: square, options: { minAngle: options.sizeAngle, maxArea }, runs: options.runs }, 60000);
-    if (cli) row.native = runNative(cli, squareFile, ['--min-angle', String(options.sizeAngle), '--max-area', String(maxArea)], options.runs, 60000);
+    row.ruppert = await ruppert.run({ plc: square, options: { minAngle: options.sizeAngle, maxArea, placement: options.placement }, runs: options.runs }, 60000);
+    if (cli) row.native = runNative(cli, squareFile, ['--min-angle', String(options.sizeAngle), '--max-area', String(maxArea), '--placement', options.placement], options.runs, 60000);
     sizeRows.push(row);
     log(`square maxArea ${maxArea}: Triangle ${triangleCell(row.triangle)}${row.triangle.error ? ` (${row.triangle.error})` : ''}  ruppert ${triangleCell(row.ruppert)}`);
   }
@@ -497,7 +500,7 @@ async function main() {
       triangleWasm: triangleWasmVersion,
       nativeCli: cli ? cli.replace(repoRoot, '') : null,
       command: `node tests/bench/compare-triangle.mjs ${process.argv.slice(2).join(' ')}`.trim(),
-      runs: options.runs, timeoutMs: options.timeoutMs, sizeAngle: options.sizeAngle,
+      runs: options.runs, timeoutMs: options.timeoutMs, sizeAngle: options.sizeAngle, placement: options.placement,
     },
     summary: summarise(fixtureRows, [...options.angles, ...options.ruppertOnlyAngles]),
     sizeRows, fixtureRows, leads,
@@ -506,9 +509,10 @@ async function main() {
   if (options.write) {
     const dir = join(repoRoot, 'tests/bench/results');
     mkdirSync(dir, { recursive: true });
-    writeFileSync(join(dir, 'triangle-comparison.md'), markdown);
-    writeFileSync(join(dir, 'triangle-comparison.json'), `${JSON.stringify(report, null, 1)}\n`);
-    log('wrote tests/bench/results/triangle-comparison.md and .json');
+    const base = options.placement === 'offcenter' ? 'triangle-comparison' : `triangle-comparison-${options.placement}`;
+    writeFileSync(join(dir, `${base}.md`), markdown);
+    writeFileSync(join(dir, `${base}.json`), `${JSON.stringify(report, null, 1)}\n`);
+    log(`wrote tests/bench/results/${base}.md and .json`);
   }
   console.log(markdown.split('\n## Size-driven')[0]);
   console.table(report.summary);

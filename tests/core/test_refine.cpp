@@ -16,30 +16,6 @@ using ruppert::Plc;
 
 namespace {
 
-// Angle exemptions of §6.6, judged from the output alone: the smallest angle sits between two
-// subsegments meeting at an input (or crossing) vertex, or the shortest edge joins two vertices on
-// different segments at the same distance from the segments' common vertex.
-bool exemptBySmallInputAngle(const Mesh& m, std::uint32_t t) {
-  double best = 1e9;
-  int corner = 0;
-  for (int i = 0; i < 3; ++i) {
-    const double* o = &m.points[2 * m.triangles[3 * t + i]];
-    const double* u = &m.points[2 * m.triangles[3 * t + (i + 1) % 3]];
-    const double* w = &m.points[2 * m.triangles[3 * t + (i + 2) % 3]];
-    const double ux = u[0] - o[0], uy = u[1] - o[1], wx = w[0] - o[0], wy = w[1] - o[1];
-    const double a = std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy);
-    if (a < best) best = a, corner = i;
-  }
-  auto isSub = [&](std::uint32_t a, std::uint32_t b) {
-    for (std::size_t k = 0; k < m.segmentIds.size(); ++k)
-      if ((m.segments[2 * k] == a && m.segments[2 * k + 1] == b) || (m.segments[2 * k] == b && m.segments[2 * k + 1] == a))
-        return true;
-    return false;
-  };
-  const std::uint32_t z = m.triangles[3 * t + corner];
-  return isSub(z, m.triangles[3 * t + (corner + 1) % 3]) && isSub(z, m.triangles[3 * t + (corner + 2) % 3]);
-}
-
 Mesh refineChecked(const Plc& plc, const Options& o, const std::string& name) {
   INFO(name << " at " << o.minAngle << " degrees");
   const Mesh base = ruppert::triangulate(plc, [] { Options c; c.minAngle = 0; return c; }());
@@ -55,7 +31,7 @@ Mesh refineChecked(const Plc& plc, const Options& o, const std::string& name) {
     std::uint64_t seditious = 0;
     for (const auto& r : mesh.reasons)
       if (r.kind == ruppert::ReasonKind::SeditiousEdge) seditious += r.count;
-    v.angleExempt = [seditious](const Mesh& m, std::uint32_t t) { return exemptBySmallInputAngle(m, t) || seditious > 0; };
+    v.angleExempt = [seditious](const Mesh& m, std::uint32_t t) { return ruppert_test::nestledInInputAngle(m, t) || seditious > 0; };
   }
   RUPPERT_REQUIRE_VALID_2(mesh, v);
   return mesh;

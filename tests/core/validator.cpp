@@ -688,6 +688,27 @@ double triangleMinAngleDeg(const Mesh& mesh, std::uint32_t t) {
   return smallest * 180 / kPi;
 }
 
+bool nestledInInputAngle(const Mesh& mesh, std::uint32_t t) {
+  const double* p[3];
+  for (int i = 0; i < 3; ++i) p[i] = &mesh.points[2 * std::size_t(mesh.triangles[3 * std::size_t(t) + i])];
+  int corner = 0;
+  double best = HUGE_VAL;
+  for (int i = 0; i < 3; ++i) {
+    const double a = cornerAngle(p[i], p[(i + 1) % 3], p[(i + 2) % 3]);
+    if (a < best) best = a, corner = i;
+  }
+  auto isSubsegment = [&](std::uint32_t a, std::uint32_t b) {
+    for (std::size_t k = 0; k < mesh.segments.size() / 2; ++k) {
+      const std::uint32_t u = mesh.segments[2 * k], w = mesh.segments[2 * k + 1];
+      if ((u == a && w == b) || (u == b && w == a)) return true;
+    }
+    return false;
+  };
+  const std::uint32_t z = mesh.triangles[3 * std::size_t(t) + corner];
+  return isSubsegment(z, mesh.triangles[3 * std::size_t(t) + (corner + 1) % 3]) &&
+         isSubsegment(z, mesh.triangles[3 * std::size_t(t) + (corner + 2) % 3]);
+}
+
 std::string describeProblems(const std::vector<std::string>& problems, std::size_t max) {
   if (problems.empty()) return "mesh is valid";
   std::string text = std::to_string(problems.size()) + " problem(s):";

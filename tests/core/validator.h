@@ -59,6 +59,9 @@ std::vector<std::string> validateMesh(const ruppert::Mesh& mesh, const ValidateO
 // Helpers used by tests.
 double meshArea(const ruppert::Mesh& mesh);                           // sum of triangle areas
 double triangleMinAngleDeg(const ruppert::Mesh& mesh, std::uint32_t t);  // smallest angle of t
+// §6.6, judged from the output alone: t's smallest angle sits between two subsegments meeting at
+// its vertex (an input angle or a crossing), so no Steiner point can improve it.
+bool nestledInInputAngle(const ruppert::Mesh& mesh, std::uint32_t t);
 std::string describeProblems(const std::vector<std::string>& problems, std::size_t max = 12);
 // True when every interior non-subsegment edge is strictly Delaunay (incircle < 0), i.e. the CDT of
 // this vertex set and these subsegments is unique. Metamorphic tests compare topology only then.

@@ -14,31 +14,6 @@
 
 namespace ruppert_fuzz {
 
-// §6.6: a triangle whose smallest angle sits between two subsegments meeting at a vertex is nestled
-// in a small input angle (or a crossing) and may stay skinny. Judged from the output alone.
-inline bool nestledInInputAngle(const ruppert::Mesh& m, std::uint32_t t) {
-  double best = 1e9;
-  int corner = 0;
-  for (int i = 0; i < 3; ++i) {
-    const double* o = &m.points[2 * m.triangles[3 * t + i]];
-    const double* u = &m.points[2 * m.triangles[3 * t + (i + 1) % 3]];
-    const double* w = &m.points[2 * m.triangles[3 * t + (i + 2) % 3]];
-    const double ux = u[0] - o[0], uy = u[1] - o[1], wx = w[0] - o[0], wy = w[1] - o[1];
-    const double a = std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy);
-    if (a < best) best = a, corner = i;
-  }
-  auto isSubsegment = [&](std::uint32_t a, std::uint32_t b) {
-    for (std::size_t k = 0; k < m.segmentIds.size(); ++k) {
-      const std::uint32_t p = m.segments[2 * k], q = m.segments[2 * k + 1];
-      if ((p == a && q == b) || (p == b && q == a)) return true;
-    }
-    return false;
-  };
-  const std::uint32_t z = m.triangles[3 * t + corner];
-  return isSubsegment(z, m.triangles[3 * t + (corner + 1) % 3]) &&
-         isSubsegment(z, m.triangles[3 * t + (corner + 2) % 3]);
-}
-
 // Plain CDT when nothing asks for refinement (ruppert.h, Options::minAngle).
 inline bool isPlainCdt(const ruppert::Plc& plc, const ruppert::Options& o) {
   if (o.minAngle > 0 || o.maxArea > 0 || o.sizeFunction) return false;
@@ -49,7 +24,7 @@ inline bool isPlainCdt(const ruppert::Plc& plc, const ruppert::Options& o) {
 
 // Multiplies every coordinate (and area) by 2^shift: exact, and it leaves angles and topology alone.
 // Meshes of inputs near 1e-300 are judged on a copy brought near 1, because the angle helpers
-// (validator.cpp's triangleMinAngleDeg, nestledInInputAngle above) multiply coordinate differences
+// (validator.cpp's triangleMinAngleDeg and nestledInInputAngle) multiply coordinate differences
 // and would underflow to a "0 degree" angle there.
 inline int unitScaleShift(const ruppert::Mesh& mesh) {
   double maxAbs = 0;
@@ -72,9 +47,8 @@ inline void scaleBy(int shift, ruppert::Mesh& mesh, ruppert::Plc& plc, ruppert::
 }
 
 // The validator's near-duplicate rule (added vertices within nearDuplicateRelTol of another used
-// vertex, in the frame where the largest coordinate is in [1, 2)), checked first and alone: its
-// point-location grids are quadratic on the vertex clusters such meshes contain, so a mesh with a
-// cluster is reported at once instead of keeping the full validation busy for minutes.
+// vertex, in the frame where the largest coordinate is in [1, 2)), checked first and alone: a
+// mesh with such a cluster is reported at once, with the cluster named, before the full validation.
 inline std::vector<std::string> nearDuplicateClusters(const ruppert::Mesh& scaled, std::size_t inputPoints,
                                                       double eps, std::size_t maxProblems) {
   std::vector<bool> used(scaled.points.size() / 2, false);
@@ -121,7 +95,7 @@ inline std::vector<std::string> judgeMesh(const ruppert::Mesh& original, const r
     v.minAngle = o.minAngle;
     v.angleTolDeg = 1e-6;
     v.angleExempt = [seditious](const ruppert::Mesh& m, std::uint32_t t) {
-      return seditious || nestledInInputAngle(m, t);
+      return seditious || ruppert_test::nestledInInputAngle(m, t);
     };
   }
   if (mesh.complete && o.maxArea > 0) v.maxArea = o.maxArea;
