@@ -59,6 +59,8 @@ for f in ${data:+"$data"/*.poly} "$root"/tests/fixtures/*.poly "$root"/tests/hos
   for angle in 0 30; do  # \x1e = 30 degrees; flags \x40 = text mode
     { printf "\\x$(printf %02x "$angle")\\x00\\x40\\x00"; cat "$f"; } >"$mesh_corpus/$angle-$(basename "$f")"
   done
+  # 33 degrees with petal placement (flags \x48 = text mode + petal)
+  { printf "\\x21\\x00\\x48\\x00"; cat "$f"; } >"$mesh_corpus/33petal-$(basename "$f")"
 done
 # A unit square with a hole and a region, in int8 coordinates (binary layout, 30 degrees).
 printf '\x1e\x00\x00\x00\x04\x00\x00\x0a\x00\x0a\x0a\x00\x0a\x04\x00\x01\x01\x02\x02\x03\x03\x00\x00\x00' \
