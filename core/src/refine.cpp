@@ -44,6 +44,7 @@ constexpr double kPi = 3.14159265358979323846;
 // where it is over 10^4 ulps): subsegments shorter than 3 floors and triangles whose shortest edge is
 // under 2 floors are not split, and a split point this close to a vertex is refused.
 constexpr double kLengthFloor = 0x1p-38;
+constexpr double kPetalReach = 4;  // see Refiner::petalMayHelp
 // Bad-triangle priority classes: four per power of two of the squared shortest edge, from 2^-80 (below
 // the length floor) to 2^4 (above the scaled input's extent), and one last class for size alone.
 constexpr int kLowestExponent = -80;
@@ -548,8 +549,8 @@ class Refiner {
     }
     // Only where no area bound applies: with one, the bound sets the size and the search buys little
     // (unit square, max area 1e-6: 794.6 k vertices with it, 794.7 k without, at 4x the time).
-    if (skinny && o_.placement == Placement::Petal && !(maxAreaAt(s) > 0) &&
-        newMinSin2(target, cavityBoundary_) < sin2Theta_ && betterPlacement(s, sh, p, target, loc))
+    if (skinny && o_.placement == Placement::Petal && !(maxAreaAt(s) > 0) && petalMayHelp(target, sh.shortest) &&
+        betterPlacement(s, sh, p, target, loc))
       kind = VertexKind::OffCenter;
     const std::uint32_t v = m_.addVertex(target[0], target[1], kind, -1);
     corner_.push_back(0);
@@ -596,6 +597,26 @@ class Refiner {
     return worst;
   }
 
+  // Whether searching the petal can pay: the default point makes a skinny triangle (with cavityBoundary_
+  // as its cavity), and every such triangle stands on a cavity edge less than kPetalReach times the
+  // shortest edge. A longer edge makes a flat triangle with the default point; the petal's points all
+  // lie within about one shortest edge of it, so they make the same flat triangle. Measured on the
+  // shared PLCs at 33 degrees: of 89,541 searches 9,955 found a point; where such an edge was over 8
+  // times the shortest, 2 of 31,000; over 4 times, 300 of 55,000. With 4, the geo-mean triangle ratio
+  // to Triangle moves from 0.882 to 0.887 at 30 degrees and 0.859 to 0.861 at 33, and petal costs
+  // about 2x the off-centers' time instead of 4-7x (cdt_sweden.poly at 33: 94 -> 32 ms, 15 ms).
+  bool petalMayHelp(const double* target, double shortest) const {
+    bool skinny = false;
+    for (std::uint32_t h : cavityBoundary_) {
+      const double* a = t_.pt(t_.origin(h));
+      const double* b = t_.pt(t_.dest(h));
+      if (qualityOf(a, b, target).sin2MinAngle >= sin2Theta_) continue;
+      if (dist(a, b) > kPetalReach * shortest) return false;
+      skinny = true;
+    }
+    return skinny;
+  }
+
   // Locally better Steiner points, in the spirit of Erten and Üngör's: when the off-center (or the
   // circumcenter) would itself create a skinny triangle, look in the shortest edge's petal for a
   // point whose new triangles all meet the bound, and take the one farthest from its neighbours.
@@ -604,8 +625,8 @@ class Refiner {
   // at central angle phi from its top, the base angles are (pi - alpha - phi) / 2 and
   // (pi - alpha + phi) / 2, so |phi| <= pi - alpha - 2 theta keeps both >= theta.
   // Measured on the 61 shared PLCs (geo-mean triangle count against Triangle's, off-centers -> petal):
-  // 0.973 -> 0.882 at 30 degrees, 0.987 -> 0.859 at 33; but 4-7x the refinement time without an area
-  // bound (earcut_water_huge.poly at 33: 42 -> 159 ms), as most searches find no such point.
+  // 0.973 -> 0.887 at 30 degrees, 0.987 -> 0.861 at 33, at about twice the refinement time without an
+  // area bound (most searches that petalMayHelp lets through still find no such point).
   // Returns true (and sets target, loc) if a candidate was found.
   bool betterPlacement(std::uint32_t s, const TriangleShape& sh, const double* const* p, double* target, Location& loc) {
     const int e = sh.shortestEdge;
