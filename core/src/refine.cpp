@@ -127,7 +127,7 @@ class Refiner {
   int lowestBucket_ = kBuckets;
   std::uint64_t queuedByAngle_[kAngleClasses] = {};
   std::vector<std::uint8_t> corner_;  // per vertex: acute input corner (concentric shells apply)
-  std::vector<std::uint32_t> newTris_, parents_;
+  std::vector<std::uint32_t> newTris_, parents_, flipped_, mendStack_;
   struct Inherited {
     double attribute, maxArea;
     std::uint8_t inDomain;
@@ -352,6 +352,8 @@ class Refiner {
   // subsegments are checked for encroachment. False (nothing changed) if the insertion would
   // create an inverted triangle (rounding at the precision limit).
   bool insertAt(std::uint32_t v, const Location& loc) {
+    const bool onSubsegment = loc.kind == Location::OnEdge && t_.con[loc.edge] != kFree;
+    flipped_.clear();
     // Bowyer-Watson first; where its cavity would wrap around a vertex at which the domain touches
     // itself, split and flip instead.
     if (!t_.insertVertex(v, loc, &newTris_, &parents_) && !t_.insertVertexByFlips(v, loc, &newTris_, &parents_))
@@ -371,6 +373,7 @@ class Refiner {
       m_.attribute[newTris_[k]] = inherit_[k].attribute, m_.maxArea[newTris_[k]] = inherit_[k].maxArea;
       if (box) m_.inDomain[newTris_[k]] = inherit_[k].inDomain;
     }
+    if (onSubsegment) mendDelaunay();
     for (std::uint32_t s : newTris_) {
       checkTriangle(s);
       for (std::uint32_t i = 0; i < 3; ++i) checkSubsegment(3 * s + i);
@@ -379,7 +382,46 @@ class Refiner {
       const std::uint32_t g = t_.twin[3 * s];
       if (g != kNone) checkSubsegment(g);
     }
+    for (std::uint32_t s : flipped_) {
+      checkTriangle(s);
+      for (std::uint32_t i = 0; i < 3; ++i) {
+        checkSubsegment(3 * s + i);
+        if (t_.twin[3 * s + i] != kNone) checkSubsegment(t_.twin[3 * s + i]);
+      }
+    }
     return true;
+  }
+
+  // A subsegment's split point is rounded, so it lies a hair off the subsegment's line. Bowyer-Watson
+  // treats it as on the edge and joins it to the boundary of both sides' cavities; when it falls just
+  // outside one side's triangle, a free edge there can end up not locally Delaunay (found by fuzzing:
+  // two segments meeting at 5e-8 radians, split into pieces a million times longer than that
+  // offset). Lawson flips around the new triangles mend it; flip() keeps both slots, and the two
+  // triangles of a free edge share their region, so the slots' region data stays right. Slots that
+  // changed and are not new are left in flipped_ for re-checking.
+  void mendDelaunay() {
+    flipped_.clear();
+    mendStack_.clear();
+    for (std::uint32_t s : newTris_)
+      for (std::uint32_t i = 0; i < 3; ++i) mendStack_.push_back(3 * s + i);
+    while (!mendStack_.empty()) {
+      const std::uint32_t h = mendStack_.back();
+      mendStack_.pop_back();
+      const std::uint32_t t = h / 3;
+      const std::uint32_t g = t_.twin[h];
+      if (!t_.alive(t) || t_.con[h] != kFree || g == kNone) continue;
+      if (!(incircle(t_.pt(t_.tv[3 * t]), t_.pt(t_.tv[3 * t + 1]), t_.pt(t_.tv[3 * t + 2]), t_.pt(t_.apex(g))) > 0))
+        continue;
+      const std::uint32_t u = g / 3;
+      t_.flip(h);
+      // As in Triangulation::legalizeAll: the four outer edges are now t's edges 0, 2 and u's 0, 1.
+      const std::uint32_t next[4] = {3 * t, 3 * t + 2, 3 * u, 3 * u + 1};
+      mendStack_.insert(mendStack_.end(), next, next + 4);
+      for (std::uint32_t s : {t, u})
+        if (std::find(newTris_.begin(), newTris_.end(), s) == newTris_.end() &&
+            std::find(flipped_.begin(), flipped_.end(), s) == flipped_.end())
+          flipped_.push_back(s);
+    }
   }
 
   // Split subsegment h (§6.2, §6.6). `by` = the encroaching vertex if known, for the trace.
