@@ -455,13 +455,22 @@ class Refiner {
         return false;
       }
     }
-    const std::int32_t segment = t_.con[h] >= 0 ? t_.con[h] : -1;
-    const std::uint32_t v = m_.addVertex(x, y, VertexKind::SegmentSplit, segment);
-    corner_.push_back(0);
     Location loc;
     loc.kind = Location::OnEdge;
     loc.tri = h / 3;
     loc.edge = h;
+    // The new vertex's nearest neighbour is on its cavity's boundary. Two segments meeting at a tiny
+    // angle get shell splits at the same distance from their common vertex, closer to each other
+    // than doubles can keep apart (found by fuzzing): refuse those, as the length floor does.
+    const double split[2] = {x, y};
+    t_.cavity(split, loc, splitTris_, splitBoundary_);
+    if (tooCloseToCavity(split, splitBoundary_)) {
+      ++floorHits_;
+      return false;
+    }
+    const std::int32_t segment = t_.con[h] >= 0 ? t_.con[h] : -1;
+    const std::uint32_t v = m_.addVertex(x, y, VertexKind::SegmentSplit, segment);
+    corner_.push_back(0);
     if ((x == pa[0] && y == pa[1]) || (x == pb[0] && y == pb[1]) || !insertAt(v, loc)) {
       // Not placeable: the new vertex stays unused (kind Unused) so output stays consistent.
       m_.kind[v] = VertexKind::Unused;
@@ -570,6 +579,10 @@ class Refiner {
     }
     // Reject if the new vertex would encroach a subsegment on its cavity's boundary (§6.2, §6.3).
     t_.cavity(target, loc, cavityTris_, cavityBoundary_);
+    if (tooCloseToCavity(target, cavityBoundary_)) {
+      ++floorHits_;
+      return;
+    }
     bool rejectedAny = false;
     for (std::uint32_t h : cavityBoundary_) {
       if (t_.con[h] == kFree) continue;
@@ -629,6 +642,14 @@ class Refiner {
       }
     }
     std::sort(petal_.begin(), petal_.end(), [](const PetalPoint& a, const PetalPoint& b) { return a.bound > b.bound; });
+  }
+
+  // Whether a vertex of the cavity boundary lies within the length floor of x (the nearest existing
+  // vertex to a new one is always on the boundary of its cavity).
+  bool tooCloseToCavity(const double* x, const std::vector<std::uint32_t>& boundary) const {
+    for (std::uint32_t h : boundary)
+      if (sq(x, t_.pt(t_.origin(h))) < kLengthFloor * kLengthFloor) return true;
+    return false;
   }
 
   // Smallest sin^2 angle among the triangles that inserting x creates, given x's cavity boundary.
@@ -718,7 +739,8 @@ class Refiner {
       checkTriangle(bt.slot);
   }
 
-  std::vector<std::uint32_t> cavityTris_, cavityBoundary_, candidateTris_, candidateBoundary_;
+  std::vector<std::uint32_t> cavityTris_, cavityBoundary_, candidateTris_, candidateBoundary_, splitTris_,
+      splitBoundary_;
   std::vector<EdgeRef> rejectPairs_;
 
   // ---- result ------------------------------------------------------------------------------------
