@@ -64,6 +64,13 @@ struct BadTriangle {
 double dist(const double* p, const double* q) { return std::hypot(p[0] - q[0], p[1] - q[1]); }
 double sq(const double* p, const double* q) { return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]); }
 
+// A cavity already computed by Triangulation::cavity, handed to the insertion so it is not searched
+// twice (both null: none).
+struct CavityRef {
+  const std::vector<std::uint32_t>* tris = nullptr;
+  const std::vector<std::uint32_t>* boundary = nullptr;
+};
+
 class Refiner {
  public:
   explicit Refiner(MeshState& m) : m_(m), t_(m.tri), o_(*m.options) {
@@ -350,14 +357,16 @@ class Refiner {
   // ---- insertion ---------------------------------------------------------------------------------
   // Insert vertex v at `loc`; new triangles inherit region data and are checked; their
   // subsegments are checked for encroachment. False (nothing changed) if the insertion would
-  // create an inverted triangle (rounding at the precision limit).
-  bool insertAt(std::uint32_t v, const Location& loc) {
+  // create an inverted triangle (rounding at the precision limit). `cavity`, if given, is the
+  // cavity of v's point at `loc` as Triangulation::cavity computed it, with nothing changed since.
+  bool insertAt(std::uint32_t v, const Location& loc, const CavityRef& cavity = {}) {
     const bool onSubsegment = loc.kind == Location::OnEdge && t_.con[loc.edge] != kFree;
     flipped_.clear();
     // Bowyer-Watson first; where its cavity would wrap around a vertex at which the domain touches
     // itself, split and flip instead.
-    if (!t_.insertVertex(v, loc, &newTris_, &parents_) && !t_.insertVertexByFlips(v, loc, &newTris_, &parents_))
-      return false;
+    const bool filled = cavity.tris ? t_.fillCavity(v, loc, *cavity.tris, *cavity.boundary, &newTris_, &parents_)
+                                    : t_.insertVertex(v, loc, &newTris_, &parents_);
+    if (!filled && !t_.insertVertexByFlips(v, loc, &newTris_, &parents_)) return false;
     ++inserted_;
     const bool box = !m_.inDomain.empty();
     if (m_.attribute.size() < t_.slotCount()) {
@@ -400,28 +409,17 @@ class Refiner {
   // triangles of a free edge share their region, so the slots' region data stays right. Slots that
   // changed and are not new are left in flipped_ for re-checking.
   void mendDelaunay() {
-    flipped_.clear();
     mendStack_.clear();
     for (std::uint32_t s : newTris_)
       for (std::uint32_t i = 0; i < 3; ++i) mendStack_.push_back(3 * s + i);
-    while (!mendStack_.empty()) {
-      const std::uint32_t h = mendStack_.back();
-      mendStack_.pop_back();
-      const std::uint32_t t = h / 3;
-      const std::uint32_t g = t_.twin[h];
-      if (!t_.alive(t) || t_.con[h] != kFree || g == kNone) continue;
-      if (!(incircle(t_.pt(t_.tv[3 * t]), t_.pt(t_.tv[3 * t + 1]), t_.pt(t_.tv[3 * t + 2]), t_.pt(t_.apex(g))) > 0))
-        continue;
-      const std::uint32_t u = g / 3;
-      t_.flip(h);
-      // As in Triangulation::legalizeAll: the four outer edges are now t's edges 0, 2 and u's 0, 1.
-      const std::uint32_t next[4] = {3 * t, 3 * t + 2, 3 * u, 3 * u + 1};
-      mendStack_.insert(mendStack_.end(), next, next + 4);
-      for (std::uint32_t s : {t, u})
-        if (std::find(newTris_.begin(), newTris_.end(), s) == newTris_.end() &&
-            std::find(flipped_.begin(), flipped_.end(), s) == flipped_.end())
-          flipped_.push_back(s);
-    }
+    t_.legalize(mendStack_, &flipped_);
+    std::sort(flipped_.begin(), flipped_.end());
+    flipped_.erase(std::unique(flipped_.begin(), flipped_.end()), flipped_.end());
+    flipped_.erase(std::remove_if(flipped_.begin(), flipped_.end(),
+                                  [&](std::uint32_t s) {
+                                    return std::find(newTris_.begin(), newTris_.end(), s) != newTris_.end();
+                                  }),
+                   flipped_.end());
   }
 
   // Split subsegment h (§6.2, §6.6). `by` = the encroaching vertex if known, for the trace.
@@ -471,7 +469,7 @@ class Refiner {
     const std::int32_t segment = t_.con[h] >= 0 ? t_.con[h] : -1;
     const std::uint32_t v = m_.addVertex(x, y, VertexKind::SegmentSplit, segment);
     corner_.push_back(0);
-    if ((x == pa[0] && y == pa[1]) || (x == pb[0] && y == pb[1]) || !insertAt(v, loc)) {
+    if ((x == pa[0] && y == pa[1]) || (x == pb[0] && y == pb[1]) || !insertAt(v, loc, {&splitTris_, &splitBoundary_})) {
       // Not placeable: the new vertex stays unused (kind Unused) so output stays consistent.
       m_.kind[v] = VertexKind::Unused;
       ++floorHits_;
@@ -604,12 +602,14 @@ class Refiner {
     }
     // Only where no area bound applies: with one, the bound sets the size and the search buys little
     // (unit square, max area 1e-6: 794.6 k vertices with it, 794.7 k without, at 4x the time).
+    // A petal point has a cavity of its own: insertAt computes it.
+    CavityRef known{&cavityTris_, &cavityBoundary_};
     if (skinny && o_.placement == Placement::Petal && !(maxAreaAt(s) > 0) && petalMayHelp(target, sh.shortest) &&
         betterPlacement(s, sh, p, target, loc))
-      kind = VertexKind::OffCenter;
+      kind = VertexKind::OffCenter, known = {};
     const std::uint32_t v = m_.addVertex(target[0], target[1], kind, -1);
     corner_.push_back(0);
-    if (!insertAt(v, loc)) {
+    if (!insertAt(v, loc, known)) {
       m_.kind[v] = VertexKind::Unused;
       ++floorHits_;
       return;

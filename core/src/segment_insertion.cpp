@@ -125,7 +125,13 @@ class SegmentInserter {
     h = t_.findEdge(a, b);
     if (h == kNone) throw Error(ErrorCode::Internal, "flips did not recover " + segName(id));
     constrain(h, id);
-    t_.legalize(newEdges_);
+    // The flips may have left the new edges not locally Delaunay: Lawson from where they are now.
+    legalizeFrom_.clear();
+    for (std::size_t k = 0; k < newEdges_.size(); k += 2) {
+      const std::uint32_t e = t_.findEdge(newEdges_[k], newEdges_[k + 1]);
+      if (e != kNone) legalizeFrom_.push_back(e);
+    }
+    t_.legalize(legalizeFrom_);
   }
 
   // True if v lies on the ray from a through b, beyond a.
@@ -231,7 +237,8 @@ class SegmentInserter {
     q[1] = (t_.xy[2 * a + 1] + t_.xy[2 * b + 1]) / 2;
   }
 
-  std::vector<std::uint32_t> newEdges_;
+  std::vector<std::uint32_t> newEdges_;  // vertex pairs: edges move between slots while flipping
+  std::vector<std::uint32_t> legalizeFrom_;
 
   void flipAway(std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t>& crossed) {
     const double* pa = t_.pt(a);

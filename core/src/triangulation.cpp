@@ -198,10 +198,16 @@ void Triangulation::cavity(const double* p, const Location& loc, std::vector<std
 bool Triangulation::insertVertex(std::uint32_t v, const Location& loc, std::vector<std::uint32_t>* newTris,
                                  std::vector<std::uint32_t>* parents, bool checkOrientation) {
   static thread_local std::vector<std::uint32_t> tris, boundary;
+  cavity(pt(v), loc, tris, boundary);
+  return fillCavity(v, loc, tris, boundary, newTris, parents, checkOrientation);
+}
+
+bool Triangulation::fillCavity(std::uint32_t v, const Location& loc, const std::vector<std::uint32_t>& tris,
+                               const std::vector<std::uint32_t>& boundary, std::vector<std::uint32_t>* newTris,
+                               std::vector<std::uint32_t>* parents, bool checkOrientation) {
   struct Side { std::uint32_t u, w, outer, from; std::int32_t c; };
   static thread_local std::vector<Side> sides;
   const double* p = pt(v);
-  cavity(p, loc, tris, boundary);
   sides.clear();
   bool ok = true;
   for (std::uint32_t h : boundary) {
@@ -378,23 +384,19 @@ bool Triangulation::insertVertexByFlips(std::uint32_t v, const Location& loc, st
   return true;
 }
 
-void Triangulation::legalize(std::vector<std::uint32_t>& stack) {
-  // The stack holds vertex pairs (a, b) flattened: edges may move between slots as we flip.
-  while (stack.size() >= 2) {
-    const std::uint32_t b = stack.back();
+void Triangulation::legalize(std::vector<std::uint32_t>& stack, std::vector<std::uint32_t>* changed) {
+  while (!stack.empty()) {
+    const std::uint32_t h = stack.back();
     stack.pop_back();
-    const std::uint32_t a = stack.back();
-    stack.pop_back();
-    const std::uint32_t h = findEdge(a, b);
-    if (h == kNone || con[h] != kFree || twin[h] == kNone) continue;
     const std::uint32_t t = h / 3;
-    const std::uint32_t d = apex(twin[h]);
-    if (incircle(pt(tv[3 * t]), pt(tv[3 * t + 1]), pt(tv[3 * t + 2]), pt(d)) > 0) {
-      const std::uint32_t x = apex(h), y = origin(h), z = dest(h);
-      flip(h);
-      const std::uint32_t edges[8] = {x, y, y, d, d, z, z, x};
-      stack.insert(stack.end(), edges, edges + 8);
-    }
+    const std::uint32_t g = twin[h];
+    if (!alive(t) || con[h] != kFree || g == kNone) continue;
+    if (!(incircle(pt(tv[3 * t]), pt(tv[3 * t + 1]), pt(tv[3 * t + 2]), pt(apex(g))) > 0)) continue;
+    const std::uint32_t u = g / 3;
+    flip(h);
+    // flip() keeps the slots: the four outer edges are now T's edges 0, 2 and U's edges 0, 1.
+    stack.push_back(3 * t), stack.push_back(3 * t + 2), stack.push_back(3 * u), stack.push_back(3 * u + 1);
+    if (changed) changed->push_back(t), changed->push_back(u);
   }
 }
 
@@ -402,18 +404,7 @@ void Triangulation::legalizeAll() {
   std::vector<std::uint32_t> stack;
   for (std::uint32_t h = 0; h < tv.size(); ++h)
     if (alive(h / 3) && twin[h] != kNone && h < twin[h]) stack.push_back(h);
-  while (!stack.empty()) {
-    const std::uint32_t h = stack.back();
-    stack.pop_back();
-    const std::uint32_t t = h / 3;
-    if (!alive(t) || con[h] != kFree || twin[h] == kNone) continue;
-    const std::uint32_t g = twin[h];
-    if (!(incircle(pt(tv[3 * t]), pt(tv[3 * t + 1]), pt(tv[3 * t + 2]), pt(apex(g))) > 0)) continue;
-    const std::uint32_t u = g / 3;
-    flip(h);
-    // flip() keeps the slots: the four outer edges are now T's edges 0, 2 and U's edges 0, 1.
-    stack.push_back(3 * t), stack.push_back(3 * t + 2), stack.push_back(3 * u), stack.push_back(3 * u + 1);
-  }
+  legalize(stack);
 }
 
 }  // namespace ruppert::detail

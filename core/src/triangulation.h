@@ -102,6 +102,12 @@ class Triangulation {
   bool insertVertex(std::uint32_t v, const Location& loc, std::vector<std::uint32_t>* newTris = nullptr,
                     std::vector<std::uint32_t>* parents = nullptr, bool checkOrientation = true);
 
+  // The second half of insertVertex: replace the cavity that cavity() computed for v's point and
+  // `loc`, in a triangulation not changed since, by the fan around v.
+  bool fillCavity(std::uint32_t v, const Location& loc, const std::vector<std::uint32_t>& tris,
+                  const std::vector<std::uint32_t>& boundary, std::vector<std::uint32_t>* newTris = nullptr,
+                  std::vector<std::uint32_t>* parents = nullptr, bool checkOrientation = true);
+
   // The same insertion by splitting the containing triangle (or the two sharing the edge) and Lawson
   // flips. Slower, but it needs no fan around any other vertex: it works where insertVertex refuses a
   // cavity that wraps around a vertex at which the domain touches itself. False, changing nothing,
@@ -114,8 +120,11 @@ class Triangulation {
   void cavity(const double* p, const Location& loc, std::vector<std::uint32_t>& tris,
               std::vector<std::uint32_t>& boundary) const;
 
-  // Restore the constrained Delaunay property by Lawson flips starting from the given half-edges.
-  void legalize(std::vector<std::uint32_t>& stack);
+  // Lawson flips from the half-edges on `stack` (consumed) until every free edge they lead to is
+  // locally Delaunay. flip() keeps both slots and the four outer edges are pushed again, so an entry
+  // whose slot has since changed edge costs one test and nothing is missed. `changed`, if given,
+  // receives both slots of every flip, with repeats.
+  void legalize(std::vector<std::uint32_t>& stack, std::vector<std::uint32_t>* changed = nullptr);
   // Lawson flips over every free edge until all are locally Delaunay (converges to the CDT).
   void legalizeAll();
 
