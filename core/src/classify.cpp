@@ -41,7 +41,18 @@ std::size_t flood(Triangulation& t, std::uint32_t seed, std::vector<std::uint8_t
 }
 
 // The triangle containing a seed, or an error if the seed sits on a constrained edge or a vertex.
-std::uint32_t seedTriangle(MeshState& m, double x, double y, ErrorCode code, const std::string& what) {
+// Names a hole or region seed in messages, e.g. "holes[2] at (0.5, 1)". Built only when a message
+// needs it: formatting the shortest round-trip decimal of each coordinate costs more than meshing a
+// small input.
+struct SeedName {
+  const MeshState& m;
+  const char* list;
+  std::size_t index;
+  double x, y;
+  std::string text() const;
+};
+
+std::uint32_t seedTriangle(MeshState& m, double x, double y, ErrorCode code, const SeedName& what) {
   Triangulation& t = m.tri;
   const double p[2] = {x, y};
   std::uint32_t start = kNone;
@@ -53,9 +64,9 @@ std::uint32_t seedTriangle(MeshState& m, double x, double y, ErrorCode code, con
       return loc.tri;
     case Location::OnEdge:
       if (t.con[loc.edge] == kFree) return loc.tri;
-      throw Error(code, what + " lies exactly on a segment; move it inside the region it should mark");
+      throw Error(code, what.text() + " lies exactly on a segment; move it inside the region it should mark");
     case Location::OnVertex:
-      throw Error(code, what + " lies exactly on points[" + std::to_string(loc.vertex) + "]");
+      throw Error(code, what.text() + " lies exactly on points[" + std::to_string(loc.vertex) + "]");
     default:
       return kNone;  // outside the box: certainly outside the domain
   }
@@ -64,6 +75,8 @@ std::uint32_t seedTriangle(MeshState& m, double x, double y, ErrorCode code, con
 std::string at(const MeshState& m, double x, double y) {
   return "(" + formatNumber(m.input.toUser(x)) + ", " + formatNumber(m.input.toUser(y)) + ")";
 }
+
+std::string SeedName::text() const { return std::string(list) + "[" + std::to_string(index) + "] at " + at(m, x, y); }
 
 }  // namespace
 
@@ -118,11 +131,11 @@ std::int64_t eatHoles(MeshState& m, std::vector<std::uint8_t>& state) {
   std::size_t remaining = static_cast<std::size_t>(std::count(state.begin(), state.end(), kUnknown));
   const auto& holes = m.input.holes;
   for (std::size_t k = 0; k < holes.size() / 2; ++k) {
-    const std::string what = "holes[" + std::to_string(k) + "] at " + at(m, holes[2 * k], holes[2 * k + 1]);
+    const SeedName what{m, "holes", k, holes[2 * k], holes[2 * k + 1]};
     const std::uint32_t s = seedTriangle(m, holes[2 * k], holes[2 * k + 1], ErrorCode::HoleOnSegment, what);
     if (s == kNone || state[s] == kOutside) {
       Notice n{NoticeKind::HoleOutsideDomain, static_cast<std::int64_t>(k), -1, plc.holes[2 * k], plc.holes[2 * k + 1], ""};
-      n.message = what + " is outside the domain; it removes nothing";
+      n.message = what.text() + " is outside the domain; it removes nothing";
       m.notices.push_back(std::move(n));
       continue;
     }
@@ -162,11 +175,11 @@ void classifyTriangles(MeshState& m) {
   std::vector<std::uint8_t> reached(slots, 0);
   for (std::size_t k = 0; k < m.input.regions.size(); ++k) {
     const Region& r = m.input.regions[k];
-    const std::string what = "regions[" + std::to_string(k) + "] at " + at(m, r.x, r.y);
+    const SeedName what{m, "regions", k, r.x, r.y};
     const std::uint32_t s = seedTriangle(m, r.x, r.y, ErrorCode::InvalidRegion, what);
     if (s == kNone || state[s] == kOutside) {
       Notice n{NoticeKind::RegionOutsideDomain, static_cast<std::int64_t>(k), -1, plc.regions[k].x, plc.regions[k].y, ""};
-      n.message = what + " is outside the domain; it has no effect";
+      n.message = what.text() + " is outside the domain; it has no effect";
       m.notices.push_back(std::move(n));
       continue;
     }

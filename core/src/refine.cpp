@@ -143,29 +143,43 @@ class Refiner {
 
   // ---- set-up --------------------------------------------------------------------------------
   void markCorners() {
-    // Directions of the constrained edges around each input / intersection vertex; a corner is
-    // acute when two of them are less than 90 degrees apart.
-    corner_.assign(t_.vertexCount(), 0);
-    std::vector<std::vector<double>> dirs(t_.vertexCount());
-    for (std::uint32_t h = 0; h < t_.tv.size(); ++h) {
-      if (!t_.alive(h / 3) || t_.con[h] == kFree) continue;
-      const std::uint32_t a = t_.origin(h), b = t_.dest(h);
-      if (t_.twin[h] != kNone && t_.twin[h] < h) continue;  // each edge once
-      for (int k = 0; k < 2; ++k) {
-        const std::uint32_t v = k ? b : a, w = k ? a : b;
-        if (m_.kind[v] != VertexKind::Input && m_.kind[v] != VertexKind::Intersection) continue;
-        dirs[v].push_back(std::atan2(t_.xy[2 * w + 1] - t_.xy[2 * v + 1], t_.xy[2 * w] - t_.xy[2 * v]));
+    // A corner is acute when two constrained edges at an input or intersection vertex are less than
+    // 90 degrees apart, i.e. their directions have a positive dot product (any such pair makes two
+    // neighbours in angular order that close too). The directions are gathered per vertex in one
+    // flat array (counting sort by vertex), without trigonometry.
+    const std::uint32_t n = t_.vertexCount();
+    corner_.assign(n, 0);
+    auto counted = [&](std::uint32_t v) {
+      return m_.kind[v] == VertexKind::Input || m_.kind[v] == VertexKind::Intersection;
+    };
+    std::vector<std::uint32_t> start(n + 1, 0);
+    auto forEachEnd = [&](auto&& visit) {
+      for (std::uint32_t h = 0; h < t_.tv.size(); ++h) {
+        if (!t_.alive(h / 3) || t_.con[h] == kFree) continue;
+        if (t_.twin[h] != kNone && t_.twin[h] < h) continue;  // each edge once
+        const std::uint32_t a = t_.origin(h), b = t_.dest(h);
+        if (counted(a)) visit(a, b);
+        if (counted(b)) visit(b, a);
       }
-    }
-    for (std::uint32_t v = 0; v < dirs.size(); ++v) {
-      auto& d = dirs[v];
-      if (d.size() < 2) continue;
-      std::sort(d.begin(), d.end());
-      for (std::size_t i = 0; i < d.size(); ++i) {
-        double gap = (i + 1 < d.size() ? d[i + 1] : d[0] + 2 * kPi) - d[i];
-        if (gap < kPi / 2 - 1e-12) corner_[v] = 1;
-      }
-    }
+    };
+    forEachEnd([&](std::uint32_t v, std::uint32_t) { ++start[v + 1]; });
+    for (std::uint32_t v = 0; v < n; ++v) start[v + 1] += start[v];
+    std::vector<double> dir(2 * std::size_t(start[n]));
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    forEachEnd([&](std::uint32_t v, std::uint32_t w) {
+      const std::uint32_t k = fill[v]++;
+      const double dx = t_.xy[2 * w] - t_.xy[2 * v], dy = t_.xy[2 * w + 1] - t_.xy[2 * v + 1];
+      const double len = std::hypot(dx, dy);
+      dir[2 * k] = dx / len, dir[2 * k + 1] = dy / len;
+    });
+    for (std::uint32_t v = 0; v < n; ++v)
+      for (std::uint32_t i = start[v]; i < start[v + 1] && !corner_[v]; ++i)
+        for (std::uint32_t j = i + 1; j < start[v + 1]; ++j)
+          // cos(gap) > sin(1e-12): the gap is below 90 degrees by more than rounding.
+          if (dir[2 * i] * dir[2 * j] + dir[2 * i + 1] * dir[2 * j + 1] > 1e-12) {
+            corner_[v] = 1;
+            break;
+          }
   }
 
   void setBudget() {
