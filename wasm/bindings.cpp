@@ -21,7 +21,6 @@
 #include <cstdlib>
 #include <exception>
 #include <new>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -315,14 +314,11 @@ val triangulate(val plcJs, val optionsJs, val report) {
     if (!report.isNull() && !report.isUndefined()) {
       val texts = val::object();
       const auto text = [&](const char* key, auto&& print) {
-        if (!report[key].as<bool>()) return;
-        std::ostringstream stream;
-        print(stream);
-        texts.set(key, stream.str());
+        if (report[key].as<bool>()) texts.set(key, print());
       };
-      text("summary", [&](std::ostream& o) { ruppert::cli::printSummary(o, mesh); });
-      text("stats", [&](std::ostream& o) { ruppert::cli::printStats(o, mesh.stats); });
-      text("trace", [&](std::ostream& o) { ruppert::cli::writeTrace(o, mesh); });
+      text("summary", [&] { return ruppert::cli::summaryText(mesh); });
+      text("stats", [&] { return ruppert::cli::statsText(mesh.stats); });
+      text("trace", [&] { return ruppert::cli::traceText(mesh); });
       out.set("report", texts);
     }
     return out;
@@ -376,16 +372,13 @@ val parseCliArgs(val argsJs) {
 // format: "poly", "node" or "json".
 val readPlc(std::string text, std::string format, std::string name) {
   return guarded([&] {
-    std::istringstream in(text);
-    text.clear();
-    text.shrink_to_fit();
     ruppert::Plc plc;
     if (format == "poly") {
-      plc = ruppert::readPoly(in, name);
+      plc = ruppert::parsePoly(text, name);
     } else if (format == "node") {
-      plc = ruppert::readNode(in, name);
+      plc = ruppert::parseNode(text, name);
     } else if (format == "json") {
-      plc = ruppert::readJson(in, name);
+      plc = ruppert::parseJson(text, name);
     } else {
       throw ruppert::Error(ruppert::ErrorCode::InvalidOption, "unknown input format '" + format + "'");
     }
@@ -400,22 +393,22 @@ val writeMesh(val meshJs, val inputJs, std::string format) {
   return guarded([&] {
     const ruppert::Mesh mesh = meshFromJs(meshJs);
     const ruppert::Plc input = inputJs.isNull() || inputJs.isUndefined() ? ruppert::Plc{} : plcFromJs(inputJs);
-    std::ostringstream out;
+    std::string text;
     if (format == "node") {
-      ruppert::writeNode(out, mesh);
+      text = ruppert::toNode(mesh);
     } else if (format == "ele") {
-      ruppert::writeEle(out, mesh);
+      text = ruppert::toEle(mesh);
     } else if (format == "poly") {
-      ruppert::writePoly(out, mesh, input);
+      text = ruppert::toPoly(mesh, input);
     } else if (format == "json") {
-      ruppert::writeJson(out, mesh, input);
+      text = ruppert::toJson(mesh, input);
     } else if (format == "svg") {
-      ruppert::writeSvg(out, mesh);
+      text = ruppert::toSvg(mesh);
     } else {
       throw ruppert::Error(ruppert::ErrorCode::InvalidOption, "unknown output format '" + format + "'");
     }
     val result = val::object();
-    result.set("text", out.str());
+    result.set("text", text);
     return result;
   });
 }

@@ -6,8 +6,12 @@
 #include <ostream>
 #include <string>
 
+#include "text_out.h"
+
 namespace ruppert::cli {
 namespace {
+
+using detail::TextOut;
 
 std::string fixed(double v, int decimals) {
   if (!std::isfinite(v)) return "-";  // never print "nan"
@@ -44,9 +48,7 @@ const char* eventName(EventKind kind) {
   return "unknown";
 }
 
-}  // namespace
-
-void printSummary(std::ostream& out, const Mesh& mesh) {
+void summaryTo(TextOut& out, const Mesh& mesh) {
   const Stats& s = mesh.stats;
   out << "ruppert: " << s.vertices << " vertices, " << mesh.triangles.size() / 3 << " triangles, min angle "
       << fixed(s.minAngle, 2) << ", max angle " << fixed(s.maxAngle, 1) << ", "
@@ -63,7 +65,7 @@ void printSummary(std::ostream& out, const Mesh& mesh) {
   out << '\n';
 }
 
-void printStats(std::ostream& out, const Stats& s) {
+void statsTo(TextOut& out, const Stats& s) {
   out << "vertices: " << s.vertices << " (input " << s.inputVertices << ", on segments " << s.segmentVertices
       << ", circumcenters " << s.interiorVertices << ", off-centers " << s.offCenterVertices << ", intersections "
       << s.intersectionVertices << ")\n";
@@ -86,7 +88,7 @@ void printStats(std::ostream& out, const Stats& s) {
   out << "time: " << fixed(s.milliseconds, 3) << " ms\n";
 }
 
-void writeTrace(std::ostream& out, const Mesh& mesh) {
+void traceTo(TextOut& out, const Mesh& mesh) {
   for (const Event& e : mesh.events) {
     out << "{\"kind\":\"" << eventName(e.kind) << "\",\"vertex\":" << e.vertex << ",\"x\":" << real(e.x)
         << ",\"y\":" << real(e.y);
@@ -100,6 +102,32 @@ void writeTrace(std::ostream& out, const Mesh& mesh) {
     if (e.kind == EventKind::Rejected) out << ",\"cx\":" << real(e.cx) << ",\"cy\":" << real(e.cy);
     out << "}\n";
   }
+}
+
+}  // namespace
+
+std::string summaryText(const Mesh& mesh) {
+  TextOut out;
+  summaryTo(out, mesh);
+  return out.take();
+}
+
+std::string statsText(const Stats& stats) {
+  TextOut out;
+  statsTo(out, stats);
+  return out.take();
+}
+
+std::string traceText(const Mesh& mesh) {
+  TextOut out;
+  traceTo(out, mesh);
+  return out.take();
+}
+
+void writeTrace(std::ostream& stream, const Mesh& mesh) {
+  TextOut out(detail::writeToStream<std::ostream>, &stream);
+  traceTo(out, mesh);
+  out.flush();
 }
 
 }  // namespace ruppert::cli

@@ -112,8 +112,8 @@ int run(int argc, char** argv) {
     std::cerr << "error: " << f.message << '\n';
     return kExitWriteFailed;
   }
-  if (!args.quiet) ruppert::cli::printSummary(std::cout, mesh);
-  if (args.stats) ruppert::cli::printStats(std::cout, mesh.stats);
+  if (!args.quiet) std::cout << ruppert::cli::summaryText(mesh);
+  if (args.stats) std::cout << ruppert::cli::statsText(mesh.stats);
   std::cout.flush();
   return kExitOk;
 }

@@ -380,10 +380,12 @@ class JsonReader {
 
 }  // namespace
 
+Plc parseJson(const std::string& text, const std::string& name) { return JsonReader(text, name).document(); }
+
 Plc readJson(std::istream& in, const std::string& name) {
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) throw Error(ErrorCode::IoError, name + ": read failed");
-  return JsonReader(text, name).document();
+  return parseJson(text, name);
 }
 
 }  // namespace ruppert

@@ -25,7 +25,6 @@
 #include <istream>
 #include <iterator>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -329,7 +328,7 @@ std::string slurp(std::istream& in, const std::string& name) {
   return text;
 }
 
-Plc parseNode(const std::string& text, const std::string& name) {
+Plc nodeFromText(const std::string& text, const std::string& name) {
   TriangleText in(text, name);
   TriangleReader reader(in);
   Record header;
@@ -341,7 +340,7 @@ Plc parseNode(const std::string& text, const std::string& name) {
 }
 
 // `loadNode` supplies the points when the .poly declares none (Triangle's "see the .node file").
-Plc parsePoly(const std::string& text, const std::string& name, const std::function<Plc()>& loadNode) {
+Plc polyFromText(const std::string& text, const std::string& name, const std::function<Plc()>& loadNode) {
   TriangleText in(text, name);
   TriangleReader reader(in);
   Record header;
@@ -383,19 +382,23 @@ std::string readWholeFile(const std::string& path) {
 
 }  // namespace
 
-Plc readNode(std::istream& in, const std::string& name) { return parseNode(slurp(in, name), name); }
+Plc parseNode(const std::string& text, const std::string& name) { return nodeFromText(text, name); }
 
-Plc readPoly(std::istream& in, const std::string& name) {
-  return parsePoly(slurp(in, name), name, [&name]() -> Plc {
+Plc parsePoly(const std::string& text, const std::string& name) {
+  return polyFromText(text, name, [&name]() -> Plc {
     throw Error(ErrorCode::ParseError,
                 name + ":1: the .poly declares 0 points, so its points are in a .node file of the same name; "
                        "read it with readFile");
   });
 }
 
+Plc readNode(std::istream& in, const std::string& name) { return parseNode(slurp(in, name), name); }
+
+Plc readPoly(std::istream& in, const std::string& name) { return parsePoly(slurp(in, name), name); }
+
 Plc readFile(const std::string& path) {
   const std::string ext = lowerExtension(path);
-  if (ext == ".node") return parseNode(readWholeFile(path), path);
+  if (ext == ".node") return nodeFromText(readWholeFile(path), path);
   if (ext == ".json") {
     std::ifstream file(path, std::ios::binary);
     if (!file) throw Error(ErrorCode::IoError, path + ": cannot open for reading");
@@ -405,7 +408,7 @@ Plc readFile(const std::string& path) {
     // Same base name; keep the case of the extension the user wrote ("A.POLY" -> "A.NODE").
     const std::string written = path.substr(path.size() - ext.size());
     const std::string nodePath = path.substr(0, path.size() - ext.size()) + (written == ext ? ".node" : ".NODE");
-    return parsePoly(readWholeFile(path), path, [&nodePath]() { return parseNode(readWholeFile(nodePath), nodePath); });
+    return polyFromText(readWholeFile(path), path, [&nodePath]() { return nodeFromText(readWholeFile(nodePath), nodePath); });
   }
   throw Error(ErrorCode::IoError, path + ": unknown extension; expected .poly, .node or .json");
 }

@@ -91,6 +91,16 @@ Mesh assemble(MeshState& m) {
     const double* p[3] = {t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2])};
     double angles[3];
     triangleAngles(p, angles);
+    // Within 1e-6 degrees of a bin's edge the approximation could pick the other bin (an angle of
+    // exactly 30 degrees is common: off-centers make them): there the library's arctangent decides.
+    for (double radians : angles) {
+      const double a = radians * (180.0 / M_PI);
+      if (a - std::floor(a) < 1e-6 || std::ceil(a) - a < 1e-6) {
+        angles[0] = cornerAngle(p, 0), angles[1] = cornerAngle(p, 1);
+        angles[2] = std::max(0.0, M_PI - angles[0] - angles[1]);
+        break;
+      }
+    }
     for (int i = 0; i < 3; ++i) {
       const double a = angles[i] * (180.0 / M_PI);
       if (a < smallest.degrees) smallest = {a, s, i};

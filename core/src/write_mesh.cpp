@@ -15,9 +15,12 @@
 #include <vector>
 
 #include "ruppert/ruppert.h"
+#include "text_out.h"
 
 namespace ruppert {
 namespace {
+
+using detail::TextOut;
 
 // %.17g of a finite value.
 std::string real(double v) {
@@ -53,7 +56,7 @@ std::vector<std::int32_t> pointMarkers(const Mesh& mesh) {
   return markers;
 }
 
-void writePoints(std::ostream& out, const Mesh& mesh) {
+void writePoints(TextOut& out, const Mesh& mesh) {
   requireFinite(mesh.points, "points");
   const std::vector<std::int32_t> markers = pointMarkers(mesh);
   const std::size_t base = static_cast<std::size_t>(baseOf(mesh));
@@ -90,7 +93,7 @@ std::string jsonString(const std::string& s) {
 }
 
 template <typename T, typename Format>
-void jsonArray(std::ostream& out, const char* key, const std::vector<T>& values, Format format) {
+void jsonArray(TextOut& out, const char* key, const std::vector<T>& values, Format format) {
   out << "  \"" << key << "\": [";
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (i) out << ',';
@@ -128,7 +131,7 @@ const char* noticeName(NoticeKind kind) {
   return "unknown";
 }
 
-void jsonStats(std::ostream& out, const Stats& s) {
+void jsonStats(TextOut& out, const Stats& s) {
   out << "  \"stats\": {\"vertices\": " << s.vertices << ", \"triangles\": " << s.triangles
       << ", \"minAngle\": " << jsonReal(s.minAngle) << ", \"maxAngle\": " << jsonReal(s.maxAngle)
       << ", \"angleHistogram\": [";
@@ -141,19 +144,29 @@ void jsonStats(std::ostream& out, const Stats& s) {
       << ", \"milliseconds\": " << jsonReal(s.milliseconds) << "}";
 }
 
-void finish(std::ostream& out, const char* what) {
+// Prints into `out` in pieces as the text is made; throws IoError if the stream fails.
+template <class Print>
+void toStream(std::ostream& out, const char* what, Print&& print) {
+  TextOut text(detail::writeToStream<std::ostream>, &out);
+  print(text);
+  text.flush();
   out.flush();
   if (!out) throw Error(ErrorCode::IoError, std::string("writing the ") + what + " output failed");
 }
 
-}  // namespace
-
-void writeNode(std::ostream& out, const Mesh& mesh) {
-  writePoints(out, mesh);
-  finish(out, ".node");
+template <class Print>
+std::string toText(Print&& print) {
+  TextOut text;
+  print(text);
+  return text.take();
 }
 
-void writeEle(std::ostream& out, const Mesh& mesh) {
+
+void printNode(TextOut& out, const Mesh& mesh) {
+  writePoints(out, mesh);
+}
+
+void printEle(TextOut& out, const Mesh& mesh) {
   const std::size_t n = mesh.triangles.size() / 3;
   const std::size_t base = static_cast<std::size_t>(baseOf(mesh));
   // Region attributes are written (Triangle's -A output) only when some triangle has one.
@@ -166,10 +179,9 @@ void writeEle(std::ostream& out, const Mesh& mesh) {
     if (attributes) out << ' ' << real(mesh.triangleAttributes[t]);
     out << '\n';
   }
-  finish(out, ".ele");
 }
 
-void writePoly(std::ostream& out, const Mesh& mesh, const Plc& input) {
+void printPoly(TextOut& out, const Mesh& mesh, const Plc& input) {
   requireFinite(input.holes, "holes");
   for (std::size_t i = 0; i < input.regions.size(); ++i) {
     const Region& r = input.regions[i];
@@ -197,10 +209,9 @@ void writePoly(std::ostream& out, const Mesh& mesh, const Plc& input) {
     out << (i + base) << ' ' << real(r.x) << ' ' << real(r.y) << ' ' << real(r.attribute) << ' '
         << (r.maxArea > 0 ? real(r.maxArea) : "-1") << '\n';
   }
-  finish(out, ".poly");
 }
 
-void writeJson(std::ostream& out, const Mesh& mesh, const Plc& input) {
+void printJson(TextOut& out, const Mesh& mesh, const Plc& input) {
   auto number = [](double v) { return jsonReal(v); };
   auto whole = [](auto v) { return integer(v); };
   out << "{\n";
@@ -241,10 +252,9 @@ void writeJson(std::ostream& out, const Mesh& mesh, const Plc& input) {
   out << "],\n";
   jsonStats(out, mesh.stats);
   out << "\n}\n";
-  finish(out, "JSON");
 }
 
-void writeSvg(std::ostream& out, const Mesh& mesh) {
+void printSvg(TextOut& out, const Mesh& mesh) {
   requireFinite(mesh.points, "points");
   const std::size_t n = pointCount(mesh);
   // Fit the view to the vertices the triangles use (an unused far-away input point would shrink the
@@ -295,7 +305,24 @@ void writeSvg(std::ostream& out, const Mesh& mesh) {
     out << 'M' << xy(a) << 'L' << xy(b);
   }
   out << "\"/>\n</svg>\n";
-  finish(out, "SVG");
 }
+
+}  // namespace
+
+void writeNode(std::ostream& out, const Mesh& mesh) { toStream(out, ".node", [&](TextOut& t) { printNode(t, mesh); }); }
+void writeEle(std::ostream& out, const Mesh& mesh) { toStream(out, ".ele", [&](TextOut& t) { printEle(t, mesh); }); }
+void writePoly(std::ostream& out, const Mesh& mesh, const Plc& input) {
+  toStream(out, ".poly", [&](TextOut& t) { printPoly(t, mesh, input); });
+}
+void writeJson(std::ostream& out, const Mesh& mesh, const Plc& input) {
+  toStream(out, "JSON", [&](TextOut& t) { printJson(t, mesh, input); });
+}
+void writeSvg(std::ostream& out, const Mesh& mesh) { toStream(out, "SVG", [&](TextOut& t) { printSvg(t, mesh); }); }
+
+std::string toNode(const Mesh& mesh) { return toText([&](TextOut& t) { printNode(t, mesh); }); }
+std::string toEle(const Mesh& mesh) { return toText([&](TextOut& t) { printEle(t, mesh); }); }
+std::string toPoly(const Mesh& mesh, const Plc& input) { return toText([&](TextOut& t) { printPoly(t, mesh, input); }); }
+std::string toJson(const Mesh& mesh, const Plc& input) { return toText([&](TextOut& t) { printJson(t, mesh, input); }); }
+std::string toSvg(const Mesh& mesh) { return toText([&](TextOut& t) { printSvg(t, mesh); }); }
 
 }  // namespace ruppert

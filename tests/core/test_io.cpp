@@ -637,3 +637,34 @@ TEST_CASE("every shared .poly reads without error and matches its README counts"
   CHECK(files == expected.size());
 #endif
 }
+
+// The string forms (what the WebAssembly binding uses) print exactly what the stream forms print,
+// including across TextOut's 64 KiB pieces, and the text readers read what the stream readers read.
+TEST_CASE("string writers and readers match the stream ones", "[io]") {
+  const ruppert::Plc plc = ruppert::readFile(kFixtures + "zero-based-commented.poly");
+  ruppert::Options options;
+  options.maxArea = 0.0005;  // thousands of triangles: the texts span many 64 KiB pieces
+  const ruppert::Mesh mesh = ruppert::triangulate(plc, options);
+  REQUIRE(mesh.triangles.size() / 3 > 2000);
+  auto streamed = [](auto&& write) {
+    std::ostringstream out;
+    write(out);
+    return out.str();
+  };
+  const std::string node = ruppert::toNode(mesh), json = ruppert::toJson(mesh, plc);
+  CHECK(json.size() > 3 * 65536);
+  CHECK(node == streamed([&](std::ostream& o) { ruppert::writeNode(o, mesh); }));
+  CHECK(ruppert::toEle(mesh) == streamed([&](std::ostream& o) { ruppert::writeEle(o, mesh); }));
+  CHECK(ruppert::toPoly(mesh, plc) == streamed([&](std::ostream& o) { ruppert::writePoly(o, mesh, plc); }));
+  CHECK(json == streamed([&](std::ostream& o) { ruppert::writeJson(o, mesh, plc); }));
+  CHECK(ruppert::toSvg(mesh) == streamed([&](std::ostream& o) { ruppert::writeSvg(o, mesh); }));
+
+  const std::string poly = ruppert::toPoly(mesh, plc);
+  std::istringstream polyStream(poly), jsonStream(json), nodeStream(node);
+  const ruppert::Plc fromText = ruppert::parsePoly(poly, "m.poly"), fromStream = ruppert::readPoly(polyStream, "m.poly");
+  CHECK(fromText.points == fromStream.points);
+  CHECK(fromText.segments == fromStream.segments);
+  CHECK(fromText.points == mesh.points);
+  CHECK(ruppert::parseJson(json, "m.json").points == ruppert::readJson(jsonStream, "m.json").points);
+  CHECK(ruppert::parseNode(node, "m.node").points == ruppert::readNode(nodeStream, "m.node").points);
+}

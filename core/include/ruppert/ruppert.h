@@ -253,6 +253,10 @@ Plc readNode(std::istream& in, const std::string& name = "<node>");
 Plc readJson(std::istream& in, const std::string& name = "<json>");
 // By extension: .poly, .node or .json. Throws IoError if unreadable.
 Plc readFile(const std::string& path);
+// The same readers over text already in memory (`name` appears in error messages).
+Plc parsePoly(const std::string& text, const std::string& name = "<poly>");
+Plc parseNode(const std::string& text, const std::string& name = "<node>");
+Plc parseJson(const std::string& text, const std::string& name = "<json>");
 
 // Writers print coordinates with 17 significant digits (they read back bit-exact) and indices in
 // mesh.indexBase.
@@ -261,5 +265,11 @@ void writeEle(std::ostream& out, const Mesh& mesh);
 void writePoly(std::ostream& out, const Mesh& mesh, const Plc& input);  // subsegments + input holes/regions
 void writeJson(std::ostream& out, const Mesh& mesh, const Plc& input);  // input JSON shape + "triangles" etc.
 void writeSvg(std::ostream& out, const Mesh& mesh);
+// The same texts as strings.
+std::string toNode(const Mesh& mesh);
+std::string toEle(const Mesh& mesh);
+std::string toPoly(const Mesh& mesh, const Plc& input);
+std::string toJson(const Mesh& mesh, const Plc& input);
+std::string toSvg(const Mesh& mesh);
 
 }  // namespace ruppert
