@@ -12,6 +12,8 @@
 //     into a MeshError.
 //   * Results are copies (TypedArray.prototype.slice of a view), never views into the heap,
 //     which would go stale the moment the heap grows.
+//   * triangulate() goes through the heap (wasm/heap-call.js and "triangulate() through the heap"
+//     below); readers, writers and the CLI parser use embind objects.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 #include <malloc.h>
@@ -182,27 +184,6 @@ const char* reasonKindName(ruppert::ReasonKind k) {
   return "UNKNOWN";
 }
 
-val statsToJs(const ruppert::Stats& s) {
-  val o = val::object();
-  o.set("vertices", static_cast<double>(s.vertices));
-  o.set("triangles", static_cast<double>(s.triangles));
-  o.set("minAngle", s.minAngle);
-  o.set("maxAngle", s.maxAngle);
-  // Counts fit a double exactly (< 2^53); a Float64Array transfers from a worker for free.
-  std::vector<double> histogram(s.angleHistogram.begin(), s.angleHistogram.end());
-  o.set("angleHistogram", copyOut(histogram));
-  o.set("inputVertices", static_cast<double>(s.inputVertices));
-  o.set("segmentVertices", static_cast<double>(s.segmentVertices));
-  o.set("interiorVertices", static_cast<double>(s.interiorVertices));
-  o.set("offCenterVertices", static_cast<double>(s.offCenterVertices));
-  o.set("intersectionVertices", static_cast<double>(s.intersectionVertices));
-  o.set("rejectedCircumcenters", static_cast<double>(s.rejectedCircumcenters));
-  o.set("lfsIntegral", s.lfsIntegral);
-  o.set("trianglesPerLfsIntegral", s.trianglesPerLfsIntegral);
-  o.set("milliseconds", s.milliseconds);
-  return o;
-}
-
 // Events as a structure of arrays: a trace can hold millions of them, and typed arrays are both
 // smaller than objects and transferable from a worker.
 val eventsToJs(const std::vector<ruppert::Event>& events) {
@@ -239,31 +220,21 @@ val eventsToJs(const std::vector<ruppert::Event>& events) {
   return o;
 }
 
-val meshToJs(const ruppert::Mesh& m) {
-  val o = val::object();
-  o.set("points", copyOut(m.points));
-  o.set("triangles", copyOut(m.triangles));
-  o.set("neighbors", copyOut(m.neighbors));
-  o.set("segments", copyOut(m.segments));
-  o.set("segmentIds", copyOut(m.segmentIds));
-  o.set("vertexKinds", copyOut(m.vertexKinds));
-  o.set("triangleAttributes", copyOut(m.triangleAttributes));
-  o.set("pointMarkers", copyOut(m.pointMarkers));
-  o.set("indexBase", m.indexBase);
-  o.set("complete", m.complete);
-
+val reasonsToJs(const std::vector<ruppert::Reason>& list) {
   val reasons = val::array();
-  for (const ruppert::Reason& r : m.reasons) {
+  for (const ruppert::Reason& r : list) {
     val item = val::object();
     item.set("kind", std::string(reasonKindName(r.kind)));
     item.set("count", static_cast<double>(r.count));
     item.set("message", r.message);
     reasons.call<void>("push", item);
   }
-  o.set("reasons", reasons);
+  return reasons;
+}
 
+val noticesToJs(const std::vector<ruppert::Notice>& list) {
   val notices = val::array();
-  for (const ruppert::Notice& n : m.notices) {
+  for (const ruppert::Notice& n : list) {
     val item = val::object();
     item.set("kind", std::string(noticeKindName(n.kind)));
     item.set("a", static_cast<double>(n.a));
@@ -273,9 +244,20 @@ val meshToJs(const ruppert::Mesh& m) {
     item.set("message", n.message);
     notices.call<void>("push", item);
   }
-  o.set("notices", notices);
-  o.set("stats", statsToJs(m.stats));
-  return o;
+  return notices;
+}
+
+// `report` (used by wasm/cli.js) is { summary, stats, trace } booleans: the native CLI's texts for
+// this mesh, printed by the same C++ code so that both CLIs print the same thing.
+val reportToJs(const ruppert::Mesh& mesh, const val& report) {
+  val texts = val::object();
+  const auto text = [&](const char* key, auto&& print) {
+    if (report[key].as<bool>()) texts.set(key, print());
+  };
+  text("summary", [&] { return ruppert::cli::summaryText(mesh); });
+  text("stats", [&] { return ruppert::cli::statsText(mesh.stats); });
+  text("trace", [&] { return ruppert::cli::traceText(mesh); });
+  return texts;
 }
 
 val plcToJs(const ruppert::Plc& plc) {
@@ -302,29 +284,6 @@ val plcToJs(const ruppert::Plc& plc) {
 // ---------------------------------------------------------------------------------------------
 // Entry points
 // ---------------------------------------------------------------------------------------------
-// `report` (used by wasm/cli.js) is null or { summary, stats, trace } booleans: the native CLI's
-// texts for this mesh, printed by the same C++ code so that both CLIs print the same thing.
-val triangulate(val plcJs, val optionsJs, val report) {
-  return guarded([&] {
-    const ruppert::Plc plc = plcFromJs(plcJs);
-    const ruppert::Options options = optionsFromJs(optionsJs);
-    const ruppert::Mesh mesh = ruppert::triangulate(plc, options);
-    val out = meshToJs(mesh);
-    if (options.trace) out.set("events", eventsToJs(mesh.events));
-    if (!report.isNull() && !report.isUndefined()) {
-      val texts = val::object();
-      const auto text = [&](const char* key, auto&& print) {
-        if (report[key].as<bool>()) texts.set(key, print());
-      };
-      text("summary", [&] { return ruppert::cli::summaryText(mesh); });
-      text("stats", [&] { return ruppert::cli::statsText(mesh.stats); });
-      text("trace", [&] { return ruppert::cli::traceText(mesh); });
-      out.set("report", texts);
-    }
-    return out;
-  });
-}
-
 // The native CLI's argument parser. Returns { usageLine, helpText, usageError? } plus, on success,
 // the parsed fields with options in index.js's vocabulary.
 val parseCliArgs(val argsJs) {
@@ -413,6 +372,110 @@ val writeMesh(val meshJs, val inputJs, std::string format) {
   });
 }
 
+// ---------------------------------------------------------------------------------------------
+// triangulate() through the heap (wasm/heap-call.js): the input arrays are written by JavaScript
+// straight into the vectors of a staged Plc, and the output arrays are read back from a table of
+// addresses. A small mesh otherwise spends a third of its call in embind, one JavaScript round trip
+// per object field.
+// ---------------------------------------------------------------------------------------------
+// Layout of outputTable(), read by wasm/heap-call.js: nine (address, length) pairs, then scalars.
+constexpr int kOutputTableSize = 2 * 9 + 18;
+
+struct Staged {
+  ruppert::Plc plc;
+  std::vector<double> regions;  // x, y, attribute, maxArea per region
+  std::uintptr_t inputTable[6] = {};
+  ruppert::Mesh mesh;
+  std::vector<double> histogram;
+  double outputTable[kOutputTableSize] = {};
+};
+
+Staged& staged() {
+  static Staged s;
+  return s;
+}
+
+template <class T>
+std::uintptr_t sized(std::vector<T>& v, double length) {
+  v.assign(static_cast<std::size_t>(length), T{});
+  v.shrink_to_fit();  // the previous call's capacity is not kept
+  return reinterpret_cast<std::uintptr_t>(v.data());
+}
+
+// Sizes the staged input arrays (lengths in elements) and returns the address of six addresses where
+// JavaScript writes them: points (f64), segments (u32), holes (f64), regions (f64, 4 per region),
+// pointMarkers (i32), segmentMarkers (i32). 0 if they do not fit in memory.
+std::uintptr_t stageInput(double points, double segments, double holes, double regions, double pointMarkers,
+                          double segmentMarkers, int indexBase) {
+  Staged& s = staged();
+  try {
+    s.mesh = ruppert::Mesh{};
+    s.inputTable[0] = sized(s.plc.points, points);
+    s.inputTable[1] = sized(s.plc.segments, segments);
+    s.inputTable[2] = sized(s.plc.holes, holes);
+    s.inputTable[3] = sized(s.regions, regions);
+    s.inputTable[4] = sized(s.plc.pointMarkers, pointMarkers);
+    s.inputTable[5] = sized(s.plc.segmentMarkers, segmentMarkers);
+    s.plc.indexBase = indexBase;
+  } catch (const std::bad_alloc&) {
+    s.plc = ruppert::Plc{};
+    s.regions = {};
+    return 0;
+  }
+  return reinterpret_cast<std::uintptr_t>(s.inputTable);
+}
+
+// Meshes the staged input. Returns null on success (the mesh is then described by outputTable(), and
+// its reasons, notices, events and report by stagedExtras()), else a failure object.
+val triangulateStaged(val optionsJs) {
+  return guarded([&] {
+    Staged& s = staged();
+    s.plc.regions.clear();
+    for (std::size_t i = 0; i + 3 < s.regions.size(); i += 4)
+      s.plc.regions.push_back(ruppert::Region{s.regions[i], s.regions[i + 1], s.regions[i + 2], s.regions[i + 3]});
+    const ruppert::Options options = optionsFromJs(optionsJs);
+    s.mesh = ruppert::triangulate(s.plc, options);
+    s.plc = ruppert::Plc{};
+    s.regions = {};
+    const ruppert::Mesh& m = s.mesh;
+    const ruppert::Stats& st = m.stats;
+    s.histogram.assign(st.angleHistogram.begin(), st.angleHistogram.end());
+    double* t = s.outputTable;
+    auto array = [&t](const auto& v) {
+      *t++ = static_cast<double>(reinterpret_cast<std::uintptr_t>(v.data()));
+      *t++ = static_cast<double>(v.size());
+    };
+    array(m.points), array(m.triangles), array(m.neighbors), array(m.segments), array(m.segmentIds);
+    array(m.vertexKinds), array(m.triangleAttributes), array(m.pointMarkers), array(s.histogram);
+    for (double v : {double(m.indexBase), m.complete ? 1.0 : 0.0, double(m.reasons.size()), double(m.notices.size()),
+                     double(m.events.size()), double(st.vertices), double(st.triangles), st.minAngle, st.maxAngle,
+                     double(st.inputVertices), double(st.segmentVertices), double(st.interiorVertices),
+                     double(st.offCenterVertices), double(st.intersectionVertices), double(st.rejectedCircumcenters),
+                     st.lfsIntegral, st.trianglesPerLfsIntegral, st.milliseconds})
+      *t++ = v;
+    return val::null();
+  });
+}
+
+std::uintptr_t outputTable() { return reinterpret_cast<std::uintptr_t>(staged().outputTable); }
+
+// The staged mesh's reasons and notices, its events when traced, and the CLI's texts when `report`
+// is not null (see reportToJs).
+val stagedExtras(val report, bool trace) {
+  return guarded([&] {
+    const ruppert::Mesh& mesh = staged().mesh;
+    val out = val::object();
+    out.set("reasons", reasonsToJs(mesh.reasons));
+    out.set("notices", noticesToJs(mesh.notices));
+    if (trace) out.set("events", eventsToJs(mesh.events));
+    if (!report.isNull() && !report.isUndefined()) out.set("report", reportToJs(mesh, report));
+    return out;
+  });
+}
+
+// Frees the staged mesh once JavaScript has copied it out.
+void releaseStaged() { staged().mesh = ruppert::Mesh{}; }
+
 // Bytes currently allocated by malloc: lets tests prove that repeated calls do not leak.
 double allocatedBytes() { return static_cast<double>(mallinfo().uordblks); }
 
@@ -422,7 +485,11 @@ void abortForTesting() { std::abort(); }
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(ruppert) {
-  emscripten::function("triangulate", &triangulate);
+  emscripten::function("stageInput", &stageInput);
+  emscripten::function("triangulateStaged", &triangulateStaged);
+  emscripten::function("outputTable", &outputTable);
+  emscripten::function("stagedExtras", &stagedExtras);
+  emscripten::function("releaseStaged", &releaseStaged);
   emscripten::function("readPlc", &readPlc);
   emscripten::function("writeMesh", &writeMesh);
   emscripten::function("parseCliArgs", &parseCliArgs);

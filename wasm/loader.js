@@ -77,6 +77,6 @@ export function instantiateSync(compiled) {
   // The factory's promise only matters for the asynchronous path; silence a later rejection
   // (an abort rejects it again).
   createRuppertModule(module).catch(() => {});
-  if (typeof module.triangulate !== 'function') throw new Error('synchronous instantiation failed');
+  if (typeof module.triangulateStaged !== 'function') throw new Error('synchronous instantiation failed');
   return module;
 }

@@ -5,6 +5,7 @@
 // overflow) leaves the instance in an unknown state, so it is dropped and the next call runs on a
 // fresh instance of the same compiled module.
 import { MeshError } from './errors.js';
+import { triangulateInHeap } from './heap-call.js';
 import { instantiate, instantiateSync } from './loader.js';
 import { normalizeMesh, normalizeOptions, normalizePlc } from './validate.js';
 
@@ -51,11 +52,12 @@ export function createMesher(compiled, firstModule) {
     }
   }
 
-  function call(name, ...args) {
+  // Runs body(module); an exception out of it (an abort, a trap) discards the instance.
+  function run(name, body) {
     const m = current();
     let result;
     try {
-      result = m[name](...args);
+      result = body(m);
     } catch (cause) {
       discard();
       const detail = cause instanceof Error ? cause.message : String(cause);
@@ -64,6 +66,10 @@ export function createMesher(compiled, firstModule) {
     }
     if (result && result.reset) discard();
     return result;
+  }
+
+  function call(name, ...args) {
+    return run(name, (m) => m[name](...args));
   }
 
   function check(result) {
@@ -103,7 +109,7 @@ export function createMesher(compiled, firstModule) {
         }
       };
     }
-    const result = call('triangulate', input, native, report);
+    const result = run('triangulate', (m) => triangulateInHeap(m, input, native, report));
     if (result.errorCode === 'CALLBACK_FAILED') {
       throw callbackError ?? new MeshError('INTERNAL', 'a callback failed without an error');
     }

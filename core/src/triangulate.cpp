@@ -95,7 +95,8 @@ Mesh assemble(MeshState& m) {
     // exactly 30 degrees is common: off-centers make them): there the library's arctangent decides.
     for (double radians : angles) {
       const double a = radians * (180.0 / M_PI);
-      if (a - std::floor(a) < 1e-6 || std::ceil(a) - a < 1e-6) {
+      const double fraction = a - static_cast<double>(static_cast<int>(a));  // 0 <= a <= 180
+      if (fraction < 1e-6 || fraction > 1 - 1e-6) {
         angles[0] = cornerAngle(p, 0), angles[1] = cornerAngle(p, 1);
         angles[2] = std::max(0.0, M_PI - angles[0] - angles[1]);
         break;
