@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "mesh_state.h"
+#include "angle_stats.h"
 #include "refine.h"
-#include "triangle_shape.h"
 
 namespace ruppert {
 
@@ -65,14 +65,7 @@ Mesh assemble(MeshState& m) {
   mesh.neighbors.resize(3 * count);
   mesh.triangleAttributes.resize(count);
   Stats& st = mesh.stats;
-  st.angleHistogram.assign(180, 0);
-  st.minAngle = 0;
-  st.maxAngle = 0;
-  struct Extreme {
-    double degrees;
-    std::uint32_t slot;
-    int corner;
-  } smallest{HUGE_VAL, kNone, 0}, largest{-HUGE_VAL, kNone, 0};
+  AngleStats angles;
   for (std::uint32_t s = 0; s < t.slotCount(); ++s) {
     if (!t.alive(s)) continue;
     const std::uint32_t o = slotToTri[s];
@@ -88,35 +81,11 @@ Mesh assemble(MeshState& m) {
       }
     }
     mesh.triangleAttributes[o] = m.attribute.empty() ? 0.0 : m.attribute[s];
-    const double* p[3] = {t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2])};
-    double angles[3];
-    triangleAngles(p, angles);
-    // Within 1e-6 degrees of a bin's edge the approximation could pick the other bin (an angle of
-    // exactly 30 degrees is common: off-centers make them): there the library's arctangent decides.
-    for (double radians : angles) {
-      const double a = radians * (180.0 / M_PI);
-      const double fraction = a - static_cast<double>(static_cast<int>(a));  // 0 <= a <= 180
-      if (fraction < 1e-6 || fraction > 1 - 1e-6) {
-        angles[0] = cornerAngle(p, 0), angles[1] = cornerAngle(p, 1);
-        angles[2] = std::max(0.0, M_PI - angles[0] - angles[1]);
-        break;
-      }
-    }
-    for (int i = 0; i < 3; ++i) {
-      const double a = angles[i] * (180.0 / M_PI);
-      if (a < smallest.degrees) smallest = {a, s, i};
-      if (a > largest.degrees) largest = {a, s, i};
-      st.angleHistogram[std::min<std::size_t>(179, static_cast<std::size_t>(a))]++;
-    }
+    angles.add(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2]));
   }
-  // The extremes with the library's arctangent (the histogram's approximation errs by < 1e-9 rad).
-  for (const Extreme* e : {&smallest, &largest}) {
-    if (e->slot == kNone) continue;
-    const double* p[3] = {t.pt(t.tv[3 * e->slot]), t.pt(t.tv[3 * e->slot + 1]), t.pt(t.tv[3 * e->slot + 2])};
-    double a = cornerAngle(p, e->corner);
-    if (e->corner == 2) a = std::max(0.0, M_PI - cornerAngle(p, 0) - cornerAngle(p, 1));
-    (e == &smallest ? st.minAngle : st.maxAngle) = a * (180.0 / M_PI);
-  }
+  st.angleHistogram = angles.histogram();
+  st.minAngle = angles.minAngle();
+  st.maxAngle = angles.maxAngle();
   st.triangles = count;
   for (std::uint8_t k : mesh.vertexKinds) {
     switch (static_cast<VertexKind>(k)) {

@@ -24,7 +24,6 @@
 #include <vector>
 
 #include "predicates.h"
-#include "triangle_shape.h"
 
 namespace {
 
@@ -428,29 +427,3 @@ TEST_CASE("extreme coordinates at both ends of the safe range", "[predicates]") 
   CHECK(checked == 24000);
 }
 
-// The output statistics bin every angle with a polynomial arctangent; it must stay within 1e-9 rad
-// of the library's atan2 everywhere, including the range-reduction seams and the near-degenerate ends.
-TEST_CASE("angleBetween agrees with atan2 within 1e-9 radians", "[predicates][stats]") {
-  std::mt19937_64 rng(20261126);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  std::uniform_int_distribution<int> exponent(-60, 60);
-  double worst = 0;
-  auto check = [&](double ux, double uy, double wx, double wy) {
-    const double expected = std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy);
-    const double got = ruppert::detail::angleBetween(ux, uy, wx, wy);
-    worst = std::max(worst, std::fabs(got - expected));
-    REQUIRE(got >= 0);
-    REQUIRE(got <= 3.14159265358979323846);
-  };
-  for (int k = 0; k < 200000; ++k)
-    check(std::ldexp(unit(rng), exponent(rng)), std::ldexp(unit(rng), exponent(rng)), unit(rng), unit(rng));
-  // Angles swept finely through [0, pi], crossing the seams at pi/12-ish quotients, pi/4 and pi/2.
-  for (int k = 0; k <= 100000; ++k) {
-    const double a = 3.14159265358979323846 * k / 100000;
-    check(1, 0, std::cos(a), std::sin(a));
-    check(3, -2, 3 * std::cos(a) + 2 * std::sin(a), 3 * std::sin(a) - 2 * std::cos(a));
-  }
-  check(1, 0, 1, 1e-300), check(1, 0, -1, 1e-300), check(0, 1, 1e-300, 1), check(0, 0, 1, 1);
-  CHECK(worst < 1e-9);
-  CHECK(ruppert::detail::angleBetween(0, 0, 1, 1) == 0);
-}
