@@ -61,7 +61,11 @@ struct BadTriangle {
   std::uint8_t angleClass;  // sin^2 of the smallest angle in kAngleClasses steps
 };
 
-double dist(const double* p, const double* q) { return std::hypot(p[0] - q[0], p[1] - q[1]); }
+// Plain sqrt(x^2 + y^2) rather than hypot (several times slower, and a library call in WebAssembly):
+// internal coordinates lie within (-2, 2), so no square overflows, and every length this file
+// compares or divides by is at least the length floor (2^-38), whose square is far above underflow.
+double length(double x, double y) { return std::sqrt(x * x + y * y); }
+double dist(const double* p, const double* q) { return length(p[0] - q[0], p[1] - q[1]); }
 double sq(const double* p, const double* q) { return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]); }
 
 // A cavity already computed by Triangulation::cavity, handed to the insertion so it is not searched
@@ -169,7 +173,7 @@ class Refiner {
     forEachEnd([&](std::uint32_t v, std::uint32_t w) {
       const std::uint32_t k = fill[v]++;
       const double dx = t_.xy[2 * w] - t_.xy[2 * v], dy = t_.xy[2 * w + 1] - t_.xy[2 * v + 1];
-      const double len = std::hypot(dx, dy);
+      const double len = length(dx, dy);
       dir[2 * k] = dx / len, dir[2 * k + 1] = dy / len;
     });
     for (std::uint32_t v = 0; v < n; ++v)
@@ -462,7 +466,7 @@ class Refiner {
     for (std::uint32_t side : {h, t_.twin[h]}) {
       if (side == kNone) continue;
       const double* q = t_.pt(t_.apex(side));
-      if (std::hypot(q[0] - x, q[1] - y) < kLengthFloor) {
+      if (length(q[0] - x, q[1] - y) < kLengthFloor) {
         ++floorHits_;
         return false;
       }
@@ -566,7 +570,7 @@ class Refiner {
       const double* u = p[(e + 1) % 3];
       const double* w = p[(e + 2) % 3];
       const double mx = (u[0] + w[0]) / 2, my = (u[1] + w[1]) / 2;
-      const double toC = std::hypot(cc[0] - mx, cc[1] - my);
+      const double toC = length(cc[0] - mx, cc[1] - my);
       const double hOff = (sh.shortest / 2) / std::tan(theta_ / 2);
       if (hOff < toC && toC > 0) {
         target[0] = mx + (cc[0] - mx) * (hOff / toC);
