@@ -24,6 +24,7 @@
 #include <exception>
 #include <new>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli_args.h"    // core/cli: the native CLI's parser, reused by wasm/cli.js
@@ -430,13 +431,14 @@ std::uintptr_t stageInput(double points, double segments, double holes, double r
 val triangulateStaged(val optionsJs) {
   return guarded([&] {
     Staged& s = staged();
-    s.plc.regions.clear();
-    for (std::size_t i = 0; i + 3 < s.regions.size(); i += 4)
-      s.plc.regions.push_back(ruppert::Region{s.regions[i], s.regions[i + 1], s.regions[i + 2], s.regions[i + 3]});
+    // Moved out, so that the input is freed however this call ends.
+    ruppert::Plc plc = std::move(s.plc);
+    const std::vector<double> regions = std::move(s.regions);
+    s.plc = ruppert::Plc{}, s.regions = {};
+    for (std::size_t i = 0; i + 3 < regions.size(); i += 4)
+      plc.regions.push_back(ruppert::Region{regions[i], regions[i + 1], regions[i + 2], regions[i + 3]});
     const ruppert::Options options = optionsFromJs(optionsJs);
-    s.mesh = ruppert::triangulate(s.plc, options);
-    s.plc = ruppert::Plc{};
-    s.regions = {};
+    s.mesh = ruppert::triangulate(plc, options);
     const ruppert::Mesh& m = s.mesh;
     const ruppert::Stats& st = m.stats;
     s.histogram.assign(st.angleHistogram.begin(), st.angleHistogram.end());

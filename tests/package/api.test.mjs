@@ -59,6 +59,41 @@ test('plain CDT of a square with an interior point: typed arrays owned by JavaSc
   assert.deepEqual(Array.from(mesh.points), before);
 });
 
+// triangulate() writes the six input arrays straight into the wasm heap (wasm/heap-call.js): each
+// must arrive intact, also when staging them grows the heap.
+test('every input array reaches the core intact through the heap', async () => {
+  const mesher = await init();
+  const side = 400, n = side * side;
+  const points = new Float64Array(2 * n + 16);
+  for (let k = 0; k < n; k++) {
+    points[2 * k] = ((k % side) + 0.5 + 0.3 * Math.sin(k)) / side;
+    points[2 * k + 1] = (Math.floor(k / side) + 0.5 + 0.3 * Math.cos(k)) / side;
+  }
+  // An outer square and a square hole around (0.5, 0.5).
+  points.set([-0.01, -0.01, 1.01, -0.01, 1.01, 1.01, -0.01, 1.01, 0.4, 0.4, 0.6, 0.4, 0.6, 0.6, 0.4, 0.6], 2 * n);
+  const segments = [];
+  for (const first of [n, n + 4]) for (let i = 0; i < 4; i++) segments.push(first + i, first + ((i + 1) % 4));
+  const pointMarkers = Int32Array.from({ length: n + 8 }, (_, i) => i % 3);
+  const plc = {
+    points, segments: new Uint32Array(segments), holes: [0.5, 0.5], pointMarkers,
+    segmentMarkers: [5, 6, 7, 8, 9, 10, 11, 12], regions: [{ x: 0.1, y: 0.1, attribute: 7 }],
+  };
+  const heapBefore = mesher.memoryUsage().heapBytes;
+  const mesh = mesher.triangulate(plc, { minAngle: 0 });
+  assert.deepEqual(mesh.points.subarray(0, points.length), points);
+  assert.deepEqual(mesh.pointMarkers.subarray(0, n + 8), pointMarkers);
+  assert.ok(mesh.triangleAttributes.every((a) => a === 7), 'the region attribute reaches every triangle');
+  const p = mesh.points, t = mesh.triangles;
+  for (let k = 0; k < t.length / 3; k++) {
+    const cx = (p[2 * t[3 * k]] + p[2 * t[3 * k + 1]] + p[2 * t[3 * k + 2]]) / 3;
+    const cy = (p[2 * t[3 * k] + 1] + p[2 * t[3 * k + 1] + 1] + p[2 * t[3 * k + 2] + 1]) / 3;
+    assert.ok(!(cx > 0.4 && cx < 0.6 && cy > 0.4 && cy < 0.6), `triangle ${k} lies in the hole`);
+  }
+  assert.ok(mesh.segments.length / 2 >= 8, 'the eight segments are in the mesh');
+  assert.equal(toPoly(mesh, plc).split('\n').at(-4), '0 0.5 0.5', 'the hole is written back');
+  console.log(`# heap ${heapBefore} -> ${mesher.memoryUsage().heapBytes} bytes, ${t.length / 3} triangles`);
+});
+
 test('meshes of real PLCs pass the independent validator', { skip: !haveData && 'shared data absent' }, async () => {
   const mesher = await init();
   for (const name of ['A.poly', 'face.poly', 'double_hex.poly', 'cdt_guitar.poly', 'earcut_dude.poly', 'box.poly']) {
