@@ -18,10 +18,12 @@
 namespace ruppert::detail {
 namespace {
 
-// Marks the triangles reachable from seed without crossing a constrained edge; returns how many.
-std::size_t flood(Triangulation& t, std::uint32_t seed, std::vector<std::uint8_t>& out, std::uint8_t value) {
+// Marks the triangles reachable from seed without crossing a constrained edge (those with the seed's
+// current mark) with `value`; returns how many.
+template <class Mark>
+std::size_t flood(Triangulation& t, std::uint32_t seed, std::vector<Mark>& out, typename std::vector<Mark>::value_type value) {
   std::vector<std::uint32_t> stack{seed};
-  const std::uint8_t before = out[seed];
+  const Mark before = out[seed];
   out[seed] = value;
   std::size_t count = 1;
   while (!stack.empty()) {
@@ -52,13 +54,18 @@ struct SeedName {
   std::string text() const;
 };
 
-std::uint32_t seedTriangle(MeshState& m, double x, double y, ErrorCode code, const SeedName& what) {
+// `hint`: where the walk starts (the previous seed's triangle: seeds in a list tend to be near each
+// other); kNone for any triangle.
+std::uint32_t seedTriangle(MeshState& m, double x, double y, ErrorCode code, const SeedName& what,
+                           std::uint32_t& hint) {
   Triangulation& t = m.tri;
   const double p[2] = {x, y};
-  std::uint32_t start = kNone;
-  for (std::uint32_t s = 0; s < t.slotCount() && start == kNone; ++s)
-    if (t.alive(s)) start = s;
-  const Location loc = t.locate(p, start);
+  if (hint == kNone || !t.alive(hint)) {
+    hint = 0;
+    while (hint < t.slotCount() && !t.alive(hint)) ++hint;
+  }
+  const Location loc = t.locate(p, hint);
+  if (loc.kind == Location::InTriangle || loc.kind == Location::OnEdge) hint = loc.tri;
   switch (loc.kind) {
     case Location::InTriangle:
       return loc.tri;
@@ -130,9 +137,10 @@ std::int64_t eatHoles(MeshState& m, std::vector<std::uint8_t>& state) {
   const Plc& plc = *m.plc;
   std::size_t remaining = static_cast<std::size_t>(std::count(state.begin(), state.end(), kUnknown));
   const auto& holes = m.input.holes;
+  std::uint32_t hint = kNone;
   for (std::size_t k = 0; k < holes.size() / 2; ++k) {
     const SeedName what{m, "holes", k, holes[2 * k], holes[2 * k + 1]};
-    const std::uint32_t s = seedTriangle(m, holes[2 * k], holes[2 * k + 1], ErrorCode::HoleOnSegment, what);
+    const std::uint32_t s = seedTriangle(m, holes[2 * k], holes[2 * k + 1], ErrorCode::HoleOnSegment, what, hint);
     if (s == kNone || state[s] == kOutside) {
       Notice n{NoticeKind::HoleOutsideDomain, static_cast<std::int64_t>(k), -1, plc.holes[2 * k], plc.holes[2 * k + 1], ""};
       n.message = what.text() + " is outside the domain; it removes nothing";
@@ -172,24 +180,39 @@ void classifyTriangles(MeshState& m) {
   const Plc& plc = *m.plc;
   m.attribute.assign(slots, 0.0);
   m.maxArea.assign(slots, m.input.maxArea);
-  std::vector<std::uint8_t> reached(slots, 0);
+  // Each connected part of the domain between segments is flooded once, when its first seed is
+  // met, and the seeds' values are gathered per part: thousands of regions (or of seeds in one
+  // region) cost one pass over the triangles, not one per seed. Later seeds set the attribute; the
+  // smallest area bound applies.
+  struct Part {
+    double attribute = 0, maxArea = 0;
+  };
+  std::vector<Part> parts;
+  std::vector<std::uint32_t> partOf(slots, kNone);
+  std::uint32_t hint = kNone;
   for (std::size_t k = 0; k < m.input.regions.size(); ++k) {
     const Region& r = m.input.regions[k];
     const SeedName what{m, "regions", k, r.x, r.y};
-    const std::uint32_t s = seedTriangle(m, r.x, r.y, ErrorCode::InvalidRegion, what);
+    const std::uint32_t s = seedTriangle(m, r.x, r.y, ErrorCode::InvalidRegion, what, hint);
     if (s == kNone || state[s] == kOutside) {
       Notice n{NoticeKind::RegionOutsideDomain, static_cast<std::int64_t>(k), -1, plc.regions[k].x, plc.regions[k].y, ""};
       n.message = what.text() + " is outside the domain; it has no effect";
       m.notices.push_back(std::move(n));
       continue;
     }
-    std::fill(reached.begin(), reached.end(), 0);
-    flood(t, s, reached, 1);
-    for (std::uint32_t u = 0; u < slots; ++u) {
-      if (!reached[u]) continue;
-      m.attribute[u] = r.attribute;
-      if (r.maxArea > 0) m.maxArea[u] = m.maxArea[u] > 0 ? std::min(m.maxArea[u], r.maxArea) : r.maxArea;
+    if (partOf[s] == kNone) {
+      flood(t, s, partOf, static_cast<std::uint32_t>(parts.size()));
+      parts.emplace_back();
     }
+    Part& part = parts[partOf[s]];
+    part.attribute = r.attribute;
+    if (r.maxArea > 0) part.maxArea = part.maxArea > 0 ? std::min(part.maxArea, r.maxArea) : r.maxArea;
+  }
+  for (std::uint32_t u = 0; u < slots; ++u) {
+    if (partOf[u] == kNone) continue;
+    const Part& part = parts[partOf[u]];
+    m.attribute[u] = part.attribute;
+    if (part.maxArea > 0) m.maxArea[u] = m.maxArea[u] > 0 ? std::min(m.maxArea[u], part.maxArea) : part.maxArea;
   }
 
   if (m.options->variant == Variant::BoundingBox) {

@@ -300,6 +300,44 @@ TEST_CASE("CDT flood-fills region attributes", "[cdt]") {
   }
 }
 
+// Every part between segments is flooded once and takes its seeds' values: the last seed's
+// attribute, the smallest area bound. A grid of 60 x 60 cells with a seed in each, and one cell
+// with three seeds, checks both (before, each seed cleared and rescanned every triangle: quadratic).
+TEST_CASE("CDT flood-fills thousands of regions, several seeds in one part", "[cdt]") {
+  const int n = 60;
+  Plc plc;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) plc.points.insert(plc.points.end(), {double(i), double(j)});
+  auto id = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i < n; ++i) plc.segments.insert(plc.segments.end(), {id(i, j), id(i + 1, j), id(j, i), id(j, i + 1)});
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) plc.regions.push_back({i + 0.5, j + 0.5, double(j * n + i), 0});
+  plc.regions.push_back({0.25, 0.75, -1.0, 0.3});  // cell (0, 0) again: its attribute becomes -1 ...
+  plc.regions.push_back({0.75, 0.25, -2.0, 0.2});  // ... then -2, with area bound min(0.3, 0.2)
+  plc.regions.push_back({0.6, 0.6, -2.0, 0.4});
+  ruppert::Options options;
+  options.minAngle = 0;
+  const Mesh mesh = ruppert::triangulate(plc, options);
+  ruppert_test::ValidateOptions v = against(plc, double(n) * n);
+  v.expectNoSteiner = false;  // the area bound in cell (0, 0) adds vertices there
+  REQUIRE_VALID(mesh, v);
+  double inCell0 = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size() / 3; ++t) {
+    double cx = 0, cy = 0;
+    for (int i = 0; i < 3; ++i) {
+      cx += mesh.points[2 * std::size_t(mesh.triangles[3 * t + i])] / 3;
+      cy += mesh.points[2 * std::size_t(mesh.triangles[3 * t + i]) + 1] / 3;
+    }
+    const int i = static_cast<int>(cx), j = static_cast<int>(cy);
+    const double expected = i == 0 && j == 0 ? -2.0 : double(j * n + i);
+    INFO("triangle " << t << " centroid (" << cx << ", " << cy << ")");
+    REQUIRE(mesh.triangleAttributes[t] == expected);
+    if (i == 0 && j == 0) inCell0 += 1;
+  }
+  CHECK(inCell0 >= 5);  // the area bound 0.2 split the unit cell: at least 5 triangles
+}
+
 TEST_CASE("CDT of random PLCs from the generators", "[cdt]") {
   for (std::uint64_t seed = 1; seed <= 8; ++seed) {
     INFO("seed " << seed);
