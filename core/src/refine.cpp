@@ -192,11 +192,13 @@ class Refiner {
       return;
     }
     // Generous for any reasonable input, yet small enough that a runaway at an unreachable angle
-    // stops within a second or so: ten thousand, plus 200 per input vertex (of the 61 shared PLCs,
-    // the complete meshes at 33 and 35 degrees use at most 40 Steiner vertices per input vertex once
-    // past the first ten thousand), plus eight per unit of area bound (area A with triangles of
-    // area a needs about A / (2 a) vertices).
-    double estimate = 1e4 + 200.0 * m_.inputCount;
+    // stops within seconds: ten thousand, plus 200 per input vertex (of the 61 shared PLCs, the
+    // complete meshes at 33 and 35 degrees use at most 40 Steiner vertices per input vertex once
+    // past the first ten thousand), plus 40 per crossing of two segments (300 random chords crossing
+    // 44,000 times: 1.0 M triangles at 20 degrees, 5.5 M at 33), plus eight per unit of area bound
+    // (area A with triangles of area a needs about A / (2 a) vertices).
+    const auto crossings = std::count(m_.kind.begin(), m_.kind.end(), VertexKind::Intersection);
+    double estimate = 1e4 + 200.0 * m_.inputCount + 40.0 * static_cast<double>(crossings);
     for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
       if (!t_.alive(s) || m_.maxArea[s] <= 0) continue;
       estimate += 8 * qualityAt(s).area / m_.maxArea[s];
@@ -346,7 +348,9 @@ class Refiner {
   }
 
   // Shortest edge u-w is seditious: u and w split two different segments that meet at a vertex z at
-  // less than kSeditiousAngle, at the same distance from z (the same concentric shell).
+  // less than kSeditiousAngle, at the same distance from z (the same concentric shell). z is an
+  // endpoint the segments share, or the point where they cross (an intersection vertex: shells are
+  // measured from it too).
   bool seditious(std::uint32_t s, const TriangleShape& sh) const {
     const std::uint32_t h = 3 * s + static_cast<std::uint32_t>(sh.shortestEdge);
     const std::uint32_t u = t_.origin(h), w = t_.dest(h);
@@ -357,18 +361,27 @@ class Refiner {
     const auto& rep = m_.input.representative;
     const std::uint32_t a0 = rep[plc.segments[2 * su]], a1 = rep[plc.segments[2 * su + 1]];
     const std::uint32_t b0 = rep[plc.segments[2 * sw]], b1 = rep[plc.segments[2 * sw + 1]];
-    std::uint32_t z = kNone, ea = kNone, eb = kNone;
-    if (a0 == b0) z = a0, ea = a1, eb = b1;
-    else if (a0 == b1) z = a0, ea = a1, eb = b0;
-    else if (a1 == b0) z = a1, ea = a0, eb = b1;
-    else if (a1 == b1) z = a1, ea = a0, eb = b0;
-    if (z == kNone) return false;
-    const double* pz = t_.pt(z);
-    const double ax = t_.xy[2 * ea] - pz[0], ay = t_.xy[2 * ea + 1] - pz[1];
-    const double bx = t_.xy[2 * eb] - pz[0], by = t_.xy[2 * eb + 1] - pz[1];
-    const double angle = std::atan2(std::fabs(ax * by - ay * bx), ax * bx + ay * by);
-    if (angle >= kSeditiousAngle) return false;
-    const double du = dist(pz, t_.pt(u)), dw = dist(pz, t_.pt(w));
+    double z[2];
+    if (a0 == b0 || a0 == b1) {
+      z[0] = t_.xy[2 * a0], z[1] = t_.xy[2 * a0 + 1];
+    } else if (a1 == b0 || a1 == b1) {
+      z[0] = t_.xy[2 * a1], z[1] = t_.xy[2 * a1 + 1];
+    } else {
+      const double* p = t_.pt(a0);
+      const double* q = t_.pt(b0);
+      const double ax = t_.xy[2 * a1] - p[0], ay = t_.xy[2 * a1 + 1] - p[1];
+      const double bx = t_.xy[2 * b1] - q[0], by = t_.xy[2 * b1 + 1] - q[1];
+      const double den = ax * by - ay * bx;
+      if (den == 0) return false;
+      const double ta = ((q[0] - p[0]) * by - (q[1] - p[1]) * bx) / den;
+      const double tb = ((q[0] - p[0]) * ay - (q[1] - p[1]) * ax) / den;
+      if (!(ta >= 0 && ta <= 1 && tb >= 0 && tb <= 1)) return false;  // the segments do not meet
+      z[0] = p[0] + ta * ax, z[1] = p[1] + ta * ay;
+    }
+    const double ux = t_.xy[2 * u] - z[0], uy = t_.xy[2 * u + 1] - z[1];
+    const double wx = t_.xy[2 * w] - z[0], wy = t_.xy[2 * w + 1] - z[1];
+    if (std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) >= kSeditiousAngle) return false;
+    const double du = length(ux, uy), dw = length(wx, wy);
     return std::fabs(du - dw) <= 1e-6 * std::max(du, dw);
   }
 
