@@ -28,11 +28,12 @@ Mesh refineChecked(const Plc& plc, const Options& o, const std::string& name) {
   if (mesh.complete) {
     v.minAngle = o.minAngle;
     v.angleTolDeg = 1e-6;
-    // Seditious triangles are exempt too; they are reported in reasons, and only those may remain.
-    std::uint64_t seditious = 0;
-    for (const auto& r : mesh.reasons)
-      if (r.kind == ruppert::ReasonKind::SeditiousEdge) seditious += r.count;
-    v.angleExempt = [seditious](const Mesh& m, std::uint32_t t) { return ruppert_test::nestledInInputAngle(m, t) || seditious > 0; };
+    // Triangles in small input angles and those whose shortest edge is seditious are exempt, each
+    // judged on its own from the mesh and the input.
+    const auto seditious = ruppert_test::seditiousTest(mesh, plc);
+    v.angleExempt = [seditious](const Mesh& m, std::uint32_t t) {
+      return ruppert_test::nestledInInputAngle(m, t) || seditious(m, t);
+    };
   }
   RUPPERT_REQUIRE_VALID_2(mesh, v);
   return mesh;

@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <unordered_map>
@@ -707,6 +709,56 @@ bool nestledInInputAngle(const Mesh& mesh, std::uint32_t t) {
   const std::uint32_t z = mesh.triangles[3 * std::size_t(t) + corner];
   return isSubsegment(z, mesh.triangles[3 * std::size_t(t) + (corner + 1) % 3]) &&
          isSubsegment(z, mesh.triangles[3 * std::size_t(t) + (corner + 2) % 3]);
+}
+
+std::function<bool(const Mesh&, std::uint32_t)> seditiousTest(const Mesh& mesh, const ruppert::Plc& input) {
+  // The input segment each inserted segment vertex lies on, from the subsegments around it.
+  auto segmentOf = std::make_shared<std::vector<std::int32_t>>(mesh.points.size() / 2, -1);
+  for (std::size_t k = 0; k < mesh.segmentIds.size(); ++k)
+    for (int e = 0; e < 2; ++e) {
+      const std::uint32_t v = mesh.segments[2 * k + e];
+      if (v < segmentOf->size() && mesh.vertexKinds[v] == std::uint8_t(ruppert::VertexKind::SegmentSplit))
+        (*segmentOf)[v] = mesh.segmentIds[k];
+    }
+  const ruppert::Plc* plc = &input;
+  return [segmentOf, plc](const Mesh& m, std::uint32_t t) {
+    const double* p[3];
+    std::uint32_t v[3];
+    for (int i = 0; i < 3; ++i) v[i] = m.triangles[3 * std::size_t(t) + i], p[i] = &m.points[2 * std::size_t(v[i])];
+    int shortest = 0;
+    double best = HUGE_VAL;
+    for (int i = 0; i < 3; ++i) {
+      const double* a = p[(i + 1) % 3];
+      const double* b = p[(i + 2) % 3];
+      const double l = std::hypot(a[0] - b[0], a[1] - b[1]);
+      if (l < best) best = l, shortest = i;
+    }
+    const std::uint32_t u = v[(shortest + 1) % 3], w = v[(shortest + 2) % 3];
+    const std::int32_t su = (*segmentOf)[u], sw = (*segmentOf)[w];
+    if (su < 0 || sw < 0 || su == sw) return false;
+    auto end = [plc](std::int32_t s, int e) { return &plc->points[2 * std::size_t(plc->segments[2 * std::size_t(s) + e])]; };
+    const double *a0 = end(su, 0), *a1 = end(su, 1), *b0 = end(sw, 0), *b1 = end(sw, 1);
+    auto same = [](const double* x, const double* y) { return x[0] == y[0] && x[1] == y[1]; };
+    double z[2];
+    if (same(a0, b0) || same(a0, b1)) {
+      z[0] = a0[0], z[1] = a0[1];
+    } else if (same(a1, b0) || same(a1, b1)) {
+      z[0] = a1[0], z[1] = a1[1];
+    } else {
+      const double ax = a1[0] - a0[0], ay = a1[1] - a0[1], bx = b1[0] - b0[0], by = b1[1] - b0[1];
+      const double den = ax * by - ay * bx;
+      if (den == 0) return false;
+      const double ta = ((b0[0] - a0[0]) * by - (b0[1] - a0[1]) * bx) / den;
+      const double tb = ((b0[0] - a0[0]) * ay - (b0[1] - a0[1]) * ax) / den;
+      if (!(ta >= 0 && ta <= 1 && tb >= 0 && tb <= 1)) return false;
+      z[0] = a0[0] + ta * ax, z[1] = a0[1] + ta * ay;
+    }
+    const double* pu = &m.points[2 * std::size_t(u)];
+    const double* pw = &m.points[2 * std::size_t(w)];
+    if (cornerAngle(z, pu, pw) >= 3.14159265358979323846 / 4) return false;
+    const double du = std::hypot(pu[0] - z[0], pu[1] - z[1]), dw = std::hypot(pw[0] - z[0], pw[1] - z[1]);
+    return std::fabs(du - dw) <= 1e-5 * std::max(du, dw);
+  };
 }
 
 std::string describeProblems(const std::vector<std::string>& problems, std::size_t max) {

@@ -62,6 +62,12 @@ double triangleMinAngleDeg(const ruppert::Mesh& mesh, std::uint32_t t);  // smal
 // §6.6, judged from the output alone: t's smallest angle sits between two subsegments meeting at
 // its vertex (an input angle or a crossing), so no Steiner point can improve it.
 bool nestledInInputAngle(const ruppert::Mesh& mesh, std::uint32_t t);
+// §6.6, judged from the output and the input: t's shortest edge joins vertices inserted on two
+// different input segments that meet (at a shared endpoint, or where they cross) at less than 45
+// degrees, at the same distance from where they meet (the same concentric shell). The returned test
+// is for `mesh` only (it indexes the mesh's vertices by input segment once).
+std::function<bool(const ruppert::Mesh&, std::uint32_t)> seditiousTest(const ruppert::Mesh& mesh,
+                                                                       const ruppert::Plc& input);
 std::string describeProblems(const std::vector<std::string>& problems, std::size_t max = 12);
 // True when every interior non-subsegment edge is strictly Delaunay (incircle < 0), i.e. the CDT of
 // this vertex set and these subsegments is unique. Metamorphic tests compare topology only then.
