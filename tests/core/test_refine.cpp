@@ -271,3 +271,21 @@ TEST_CASE("chords crossing at small angles refine to completion with a modest ve
     }
   }
 }
+
+// A fuzz_mesh finding: at 19 degrees a shell split landed 2.6e-8 from input point 12 and the
+// Bowyer-Watson cavity swallowed every triangle around that point, which then vanished. Every
+// budget from the failing insertion (the 92nd) on is checked, so the state right after it is too.
+TEST_CASE("an insertion a hair from a vertex keeps that vertex", "[refine]") {
+#ifdef RUPPERT_FIXTURES
+  const std::string path = std::string(RUPPERT_FIXTURES) + "/../hostile/shell-split-a-hair-from-a-vertex-dropped-it.poly";
+#else
+  const std::string path = "tests/hostile/shell-split-a-hair-from-a-vertex-dropped-it.poly";
+#endif
+  const Plc plc = ruppert::readFile(path);
+  for (std::uint64_t budget : {90u, 91u, 92u, 93u, 100u, 200u, 1000u, 5000u}) {
+    Options o;
+    o.minAngle = 19;
+    o.maxSteiner = budget;
+    refineChecked(plc, o, "budget " + std::to_string(budget));
+  }
+}
