@@ -90,12 +90,12 @@ inline std::vector<std::string> judgeMesh(const ruppert::Mesh& original, const r
   v.input = &plc;
   v.expectNoSteiner = isPlainCdt(plc, options);
   if (mesh.complete && o.minAngle > 0) {
-    bool seditious = false;
-    for (const ruppert::Reason& r : mesh.reasons) seditious = seditious || r.kind == ruppert::ReasonKind::SeditiousEdge;
+    // The chapter's exemptions, each judged per triangle from the mesh and the input.
+    const auto seditious = ruppert_test::seditiousTest(mesh, plc);
     v.minAngle = o.minAngle;
     v.angleTolDeg = 1e-6;
     v.angleExempt = [seditious](const ruppert::Mesh& m, std::uint32_t t) {
-      return seditious || ruppert_test::nestledInInputAngle(m, t);
+      return ruppert_test::nestledInInputAngle(m, t) || seditious(m, t);
     };
   }
   if (mesh.complete && o.maxArea > 0) v.maxArea = o.maxArea;
