@@ -473,7 +473,25 @@ class Refiner {
       const double d = std::exp2(std::floor(std::log2(2.0 * len / 3.0)));
       f = ca ? d / len : 1.0 - d / len;
     }
-    const double x = pa[0] + f * (pb[0] - pa[0]), y = pa[1] + f * (pb[1] - pa[1]);
+    double x = pa[0] + f * (pb[0] - pa[0]), y = pa[1] + f * (pb[1] - pa[1]);
+    // On a subsegment with no triangle beyond it, a split point rounded to the outside can land in
+    // another part of the domain across an exterior sliver thinner than the rounding (found by
+    // fuzzing: two segments 1e-7 rad apart bounding a hole). Move it an ulp at a time onto the
+    // domain's side, the left of a -> b.
+    if (t_.twin[h] == kNone) {
+      const double towardsX = pa[1] - pb[1], towardsY = pb[0] - pa[0];
+      for (int step = 0; step < 4; ++step) {
+        const double p[2] = {x, y};
+        if (orient2d(pa, pb, p) >= 0) break;
+        x = std::nextafter(x, towardsX > 0 ? HUGE_VAL : towardsX < 0 ? -HUGE_VAL : x);
+        y = std::nextafter(y, towardsY > 0 ? HUGE_VAL : towardsY < 0 ? -HUGE_VAL : y);
+      }
+      const double p[2] = {x, y};
+      if (orient2d(pa, pb, p) < 0) {
+        ++floorHits_;
+        return false;
+      }
+    }
     // The vertices facing the subsegment are the nearest candidates (an encroacher 1e-15 above the
     // midpoint, say): splitting next to one of them would make a needle, not a better mesh.
     for (std::uint32_t side : {h, t_.twin[h]}) {

@@ -275,17 +275,27 @@ TEST_CASE("chords crossing at small angles refine to completion with a modest ve
 // A fuzz_mesh finding: at 19 degrees a shell split landed 2.6e-8 from input point 12 and the
 // Bowyer-Watson cavity swallowed every triangle around that point, which then vanished. Every
 // budget from the failing insertion (the 92nd) on is checked, so the state right after it is too.
-TEST_CASE("an insertion a hair from a vertex keeps that vertex", "[refine]") {
+// Two fuzz_mesh findings at 19 degrees, each checked at every budget around the failing insertion
+// (so the state right after it too): a shell split landed 2.6e-8 from input point 12 and the
+// Bowyer-Watson cavity swallowed every triangle around that point, which vanished; and a boundary
+// subsegment's rounded midpoint fell across an exterior sliver 1e-7 rad wide into the triangles on
+// its far side, which the new triangles then overlapped.
+TEST_CASE("insertions a hair from a vertex or across a sliver keep the mesh valid", "[refine]") {
 #ifdef RUPPERT_FIXTURES
-  const std::string path = std::string(RUPPERT_FIXTURES) + "/../hostile/shell-split-a-hair-from-a-vertex-dropped-it.poly";
+  const std::string dir = std::string(RUPPERT_FIXTURES) + "/../hostile/";
 #else
-  const std::string path = "tests/hostile/shell-split-a-hair-from-a-vertex-dropped-it.poly";
+  const std::string dir = "tests/hostile/";
 #endif
-  const Plc plc = ruppert::readFile(path);
-  for (std::uint64_t budget : {90u, 91u, 92u, 93u, 100u, 200u, 1000u, 5000u}) {
-    Options o;
-    o.minAngle = 19;
-    o.maxSteiner = budget;
-    refineChecked(plc, o, "budget " + std::to_string(budget));
+  const std::pair<const char*, std::vector<std::uint64_t>> cases[] = {
+      {"shell-split-a-hair-from-a-vertex-dropped-it.poly", {90, 91, 92, 93, 100, 200, 1000, 5000}},
+      {"boundary-split-rounded-across-an-exterior-sliver.poly", {1866, 1867, 1868, 1869, 1885, 1886, 2500, 5000}}};
+  for (const auto& [file, budgets] : cases) {
+    const Plc plc = ruppert::readFile(dir + file);
+    for (std::uint64_t budget : budgets) {
+      Options o;
+      o.minAngle = 19;
+      o.maxSteiner = budget;
+      refineChecked(plc, o, std::string(file) + ", budget " + std::to_string(budget));
+    }
   }
 }
