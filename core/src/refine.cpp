@@ -68,6 +68,11 @@ double length(double x, double y) { return std::sqrt(x * x + y * y); }
 double dist(const double* p, const double* q) { return length(p[0] - q[0], p[1] - q[1]); }
 double sq(const double* p, const double* q) { return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]); }
 
+// Whether the exact predicates can take a new vertex at p. A coordinate can fall below their range
+// without any input doing so (found by fuzzing): splits of a hull edge from (0, 0) to (1.5, 3e-39)
+// have y coordinates under 2^-128. Such a vertex is refused like one under the length floor.
+bool representable(const double* p) { return isSafeCoordinate(p[0]) && isSafeCoordinate(p[1]); }
+
 // A cavity already computed by Triangulation::cavity, handed to the insertion so it is not searched
 // twice (both null: none).
 struct CavityRef {
@@ -480,36 +485,30 @@ class Refiner {
     // domain's side, the left of a -> b.
     if (t_.twin[h] == kNone) {
       const double towardsX = pa[1] - pb[1], towardsY = pb[0] - pa[0];
-      for (int step = 0; step < 4; ++step) {
+      for (int step = 0;; ++step) {
         const double p[2] = {x, y};
         if (orient2d(pa, pb, p) >= 0) break;
+        if (step == 4) {
+          ++floorHits_;
+          return false;
+        }
         x = std::nextafter(x, towardsX > 0 ? HUGE_VAL : towardsX < 0 ? -HUGE_VAL : x);
         y = std::nextafter(y, towardsY > 0 ? HUGE_VAL : towardsY < 0 ? -HUGE_VAL : y);
       }
-      const double p[2] = {x, y};
-      if (orient2d(pa, pb, p) < 0) {
-        ++floorHits_;
-        return false;
-      }
     }
-    // The vertices facing the subsegment are the nearest candidates (an encroacher 1e-15 above the
-    // midpoint, say): splitting next to one of them would make a needle, not a better mesh.
-    for (std::uint32_t side : {h, t_.twin[h]}) {
-      if (side == kNone) continue;
-      const double* q = t_.pt(t_.apex(side));
-      if (length(q[0] - x, q[1] - y) < kLengthFloor) {
-        ++floorHits_;
-        return false;
-      }
+    const double split[2] = {x, y};
+    if (!representable(split)) {
+      ++floorHits_;
+      return false;
     }
     Location loc;
     loc.kind = Location::OnEdge;
     loc.tri = h / 3;
     loc.edge = h;
-    // The new vertex's nearest neighbour is on its cavity's boundary. Two segments meeting at a tiny
-    // angle get shell splits at the same distance from their common vertex, closer to each other
-    // than doubles can keep apart (found by fuzzing): refuse those, as the length floor does.
-    const double split[2] = {x, y};
+    // The new vertex's nearest neighbour is on its cavity's boundary: the vertices facing the
+    // subsegment (an encroacher 1e-15 above the midpoint, say), or, when two segments meet at a tiny
+    // angle, a shell split at the same distance from their common vertex on the other segment, closer
+    // than doubles can keep apart (found by fuzzing). Refuse those, as the length floor does.
     t_.cavity(split, loc, splitTris_, splitBoundary_);
     if (tooCloseToCavity(split, splitBoundary_)) {
       ++floorHits_;
@@ -608,6 +607,10 @@ class Refiner {
         target[1] = my + (cc[1] - my) * (hOff / toC);
         kind = VertexKind::OffCenter;
       }
+    }
+    if (!representable(target)) {
+      ++floorHits_;
+      return;
     }
     std::uint32_t blocked;
     Location loc = walk(s, target, blocked);
@@ -753,6 +756,7 @@ class Refiner {
     for (const PetalPoint& c : petal_) {
       if (c.bound * len <= bestRadius) break;
       const double x[2] = {mx + len * (c.along * dx + c.across * nx), my + len * (c.along * dy + c.across * ny)};
+      if (!representable(x)) continue;
       std::uint32_t blocked;
       const Location l = walk(s, x, blocked);
       if (blocked != kNone || l.kind != Location::InTriangle) continue;
@@ -821,7 +825,8 @@ class Refiner {
       add(ReasonKind::PrecisionFloor, unmet,
           std::to_string(unmet) + " triangle(s) could not be improved: " + std::to_string(floorHits_) +
               " insertion(s) were refused because the new vertex would be closer than double precision can "
-              "resolve, or its cavity would wrap around a vertex where the domain touches itself");
+              "resolve, or its coordinates would leave the exact predicates' range, or its cavity would wrap "
+              "around a vertex where the domain touches itself");
     if (nestled)
       add(ReasonKind::SmallInputAngle, nestled, std::to_string(nestled) +
           " triangle(s) sit in input angles smaller than the bound; no vertex can fix them (section 6.6)");

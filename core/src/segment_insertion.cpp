@@ -156,6 +156,10 @@ class SegmentInserter {
     const std::int32_t other = t_.con[h];
     double q[2];
     crossingPoint(a, b, id, l, r, other, q);
+    // Segments crossing a hair from an axis can round the crossing to a coordinate below the exact
+    // predicates' range (y = 5e-40 with the extent 1.5). The point is rounded anyway, so 0 serves.
+    for (double& c : q)
+      if (std::fabs(c) < kSafeMinMagnitude) c = 0;
     // A crossing within rounding distance of an existing vertex (typically the crossing of a third
     // segment through the same point) is that vertex: a second vertex 1e-16 away would only leave
     // needle triangles behind.

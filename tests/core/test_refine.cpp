@@ -272,9 +272,6 @@ TEST_CASE("chords crossing at small angles refine to completion with a modest ve
   }
 }
 
-// A fuzz_mesh finding: at 19 degrees a shell split landed 2.6e-8 from input point 12 and the
-// Bowyer-Watson cavity swallowed every triangle around that point, which then vanished. Every
-// budget from the failing insertion (the 92nd) on is checked, so the state right after it is too.
 // Two fuzz_mesh findings at 19 degrees, each checked at every budget around the failing insertion
 // (so the state right after it too): a shell split landed 2.6e-8 from input point 12 and the
 // Bowyer-Watson cavity swallowed every triangle around that point, which vanished; and a boundary
@@ -297,5 +294,35 @@ TEST_CASE("insertions a hair from a vertex or across a sliver keep the mesh vali
       o.maxSteiner = budget;
       refineChecked(plc, o, std::string(file) + ", budget " + std::to_string(budget));
     }
+  }
+}
+
+// A fuzz_mesh finding (at 30 degrees, petal placement, max area 1.1e-229): every input coordinate is
+// within the exact predicates' range relative to the extent, but splits of a nearly horizontal hull
+// edge from (0, 0) were not; the validator's coordinate check caught them. The crossing fixture does
+// the same with an intersection 5e-40 from the x axis. Every placement is checked, with and without
+// the finding's area bound.
+TEST_CASE("new vertices stay within the exact predicates' range", "[refine]") {
+#ifdef RUPPERT_FIXTURES
+  const std::string dir = std::string(RUPPERT_FIXTURES) + "/../hostile/";
+#else
+  const std::string dir = "tests/hostile/";
+#endif
+  const std::pair<const char*, double> cases[] = {{"hull-splits-below-the-predicates-range.poly", 1.0952875075000295e-229},
+                                                  {"crossing-rounded-below-the-predicates-range.poly", 0.01}};
+  using ruppert::Placement;
+  for (const auto& [file, area] : cases) {
+    const Plc plc = ruppert::readFile(dir + file);
+    for (Placement placement : {Placement::OffCenter, Placement::Petal, Placement::Circumcenter})
+      for (double angle : {0.0, 20.0, 30.0, 33.0})
+        for (double maxArea : {0.0, area}) {
+          Options o;
+          o.minAngle = angle;
+          o.placement = placement;
+          o.maxArea = maxArea;
+          o.maxSteiner = 5000;
+          refineChecked(plc, o, std::string(file) + ", placement " + std::to_string(int(placement)) + ", max area " +
+                                    std::to_string(maxArea));
+        }
   }
 }
