@@ -50,7 +50,11 @@ must(run(process.execPath, [join(root, 'node_modules/typescript/bin/tsc'), '-p',
 const tests = readdirSync(app).filter((f) => f.endsWith('.test.mjs')).sort().map((f) => join(app, f));
 const status = run(process.execPath, ['--test', '--test-concurrency=1', ...tests], {
   cwd: app,
-  env: { ...process.env, RUPPERT_SHARED_DATA: process.env.RUPPERT_SHARED_DATA ?? resolve(root, '../shared/data') },
+  env: {
+    ...process.env,
+    RUPPERT_SHARED_DATA: process.env.RUPPERT_SHARED_DATA ?? resolve(root, '../shared/data'),
+    RUPPERT_HOSTILE: resolve(root, 'tests/hostile'),
+  },
 });
 if (process.env.RUPPERT_KEEP_TMP) console.log(`kept ${work}`);
 else rmSync(work, { recursive: true, force: true });
