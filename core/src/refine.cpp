@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <string>
 
 #include "predicates.h"
@@ -114,9 +115,7 @@ class Refiner {
       if (stop) break;
       BadTriangle bt;
       if (!popNext(bt)) break;
-      if (!t_.alive(bt.slot) || t_.tv[3 * bt.slot] != bt.a || t_.tv[3 * bt.slot + 1] != bt.b ||
-          t_.tv[3 * bt.slot + 2] != bt.c)
-        continue;  // stale entry: the triangle is gone
+      if (!current(bt)) continue;  // stale entry: the triangle is gone
       splitTriangle(bt);
       stop = outOfBudget();
     }
@@ -142,6 +141,7 @@ class Refiner {
   std::vector<std::vector<BadTriangle>> buckets_;
   int lowestBucket_ = kBuckets;
   std::uint64_t queuedByAngle_[kAngleClasses] = {};
+  std::uint64_t queued_ = 0, compactAt_ = 1u << 20;  // entries in buckets_; when to drop stale ones
   std::vector<std::uint8_t> corner_;  // per vertex: acute input corner (concentric shells apply)
   std::vector<std::uint32_t> newTris_, parents_, flipped_, mendStack_;
   struct Inherited {
@@ -199,11 +199,12 @@ class Refiner {
     // Generous for any reasonable input, yet small enough that a runaway at an unreachable angle
     // stops within seconds: ten thousand, plus 200 per input vertex (of the 61 shared PLCs, the
     // complete meshes at 33 and 35 degrees use at most 40 Steiner vertices per input vertex once
-    // past the first ten thousand), plus 40 per crossing of two segments (300 random chords crossing
-    // 44,000 times: 1.0 M triangles at 20 degrees, 5.5 M at 33), plus eight per unit of area bound
-    // (area A with triangles of area a needs about A / (2 a) vertices).
+    // past the first ten thousand), plus 100 per crossing of two segments (stars of 80 to 300 chords
+    // through a disk's centre, 3,160 to 44,850 crossings at small angles, use 30-63 Steiner vertices
+    // per crossing at 30 and 33 degrees; 40 per crossing stopped several of them incomplete), plus eight per unit of area bound (area A with triangles of area a needs about
+    // A / (2 a) vertices).
     const auto crossings = std::count(m_.kind.begin(), m_.kind.end(), VertexKind::Intersection);
-    double estimate = 1e4 + 200.0 * m_.inputCount + 40.0 * static_cast<double>(crossings);
+    double estimate = 1e4 + 200.0 * m_.inputCount + 100.0 * static_cast<double>(crossings);
     for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
       if (!t_.alive(s) || m_.maxArea[s] <= 0) continue;
       estimate += 8 * qualityAt(s).area / m_.maxArea[s];
@@ -303,6 +304,31 @@ class Refiner {
     buckets_[k].push_back({s, t_.tv[3 * s], t_.tv[3 * s + 1], t_.tv[3 * s + 2], angleClass});
     ++queuedByAngle_[angleClass];
     lowestBucket_ = std::min(lowestBucket_, k);
+    if (++queued_ > compactAt_) dropStaleEntries();
+  }
+
+  // Whether a queued entry still describes the triangle in its slot.
+  bool current(const BadTriangle& e) const {
+    return t_.alive(e.slot) && t_.tv[3 * e.slot] == e.a && t_.tv[3 * e.slot + 1] == e.b && t_.tv[3 * e.slot + 2] == e.c;
+  }
+
+  // Where refinement runs away, each step can rebuild a fan of thousands of needles, and the entries
+  // of the ones it replaced stay queued: 70 million entries for 4 million triangles (300 chords
+  // crossing in a star at 30 degrees, before off-centers aimed past the bound). Dropping the stale ones (popNext would skip them anyway; the
+  // order of the rest is kept, so meshes do not change) keeps memory proportional to the mesh.
+  void dropStaleEntries() {
+    queued_ = 0;
+    for (auto& b : buckets_) {
+      b.erase(std::remove_if(b.begin(), b.end(),
+                             [&](const BadTriangle& e) {
+                               if (current(e)) return false;
+                               --queuedByAngle_[e.angleClass];
+                               return true;
+                             }),
+              b.end());
+      queued_ += b.size();
+    }
+    compactAt_ = 2 * std::max<std::uint64_t>(queued_, t_.slotCount()) + (1u << 16);
   }
 
   bool popNext(BadTriangle& out) {
@@ -311,6 +337,7 @@ class Refiner {
       if (!b.empty()) {
         out = b.back();
         b.pop_back();
+        --queued_;
         --queuedByAngle_[out.angleClass];
         return true;
       }
@@ -601,7 +628,15 @@ class Refiner {
       const double* w = p[(e + 2) % 3];
       const double mx = (u[0] + w[0]) / 2, my = (u[1] + w[1]) / 2;
       const double toC = length(cc[0] - mx, cc[1] - my);
-      const double hOff = (sh.shortest / 2) / std::tan(theta_ / 2);
+      // The new vertex is rounded to doubles, up to an ulp of its coordinates from where it is aimed;
+      // seen from an edge of length l that turns the apex angle by up to ulp / l radians, so a
+      // triangle built to meet the bound exactly can miss it, and its circumcenter then adds a vertex
+      // no farther away than l: no gain in size, and at small scales a runaway (300 chords crossing at
+      // 30 degrees: half of one's insertions split triangles 1e-9 to 1e-6 degrees short of 30). Aim
+      // past the bound by several times that turn: 4e-12 rad for l = 1e-3, 1e-3 rad at the length floor.
+      const double reach = std::max({std::fabs(u[0]), std::fabs(u[1]), std::fabs(w[0]), std::fabs(w[1])});
+      const double margin = 16 * std::numeric_limits<double>::epsilon() * reach / sh.shortest;
+      const double hOff = (sh.shortest / 2) / std::tan((theta_ + margin) / 2);
       if (hOff < toC && toC > 0) {
         target[0] = mx + (cc[0] - mx) * (hOff / toC);
         target[1] = my + (cc[1] - my) * (hOff / toC);

@@ -19,7 +19,12 @@ namespace {
 
 Mesh refineChecked(const Plc& plc, const Options& o, const std::string& name) {
   INFO(name << " at " << o.minAngle << " degrees");
-  const Mesh base = ruppert::triangulate(plc, [] { Options c; c.minAngle = 0; return c; }());
+  // The same domain (hull, holes, variant) without refinement: its area is what the mesh must cover.
+  const Mesh base = ruppert::triangulate(plc, [&o] {
+    Options c = o;
+    c.minAngle = 0, c.maxArea = 0, c.sizeFunction = nullptr, c.onProgress = nullptr;
+    return c;
+  }());
   const Mesh mesh = ruppert::triangulate(plc, o);
   ruppert_test::ValidateOptions v;
   v.input = &plc;
@@ -295,6 +300,49 @@ TEST_CASE("insertions a hair from a vertex or across a sliver keep the mesh vali
       refineChecked(plc, o, std::string(file) + ", budget " + std::to_string(budget));
     }
   }
+}
+
+// Three chords from a star of 300: two cross at 2.66 degrees and the third crosses both within 1e-8
+// of that crossing. At that scale an off-center built to meet 30 degrees exactly came out 1e-9 to
+// 1e-6 degrees short once rounded, and the circumcenter that then split it added a vertex no farther
+// away than its shortest edge: a runaway that ended at the Steiner budget (11,329 vertices,
+// incomplete). Off-centers now aim past the bound by the rounding's reach.
+TEST_CASE("off-centers rounded a hair short of the bound do not run away at small scales", "[refine]") {
+  Plc plc;
+  plc.points = {-0.90493251120861196, 0.42555510825000731, 0.90133200544353698, -0.42555510825000731,
+                -0.92377961022277288, 0.3829245770862218,  0.91892696744414493, -0.3829245770862218,
+                0.48516361320081958,  0.8744233919709179,  -0.4769754622574936, -0.8744233919709179};
+  plc.segments = {0, 1, 2, 3, 4, 5};
+  for (double angle : {30.0, 33.0}) {
+    Options o;
+    o.minAngle = angle;
+    o.convexHull = true;
+    const Mesh mesh = refineChecked(plc, o, "three chords crossing within 1e-8");
+    INFO(angle << " degrees: " << mesh.stats.vertices << " vertices");
+    CHECK(mesh.complete);
+    CHECK(mesh.stats.vertices < 5000);
+  }
+}
+
+// A star of 80 chords through a disk's centre crosses about 3,000 times at small angles; at 33
+// degrees it needs about 177,000 vertices, more than the automatic budget allowed when it counted 40
+// per crossing, so it stopped incomplete. The budget now counts 100 per crossing.
+TEST_CASE("the automatic Steiner budget lets a star of 80 crossing chords complete at 33 degrees", "[refine]") {
+  std::mt19937_64 rng(2);
+  std::uniform_real_distribution<double> angle(0, 3.14159265358979323846), jitter(-0.01, 0.01);
+  Plc plc;
+  for (std::uint32_t k = 0; k < 80; ++k) {
+    const double a = angle(rng);
+    plc.points.insert(plc.points.end(), {std::cos(a), std::sin(a), -std::cos(a) + jitter(rng), -std::sin(a)});
+    plc.segments.insert(plc.segments.end(), {2 * k, 2 * k + 1});
+  }
+  Options o;
+  o.minAngle = 33;
+  const Mesh mesh = ruppert::triangulate(plc, o);
+  INFO(mesh.stats.vertices << " vertices");
+  for (const auto& r : mesh.reasons) INFO(r.message);
+  CHECK(mesh.complete);
+  CHECK(mesh.stats.intersectionVertices > 2500);
 }
 
 // A fuzz_mesh finding (at 30 degrees, petal placement, max area 1.1e-229): every input coordinate is
