@@ -123,12 +123,16 @@ class TriangleIndex {
       }
       for (std::size_t i = n.first; i < n.first + n.count; ++i) {
         const std::uint32_t t = order_[i];
+        const Box& tb = boxes_[t];  // the leaf's box is loose: most of its triangles are ruled out here
+        if (!(q[0] >= tb.lo[0] && q[0] <= tb.hi[0] && q[1] >= tb.lo[1] && q[1] <= tb.hi[1])) continue;
         const double* a = s_.p(s_.v(t, 0));
         const double* b = s_.p(s_.v(t, 1));
         const double* c = s_.p(s_.v(t, 2));
-        const double o1 = orient2d(a, b, q), o2 = orient2d(b, c, q), o3 = orient2d(c, a, q);
-        const bool inside = strict ? (o1 > 0 && o2 > 0 && o3 > 0) : (o1 >= 0 && o2 >= 0 && o3 >= 0);
-        if (inside) result.push_back(t);
+        // One side at a time: most candidates fail the first, and on flat triangles each test may
+        // need exact arithmetic.
+        auto outside = [strict](double o) { return strict ? !(o > 0) : o < 0; };
+        if (outside(orient2d(a, b, q)) || outside(orient2d(b, c, q)) || outside(orient2d(c, a, q))) continue;
+        result.push_back(t);
       }
     }
     return result;

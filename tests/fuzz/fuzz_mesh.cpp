@@ -28,9 +28,11 @@
 
 namespace {
 
-// 5000, not more: a valid 20000-vertex mesh takes over 10 s to make and validate under ASan and
-// coverage, which libFuzzer would report as a hang (-timeout=10).
-constexpr std::uint64_t kMaxSteiner = 5000;
+// 3000, not more: the judge's overlap check slows down on meshes full of flat needles (a refinement
+// stopped at its budget in fans around collinear vertices). At 5000 one such mesh took 3.3 s to make
+// and validate under ASan and coverage, and over 10 s on a loaded machine, which libFuzzer reports as
+// a hang (-timeout=10) though meshing it took 4 ms natively.
+constexpr std::uint64_t kMaxSteiner = 3000;
 // Text-mode inputs bigger than this are skipped: fuzzing wants many small runs.
 constexpr std::size_t kMaxTextPoints = 400;
 
