@@ -7,7 +7,11 @@
 // Each input is meshed once to warm up (page faults, allocator, caches), then three times (once for
 // 10^7); the best is reported, since noise on a shared machine only ever adds time.
 //
-// Usage: ruppert_bench [--max-points N] [--big]   (N default 1000000; --big adds the 10^7 case)
+//   --chords: stars of 300 chords crossing near a disk's centre (44,850 crossings at small angles,
+//   plc_generators.h's chordStar, seeds 2-5) at 30 and 33 degrees, one run each: vertices, whether
+//   refinement completed under the automatic Steiner budget, and time.
+//
+// Usage: ruppert_bench [--max-points N] [--big] [--chords]   (N default 1000000; --big adds 10^7)
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +22,8 @@
 #include <vector>
 
 #include <ruppert/ruppert.h>
+
+#include "plc_generators.h"
 
 namespace {
 
@@ -60,20 +66,44 @@ Row measure(const std::string& name, const ruppert::Plc& plc, const ruppert::Opt
   return row;
 }
 
+// The chord stars: one run each (seconds apiece), printed as a table.
+void chordStars() {
+  std::printf("\nStars of 300 chords (chordStar, default options), one run each\n");
+  std::printf("| seed | angle | crossings | vertices | complete | ms |\n|---|---|---|---|---|---|\n");
+  for (std::uint64_t seed : {2u, 3u, 4u, 5u})
+    for (double angle : {30.0, 33.0}) {
+      ruppert::Options o;
+      o.minAngle = angle;
+      const auto start = std::chrono::steady_clock::now();
+      const ruppert::Mesh mesh = ruppert::triangulate(ruppert_test::chordStar(seed, 300).plc, o);
+      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      std::printf("| %llu | %.0f | %llu | %llu | %s | %.0f |\n", static_cast<unsigned long long>(seed), angle,
+                  static_cast<unsigned long long>(mesh.stats.intersectionVertices),
+                  static_cast<unsigned long long>(mesh.stats.vertices), mesh.complete ? "yes" : "no", ms);
+      std::fflush(stdout);
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::size_t maxPoints = 1000000;
-  bool big = false;
+  bool big = false, chords = false;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--max-points") && i + 1 < argc) {
       maxPoints = std::strtoull(argv[++i], nullptr, 10);
     } else if (!std::strcmp(argv[i], "--big")) {
       big = true;
+    } else if (!std::strcmp(argv[i], "--chords")) {
+      chords = true;
     } else {
-      std::fprintf(stderr, "usage: %s [--max-points N] [--big]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--max-points N] [--big] [--chords]\n", argv[0]);
       return 2;
     }
+  }
+  if (chords) {
+    chordStars();
+    return 0;
   }
 
   ruppert::Options cdtOptions;

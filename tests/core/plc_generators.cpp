@@ -186,6 +186,17 @@ GeneratedPlc randomCrossingSegments(std::uint64_t seed, std::size_t n) {
   return g;
 }
 
+GeneratedPlc chordStar(std::uint64_t seed, std::size_t n) {
+  Draw draw(seed);
+  GeneratedPlc g;
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const double a = draw.unit() * 3.14159265358979323846, jitter = (draw.unit() - 0.5) * 0.02;
+    g.plc.points.insert(g.plc.points.end(), {std::cos(a), std::sin(a), -std::cos(a) + jitter, -std::sin(a)});
+    g.plc.segments.insert(g.plc.segments.end(), {2 * k, 2 * k + 1});
+  }
+  return g;
+}
+
 GeneratedPlc randomGridSegments(std::uint64_t seed, std::size_t n, std::uint32_t size) {
   Draw draw(seed);
   GeneratedPlc g;

@@ -47,6 +47,11 @@ GeneratedPlc randomCrossingSegments(std::uint64_t seed, std::size_t n);
 // other segments' interiors, and crossings exactly at grid points or between them.
 GeneratedPlc randomGridSegments(std::uint64_t seed, std::size_t n, std::uint32_t g);
 
+// n chords of the unit disk through (nearly) its centre: from angle a in [0, pi) to the antipode,
+// its x moved by up to 0.01. They cross about n^2 / 2 times, at small angles and in tight clusters,
+// and enclose the domain themselves (area = 0, not computed).
+GeneratedPlc chordStar(std::uint64_t seed, std::size_t n);
+
 // An nx-by-ny grid of points spaced `step` apart with the grid's boundary as segments between
 // neighbouring boundary points (so every boundary side is a chain of collinear points), plus, when
 // `crossLines` is set, the middle row and column as chains of segments. Every unit cell's corners are

@@ -257,14 +257,7 @@ TEST_CASE("the size measure of section 6.5 is computed on request and grows as f
 // degrees and still ended incomplete.)
 TEST_CASE("chords crossing at small angles refine to completion with a modest vertex count", "[refine]") {
   for (std::uint64_t seed : {2u, 3u, 4u}) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> angle(0, 3.14159265358979323846), jitter(-0.01, 0.01);
-    Plc plc;
-    for (std::uint32_t k = 0; k < 20; ++k) {
-      const double a = angle(rng);
-      plc.points.insert(plc.points.end(), {std::cos(a), std::sin(a), -std::cos(a) + jitter(rng), -std::sin(a)});
-      plc.segments.insert(plc.segments.end(), {2 * k, 2 * k + 1});
-    }
+    const Plc plc = ruppert_test::chordStar(seed, 20).plc;
     for (double minAngle : {20.0, 30.0, 33.0}) {
       Options o;
       o.minAngle = minAngle;
@@ -328,14 +321,7 @@ TEST_CASE("off-centers rounded a hair short of the bound do not run away at smal
 // degrees it needs about 177,000 vertices, more than the automatic budget allowed when it counted 40
 // per crossing, so it stopped incomplete. The budget now counts 100 per crossing.
 TEST_CASE("the automatic Steiner budget lets a star of 80 crossing chords complete at 33 degrees", "[refine]") {
-  std::mt19937_64 rng(2);
-  std::uniform_real_distribution<double> angle(0, 3.14159265358979323846), jitter(-0.01, 0.01);
-  Plc plc;
-  for (std::uint32_t k = 0; k < 80; ++k) {
-    const double a = angle(rng);
-    plc.points.insert(plc.points.end(), {std::cos(a), std::sin(a), -std::cos(a) + jitter(rng), -std::sin(a)});
-    plc.segments.insert(plc.segments.end(), {2 * k, 2 * k + 1});
-  }
+  const Plc plc = ruppert_test::chordStar(2, 80).plc;
   Options o;
   o.minAngle = 33;
   const Mesh mesh = ruppert::triangulate(plc, o);
