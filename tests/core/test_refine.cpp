@@ -44,6 +44,15 @@ Mesh refineChecked(const Plc& plc, const Options& o, const std::string& name) {
   return mesh;
 }
 
+// tests/hostile/, where the fuzz findings' fixtures are.
+std::string hostileDir() {
+#ifdef RUPPERT_FIXTURES
+  return std::string(RUPPERT_FIXTURES) + "/../hostile/";
+#else
+  return "tests/hostile/";
+#endif
+}
+
 }  // namespace
 
 TEST_CASE("refinement of every shared PLC at 20, 30 and 33 degrees is valid and complete", "[refine]") {
@@ -276,11 +285,7 @@ TEST_CASE("chords crossing at small angles refine to completion with a modest ve
 // subsegment's rounded midpoint fell across an exterior sliver 1e-7 rad wide into the triangles on
 // its far side, which the new triangles then overlapped.
 TEST_CASE("insertions a hair from a vertex or across a sliver keep the mesh valid", "[refine]") {
-#ifdef RUPPERT_FIXTURES
-  const std::string dir = std::string(RUPPERT_FIXTURES) + "/../hostile/";
-#else
-  const std::string dir = "tests/hostile/";
-#endif
+  const std::string dir = hostileDir();
   const std::pair<const char*, std::vector<std::uint64_t>> cases[] = {
       {"shell-split-a-hair-from-a-vertex-dropped-it.poly", {90, 91, 92, 93, 100, 200, 1000, 5000}},
       {"boundary-split-rounded-across-an-exterior-sliver.poly", {1866, 1867, 1868, 1869, 1885, 1886, 2500, 5000}}};
@@ -337,11 +342,7 @@ TEST_CASE("the automatic Steiner budget lets a star of 80 crossing chords comple
 // the same with an intersection 5e-40 from the x axis. Every placement is checked, with and without
 // the finding's area bound.
 TEST_CASE("new vertices stay within the exact predicates' range", "[refine]") {
-#ifdef RUPPERT_FIXTURES
-  const std::string dir = std::string(RUPPERT_FIXTURES) + "/../hostile/";
-#else
-  const std::string dir = "tests/hostile/";
-#endif
+  const std::string dir = hostileDir();
   const std::pair<const char*, double> cases[] = {{"hull-splits-below-the-predicates-range.poly", 1.0952875075000295e-229},
                                                   {"crossing-rounded-below-the-predicates-range.poly", 0.01}};
   using ruppert::Placement;
