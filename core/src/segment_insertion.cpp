@@ -97,8 +97,8 @@ class SegmentInserter {
       const std::uint32_t i = t_.tv[3 * tri] == a ? 0 : t_.tv[3 * tri + 1] == a ? 1 : 2;
       const std::uint32_t v1 = t_.tv[3 * tri + (i + 1) % 3], v2 = t_.tv[3 * tri + (i + 2) % 3];
       const double o1 = orient2d(pa, pb, t_.pt(v1)), o2 = orient2d(pa, pb, t_.pt(v2));
-      if (o1 == 0 && aheadOf(a, b, v1)) return splitAt(a, b, v1, id);
-      if (o2 == 0 && aheadOf(a, b, v2)) return splitAt(a, b, v2, id);
+      if ((o1 == 0 || onInputSegment(v1, id)) && aheadOf(a, b, v1) && before(a, b, v1)) return splitAt(a, b, v1, id);
+      if ((o2 == 0 || onInputSegment(v2, id)) && aheadOf(a, b, v2) && before(a, b, v2)) return splitAt(a, b, v2, id);
       if (o1 < 0 && o2 > 0) {
         cross = 3 * tri + i;
         break;
@@ -118,7 +118,7 @@ class SegmentInserter {
       const std::uint32_t w = t_.apex(g);
       if (w == b) break;
       const double o = orient2d(pa, pb, t_.pt(w));
-      if (o == 0) return splitAt(a, b, w, id);
+      if (o == 0 || onInputSegment(w, id)) return splitAt(a, b, w, id);
       cross = o > 0 ? next3(g) : prev3(g);
     }
     flipAway(a, b, crossed);
@@ -132,6 +132,26 @@ class SegmentInserter {
       if (e != kNone) legalizeFrom_.push_back(e);
     }
     t_.legalize(legalizeFrom_);
+  }
+
+  // True if v lies exactly on input segment `id` (not a hull edge). A piece of the segment that
+  // starts at a rounded crossing is a hair off the segment's line, so a vertex exactly on the segment
+  // can lie a hair off the piece; it must still split it (found by fuzzing: a subsegment skipped an
+  // input vertex in the middle of its segment, and a later split left that stretch uncovered).
+  bool onInputSegment(std::uint32_t v, std::int32_t id) const {
+    if (id < 0) return false;
+    const Plc& plc = *m_.plc;
+    const auto& rep = m_.input.representative;
+    return orient2d(t_.pt(rep[plc.segments[2 * id]]), t_.pt(rep[plc.segments[2 * id + 1]]), t_.pt(v)) == 0;
+  }
+
+  // True if v is nearer to a than b is, along a -> b.
+  bool before(std::uint32_t a, std::uint32_t b, std::uint32_t v) const {
+    const double* pa = t_.pt(a);
+    const double* pb = t_.pt(b);
+    const double* pv = t_.pt(v);
+    const double dx = pb[0] - pa[0], dy = pb[1] - pa[1];
+    return (pv[0] - pa[0]) * dx + (pv[1] - pa[1]) * dy < dx * dx + dy * dy;
   }
 
   // True if v lies on the ray from a through b, beyond a.

@@ -336,6 +336,23 @@ TEST_CASE("the automatic Steiner budget lets a star of 80 crossing chords comple
   CHECK(mesh.stats.intersectionVertices > 2500);
 }
 
+// A fuzz_mesh finding at 30 degrees (circumcenters, convex hull, automatic holes): a piece of a
+// segment starting at a rounded crossing was recovered as one edge passing a hair beside an input
+// point that lies exactly on the segment; the 675th insertion split that edge and left the stretch
+// from the point uncovered. Every budget around it is checked.
+TEST_CASE("a segment's pieces pass through every input point on the segment", "[refine]") {
+  const Plc plc = ruppert::readFile(hostileDir() + "subsegment-skipped-a-vertex-on-its-segment.poly");
+  for (std::uint64_t budget : {0, 1, 100, 674, 675, 676, 700, 3000}) {
+    Options o;
+    o.minAngle = 30;
+    o.placement = ruppert::Placement::Circumcenter;
+    o.convexHull = true;
+    o.autoHoles = true;
+    o.maxSteiner = budget;
+    refineChecked(plc, o, "budget " + std::to_string(budget));
+  }
+}
+
 // A fuzz_mesh finding (at 30 degrees, petal placement, max area 1.1e-229): every input coordinate is
 // within the exact predicates' range relative to the extent, but splits of a nearly horizontal hull
 // edge from (0, 0) were not; the validator's coordinate check caught them. The crossing fixture does
