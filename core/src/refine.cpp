@@ -21,6 +21,7 @@
 #include "refine.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -69,10 +70,6 @@ double length(double x, double y) { return std::sqrt(x * x + y * y); }
 double dist(const double* p, const double* q) { return length(p[0] - q[0], p[1] - q[1]); }
 double sq(const double* p, const double* q) { return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]); }
 
-// Whether the exact predicates can take a new vertex at p. A coordinate can fall below their range
-// without any input doing so (found by fuzzing): splits of a hull edge from (0, 0) to (1.5, 3e-39)
-// have y coordinates under 2^-128. Such a vertex is refused like one under the length floor.
-bool representable(const double* p) { return isSafeCoordinate(p[0]) && isSafeCoordinate(p[1]); }
 
 // A cavity already computed by Triangulation::cavity, handed to the insertion so it is not searched
 // twice (both null: none).
@@ -830,6 +827,18 @@ class Refiner {
   std::vector<std::uint32_t> cavityTris_, cavityBoundary_, candidateTris_, candidateBoundary_, splitTris_,
       splitBoundary_;
   std::vector<EdgeRef> rejectPairs_;
+
+  // Whether a new vertex at p can be kept exactly. A coordinate can fall below the exact predicates'
+  // range without any input doing so (found by fuzzing): splits of a hull edge from (0, 0) to
+  // (1.5, 3e-39) have y coordinates under 2^-128. And on inputs near the subnormal range, the output's
+  // user units cannot hold a new vertex's coordinates (fuzzing again: with coordinates near 1e-312 the
+  // mesh returned had clockwise triangles though the internal one was valid). Such a vertex is
+  // refused like one under the length floor.
+  bool representable(const double* p) const {
+    for (int k = 0; k < 2; ++k)
+      if (!isSafeCoordinate(p[k]) || (p[k] != 0 && !(std::fabs(m_.input.toUser(p[k])) >= DBL_MIN))) return false;
+    return true;
+  }
 
   // ---- result ------------------------------------------------------------------------------------
   void finish() {

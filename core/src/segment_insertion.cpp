@@ -177,9 +177,12 @@ class SegmentInserter {
     double q[2];
     crossingPoint(a, b, id, l, r, other, q);
     // Segments crossing a hair from an axis can round the crossing to a coordinate below the exact
-    // predicates' range (y = 5e-40 with the extent 1.5). The point is rounded anyway, so 0 serves.
-    for (double& c : q)
+    // predicates' range (y = 5e-40 with the extent 1.5). The point is rounded anyway, so 0 serves;
+    // and it must be one the output's user units hold exactly (inputs near the subnormal range).
+    for (double& c : q) {
       if (std::fabs(c) < kSafeMinMagnitude) c = 0;
+      c = m_.input.toInternal(m_.input.toUser(c));
+    }
     // A crossing within rounding distance of an existing vertex (typically the crossing of a third
     // segment through the same point) is that vertex: a second vertex 1e-16 away would only leave
     // needle triangles behind.

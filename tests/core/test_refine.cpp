@@ -353,6 +353,24 @@ TEST_CASE("a segment's pieces pass through every input point on the segment", "[
   }
 }
 
+// A fuzz_mesh finding at 43 degrees (circumcenters, convex hull, automatic holes) on coordinates near
+// 1e-312: the mesh was valid in internal units, but its new vertices lost most of their bits when
+// converted back to subnormal user units, leaving clockwise triangles. Budgets around the first bad
+// insertion (the 153rd) are checked, at 30 degrees too.
+TEST_CASE("new vertices are kept only where user units can hold them", "[refine]") {
+  const Plc plc = ruppert::readFile(hostileDir() + "steiner-vertices-rounded-to-subnormal-user-units.poly");
+  for (double angle : {30.0, 43.0})
+    for (std::uint64_t budget : {152, 153, 154, 3000}) {
+      Options o;
+      o.minAngle = angle;
+      o.placement = ruppert::Placement::Circumcenter;
+      o.convexHull = true;
+      o.autoHoles = true;
+      o.maxSteiner = budget;
+      refineChecked(plc, o, "budget " + std::to_string(budget));
+    }
+}
+
 // A fuzz_mesh finding (at 30 degrees, petal placement, max area 1.1e-229): every input coordinate is
 // within the exact predicates' range relative to the extent, but splits of a nearly horizontal hull
 // edge from (0, 0) were not; the validator's coordinate check caught them. The crossing fixture does
