@@ -70,7 +70,6 @@ double length(double x, double y) { return std::sqrt(x * x + y * y); }
 double dist(const double* p, const double* q) { return length(p[0] - q[0], p[1] - q[1]); }
 double sq(const double* p, const double* q) { return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]); }
 
-
 // A cavity already computed by Triangulation::cavity, handed to the insertion so it is not searched
 // twice (both null: none).
 struct CavityRef {
@@ -198,8 +197,8 @@ class Refiner {
     // complete meshes at 33 and 35 degrees use at most 40 Steiner vertices per input vertex once
     // past the first ten thousand), plus 100 per crossing of two segments (stars of 80 to 300 chords
     // through a disk's centre, 3,160 to 44,850 crossings at small angles, use 30-63 Steiner vertices
-    // per crossing at 30 and 33 degrees; 40 per crossing stopped several of them incomplete), plus eight per unit of area bound (area A with triangles of area a needs about
-    // A / (2 a) vertices).
+    // per crossing at 30 and 33 degrees; 40 per crossing stopped several of them incomplete), plus
+    // eight per unit of area bound (area A with triangles of area a needs about A / (2 a) vertices).
     const auto crossings = std::count(m_.kind.begin(), m_.kind.end(), VertexKind::Intersection);
     double estimate = 1e4 + 200.0 * m_.inputCount + 100.0 * static_cast<double>(crossings);
     for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
@@ -311,8 +310,9 @@ class Refiner {
 
   // Where refinement runs away, each step can rebuild a fan of thousands of needles, and the entries
   // of the ones it replaced stay queued: 70 million entries for 4 million triangles (300 chords
-  // crossing in a star at 30 degrees, before off-centers aimed past the bound). Dropping the stale ones (popNext would skip them anyway; the
-  // order of the rest is kept, so meshes do not change) keeps memory proportional to the mesh.
+  // crossing in a star at 30 degrees, before off-centers aimed past the bound). Dropping the stale
+  // ones (popNext would skip them anyway; the order of the rest is kept, so meshes do not change)
+  // keeps memory proportional to the mesh.
   void dropStaleEntries() {
     queued_ = 0;
     for (auto& b : buckets_) {
@@ -869,8 +869,8 @@ class Refiner {
       add(ReasonKind::PrecisionFloor, unmet,
           std::to_string(unmet) + " triangle(s) could not be improved: " + std::to_string(floorHits_) +
               " insertion(s) were refused because the new vertex would be closer than double precision can "
-              "resolve, or its coordinates would leave the exact predicates' range, or its cavity would wrap "
-              "around a vertex where the domain touches itself");
+              "resolve, or its coordinates would leave what exact arithmetic or the output's numbers can hold, "
+              "or its cavity would wrap around a vertex where the domain touches itself");
     if (nestled)
       add(ReasonKind::SmallInputAngle, nestled, std::to_string(nestled) +
           " triangle(s) sit in input angles smaller than the bound; no vertex can fix them (section 6.6)");

@@ -88,6 +88,9 @@ class SegmentInserter {
     }
     const double* pa = t_.pt(a);
     const double* pb = t_.pt(b);
+    // A piece off its input segment's line (it ends at a rounded crossing) can pass a hair beside a
+    // vertex that is on the segment; a piece on the line meets such a vertex with orientation 0.
+    const bool bent = !onInputSegment(a, id) || !onInputSegment(b, id);
     // Find the triangle at a whose corner contains the direction to b.
     std::uint32_t cross = kNone;  // first crossed half-edge, oriented right -> left of a->b
     const std::uint32_t start = t_.vtri[a];
@@ -97,8 +100,8 @@ class SegmentInserter {
       const std::uint32_t i = t_.tv[3 * tri] == a ? 0 : t_.tv[3 * tri + 1] == a ? 1 : 2;
       const std::uint32_t v1 = t_.tv[3 * tri + (i + 1) % 3], v2 = t_.tv[3 * tri + (i + 2) % 3];
       const double o1 = orient2d(pa, pb, t_.pt(v1)), o2 = orient2d(pa, pb, t_.pt(v2));
-      if ((o1 == 0 || onInputSegment(v1, id)) && aheadOf(a, b, v1) && before(a, b, v1)) return splitAt(a, b, v1, id);
-      if ((o2 == 0 || onInputSegment(v2, id)) && aheadOf(a, b, v2) && before(a, b, v2)) return splitAt(a, b, v2, id);
+      if ((o1 == 0 || (bent && onInputSegment(v1, id))) && between(a, b, v1)) return splitAt(a, b, v1, id);
+      if ((o2 == 0 || (bent && onInputSegment(v2, id))) && between(a, b, v2)) return splitAt(a, b, v2, id);
       if (o1 < 0 && o2 > 0) {
         cross = 3 * tri + i;
         break;
@@ -118,7 +121,7 @@ class SegmentInserter {
       const std::uint32_t w = t_.apex(g);
       if (w == b) break;
       const double o = orient2d(pa, pb, t_.pt(w));
-      if (o == 0 || onInputSegment(w, id)) return splitAt(a, b, w, id);
+      if (o == 0 || (bent && onInputSegment(w, id))) return splitAt(a, b, w, id);
       cross = o > 0 ? next3(g) : prev3(g);
     }
     flipAway(a, b, crossed);
@@ -145,21 +148,14 @@ class SegmentInserter {
     return orient2d(t_.pt(rep[plc.segments[2 * id]]), t_.pt(rep[plc.segments[2 * id + 1]]), t_.pt(v)) == 0;
   }
 
-  // True if v is nearer to a than b is, along a -> b.
-  bool before(std::uint32_t a, std::uint32_t b, std::uint32_t v) const {
+  // True if v's projection onto a -> b falls strictly between a and b.
+  bool between(std::uint32_t a, std::uint32_t b, std::uint32_t v) const {
     const double* pa = t_.pt(a);
     const double* pb = t_.pt(b);
     const double* pv = t_.pt(v);
     const double dx = pb[0] - pa[0], dy = pb[1] - pa[1];
-    return (pv[0] - pa[0]) * dx + (pv[1] - pa[1]) * dy < dx * dx + dy * dy;
-  }
-
-  // True if v lies on the ray from a through b, beyond a.
-  bool aheadOf(std::uint32_t a, std::uint32_t b, std::uint32_t v) const {
-    const double* pa = t_.pt(a);
-    const double* pb = t_.pt(b);
-    const double* pv = t_.pt(v);
-    return (pv[0] - pa[0]) * (pb[0] - pa[0]) + (pv[1] - pa[1]) * (pb[1] - pa[1]) > 0;
+    const double along = (pv[0] - pa[0]) * dx + (pv[1] - pa[1]) * dy;
+    return along > 0 && along < dx * dx + dy * dy;
   }
 
   void splitAt(std::uint32_t a, std::uint32_t b, std::uint32_t w, std::int32_t id) {
