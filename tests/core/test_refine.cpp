@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <initializer_list>
 #include <random>
 #include <string>
 #include <utility>
@@ -51,6 +52,21 @@ std::string hostileDir() {
 #else
   return "tests/hostile/";
 #endif
+}
+
+// A fuzz finding's fixture refined with the options it was found with (circumcenters, convex hull,
+// automatic holes) at each budget, each mesh validated.
+void refineAtBudgets(const char* file, double angle, std::initializer_list<std::uint64_t> budgets) {
+  const Plc plc = ruppert::readFile(hostileDir() + file);
+  for (std::uint64_t budget : budgets) {
+    Options o;
+    o.minAngle = angle;
+    o.placement = ruppert::Placement::Circumcenter;
+    o.convexHull = true;
+    o.autoHoles = true;
+    o.maxSteiner = budget;
+    refineChecked(plc, o, std::string(file) + ", budget " + std::to_string(budget));
+  }
 }
 
 }  // namespace
@@ -341,16 +357,7 @@ TEST_CASE("the automatic Steiner budget lets a star of 80 crossing chords comple
 // point that lies exactly on the segment; the 675th insertion split that edge and left the stretch
 // from the point uncovered. Every budget around it is checked.
 TEST_CASE("a segment's pieces pass through every input point on the segment", "[refine]") {
-  const Plc plc = ruppert::readFile(hostileDir() + "subsegment-skipped-a-vertex-on-its-segment.poly");
-  for (std::uint64_t budget : {0, 1, 100, 674, 675, 676, 700, 3000}) {
-    Options o;
-    o.minAngle = 30;
-    o.placement = ruppert::Placement::Circumcenter;
-    o.convexHull = true;
-    o.autoHoles = true;
-    o.maxSteiner = budget;
-    refineChecked(plc, o, "budget " + std::to_string(budget));
-  }
+  refineAtBudgets("subsegment-skipped-a-vertex-on-its-segment.poly", 30, {0, 1, 100, 674, 675, 676, 700, 3000});
 }
 
 // A fuzz_mesh finding at 43 degrees (circumcenters, convex hull, automatic holes) on coordinates near
@@ -358,17 +365,8 @@ TEST_CASE("a segment's pieces pass through every input point on the segment", "[
 // converted back to subnormal user units, leaving clockwise triangles. Budgets around the first bad
 // insertion (the 153rd) are checked, at 30 degrees too.
 TEST_CASE("new vertices are kept only where user units can hold them", "[refine]") {
-  const Plc plc = ruppert::readFile(hostileDir() + "steiner-vertices-rounded-to-subnormal-user-units.poly");
   for (double angle : {30.0, 43.0})
-    for (std::uint64_t budget : {152, 153, 154, 3000}) {
-      Options o;
-      o.minAngle = angle;
-      o.placement = ruppert::Placement::Circumcenter;
-      o.convexHull = true;
-      o.autoHoles = true;
-      o.maxSteiner = budget;
-      refineChecked(plc, o, "budget " + std::to_string(budget));
-    }
+    refineAtBudgets("steiner-vertices-rounded-to-subnormal-user-units.poly", angle, {152, 153, 154, 3000});
 }
 
 // A fuzz_mesh finding (at 30 degrees, petal placement, max area 1.1e-229): every input coordinate is
