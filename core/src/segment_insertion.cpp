@@ -18,8 +18,10 @@
 namespace ruppert::detail {
 namespace {
 
-// Internal coordinates lie within (-2, 2), where a double's spacing is at most 2^-52: a crossing
-// closer than this to a vertex is taken to be that vertex.
+// A rounded crossing is off its segments by a few units in the last place of their coordinates and
+// lengths. Within 2^-40 of that scale (far above the rounding, far below any feature the output
+// keeps) a point counts as on a segment, and a crossing as at a vertex (internal coordinates lie
+// within (-2, 2)).
 constexpr double kSnap = 0x1p-40;
 
 struct Task {
@@ -181,10 +183,17 @@ class SegmentInserter {
     }
     // A crossing within rounding distance of an existing vertex (typically the crossing of a third
     // segment through the same point) is that vertex: a second vertex 1e-16 away would only leave
-    // needle triangles behind.
+    // needle triangles behind. The nearest such vertex is taken, and only if the other segment may
+    // bend through it: a vertex near the crossing but off the other segment by more than that
+    // segment's rounding would leave it uncovered (found by fuzzing: four input points within 1e-19
+    // of the extent, and a crossing moved onto the one off the shorter segment).
     std::uint32_t w = kNone;
-    for (std::uint32_t c : {l, r, a, b})
-      if (w == kNone && std::fabs(t_.xy[2 * c] - q[0]) <= kSnap && std::fabs(t_.xy[2 * c + 1] - q[1]) <= kSnap) w = c;
+    double nearest = kSnap;
+    for (std::uint32_t c : {l, r, a, b}) {
+      const double d = std::max(std::fabs(t_.xy[2 * c] - q[0]), std::fabs(t_.xy[2 * c + 1] - q[1]));
+      const bool onOther = (c == l || c == r) ? onPiece(t_.pt(c), a, b) : onPiece(t_.pt(c), l, r);
+      if (d <= nearest && onOther) w = c, nearest = d;
+    }
     // Free the crossed edge, insert the crossing point where it lies (it is rounded, so it need not
     // be exactly on either segment), then rebuild both constraints through it.
     t_.con[h] = kFree;
@@ -215,6 +224,24 @@ class SegmentInserter {
     tasks_.push_back({l, w, other});
   }
 
+  double length2(std::uint32_t u, std::uint32_t w) const {
+    const double dx = t_.xy[2 * w] - t_.xy[2 * u], dy = t_.xy[2 * w + 1] - t_.xy[2 * u + 1];
+    return dx * dx + dy * dy;
+  }
+
+  // True if p lies on the piece u-w up to 2^-40 of the piece's scale (its length plus its ends'
+  // magnitude; see kSnap).
+  bool onPiece(const double* p, std::uint32_t u, std::uint32_t w) const {
+    const double* pu = t_.pt(u);
+    const double* pw = t_.pt(w);
+    const double len = std::hypot(pw[0] - pu[0], pw[1] - pu[1]);
+    const double tol =
+        kSnap * (len + std::max({std::fabs(pu[0]), std::fabs(pu[1]), std::fabs(pw[0]), std::fabs(pw[1])}));
+    return p[0] >= std::min(pu[0], pw[0]) - tol && p[0] <= std::max(pu[0], pw[0]) + tol &&
+           p[1] >= std::min(pu[1], pw[1]) - tol && p[1] <= std::max(pu[1], pw[1]) + tol &&
+           std::fabs(orient2d(pu, pw, p)) <= tol * len;
+  }
+
   // Where segment `id` (now the piece a-b) crosses segment `other` (the piece l-r). Computed from
   // the two whole input segments, lower index first, so the point does not depend on the order
   // of insertion.
@@ -235,7 +262,10 @@ class SegmentInserter {
       if (less(q1, q0)) std::swap(q0, q1);
       if (less(q0, p0) || (q0 == p0 && less(q1, p1))) std::swap(p0, q0), std::swap(p1, q1);
     }
+    // Interpolated along the shorter segment: the rounding of the point grows with the length of the
+    // segment it is measured along, and it must stay small next to the other one.
     auto intersect = [&](std::uint32_t u0, std::uint32_t u1, std::uint32_t w0, std::uint32_t w1, double out[2]) {
+      if (length2(w0, w1) < length2(u0, u1)) std::swap(u0, w0), std::swap(u1, w1);
       const double* pa = t_.pt(u0);
       const double* pb = t_.pt(u1);
       const double da = orient2d(t_.pt(w0), t_.pt(w1), pa), db = orient2d(t_.pt(w0), t_.pt(w1), pb);
@@ -247,14 +277,7 @@ class SegmentInserter {
     };
     // The whole-segment crossing is used only if it lies on both pieces (up to rounding); after
     // earlier repairs bent a chain, the pieces' own crossing is the right one.
-    auto within = [&](const double* p, std::uint32_t u, std::uint32_t w) {
-      const double* pu = t_.pt(u);
-      const double* pw = t_.pt(w);
-      return p[0] >= std::min(pu[0], pw[0]) - kSnap && p[0] <= std::max(pu[0], pw[0]) + kSnap &&
-             p[1] >= std::min(pu[1], pw[1]) - kSnap && p[1] <= std::max(pu[1], pw[1]) + kSnap &&
-             std::fabs(orient2d(pu, pw, p)) <= kSnap * std::hypot(pw[0] - pu[0], pw[1] - pu[1]);
-    };
-    if (intersect(p0, p1, q0, q1, q) && within(q, a, b) && within(q, l, r)) return;
+    if (intersect(p0, p1, q0, q1, q) && onPiece(q, a, b) && onPiece(q, l, r)) return;
     if (intersect(a, b, l, r, q)) return;
     q[0] = (t_.xy[2 * a] + t_.xy[2 * b]) / 2;  // degenerate: the walk said they cross; use the middle
     q[1] = (t_.xy[2 * a + 1] + t_.xy[2 * b + 1]) / 2;

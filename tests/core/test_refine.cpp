@@ -360,6 +360,15 @@ TEST_CASE("a segment's pieces pass through every input point on the segment", "[
   refineAtBudgets("subsegment-skipped-a-vertex-on-its-segment.poly", 30, {0, 1, 100, 674, 675, 676, 700, 3000});
 }
 
+// A fuzz_mesh finding at 10 degrees (circumcenters, convex hull, automatic holes): a segment 1e-19
+// of the extent long crossed one spanning the extent, and the crossing was snapped to an input point
+// near it but off the short segment, which was then left uncovered after the first Steiner vertex.
+// Before the fix every budget and angle here failed.
+TEST_CASE("a crossing snaps only to a vertex both segments may pass through", "[refine]") {
+  for (double angle : {0.0, 10.0, 30.0, 34.0})
+    refineAtBudgets("crossing-snapped-to-a-vertex-left-a-segment-uncovered.poly", angle, {0, 1, 2, 100, 3000});
+}
+
 // A fuzz_mesh finding at 43 degrees (circumcenters, convex hull, automatic holes) on coordinates near
 // 1e-312: the mesh was valid in internal units, but its new vertices lost most of their bits when
 // converted back to subnormal user units, leaving clockwise triangles. Budgets around the first bad

@@ -406,10 +406,30 @@ void checkNoOverlap(const Scaled& s, const std::vector<bool>& used, const Triang
 
 // Pairs of used vertices closer than the tolerance (in the scaled frame, where the largest magnitude
 // is in [1, 2)), at least one of them added by the mesher. Sweep over vertices sorted by x.
+// Refinement keeps its vertices apart on that global scale (its length floor), but a crossing of
+// input segments lies where the input puts it: one among input points 1e-13 apart near the origin
+// is as far from them as the input's own points are from each other. Pairs of crossings and input
+// points are therefore held to the rounding scale of their own coordinates, which still catches a
+// crossing computed twice.
+bool nearDuplicatePair(const Scaled& s, std::uint32_t a, std::uint32_t b, std::size_t nInput, double eps) {
+  const auto refinementVertex = [&](std::uint32_t v) {
+    const auto kind = VertexKind(s.mesh.vertexKinds[v]);
+    return kind == VertexKind::SegmentSplit || kind == VertexKind::Interior || kind == VertexKind::OffCenter;
+  };
+  const double dx = std::fabs(s.p(a)[0] - s.p(b)[0]), dy = std::fabs(s.p(a)[1] - s.p(b)[1]);
+  if (refinementVertex(a) || refinementVertex(b)) return dx <= eps && dy <= eps;
+  const bool inputPair = s.mesh.vertexKinds[a] == std::uint8_t(VertexKind::Input) &&
+                         s.mesh.vertexKinds[b] == std::uint8_t(VertexKind::Input) && a < nInput && b < nInput;
+  if (inputPair) return false;
+  const double local = eps * std::max({std::fabs(s.p(a)[0]), std::fabs(s.p(a)[1]), std::fabs(s.p(b)[0]),
+                                       std::fabs(s.p(b)[1])});
+  return dx <= local && dy <= local;
+}
+
 void checkNearDuplicates(const Scaled& s, const std::vector<bool>& used, const ValidateOptions& o, Problems& out) {
   if (!(o.nearDuplicateRelTol > 0)) return;
   const double eps = o.nearDuplicateRelTol;
-  const std::size_t nInput = o.input ? o.input->points.size() / 2 : 0;
+  const std::size_t nInput = o.input ? o.input->points.size() / 2 : SIZE_MAX;
   std::vector<std::uint32_t> order;
   for (std::size_t v = 0; v < s.np; ++v)
     if (used[v]) order.push_back(std::uint32_t(v));
@@ -417,14 +437,12 @@ void checkNearDuplicates(const Scaled& s, const std::vector<bool>& used, const V
   for (std::size_t i = 0; i < order.size(); ++i)
     for (std::size_t j = i + 1; j < order.size() && s.p(order[j])[0] - s.p(order[i])[0] <= eps; ++j) {
       const std::uint32_t a = order[i], b = order[j];
-      const bool added = s.mesh.vertexKinds[a] != std::uint8_t(VertexKind::Input) ||
-                         s.mesh.vertexKinds[b] != std::uint8_t(VertexKind::Input) ||
-                         (o.input && (a >= nInput || b >= nInput));
-      if (!added || std::fabs(s.p(a)[1] - s.p(b)[1]) > eps) continue;
+      if (!nearDuplicatePair(s, a, b, nInput, eps)) continue;
       out.add("vertices ", std::min(a, b), " (", fmt(s.mesh.points[2 * std::min(a, b)]), ", ",
               fmt(s.mesh.points[2 * std::min(a, b) + 1]), ") and ", std::max(a, b), " (",
               fmt(s.mesh.points[2 * std::max(a, b)]), ", ", fmt(s.mesh.points[2 * std::max(a, b) + 1]),
-              ") are near-duplicates (closer than ", fmt(eps), " relative to the largest coordinate)");
+              ") are near-duplicates (closer than ", fmt(eps), " relative to the largest coordinate, or to their own",
+              " coordinates for crossings)");
     }
 }
 
@@ -671,6 +689,17 @@ std::vector<std::string> validateMesh(const Mesh& mesh, const ValidateOptions& o
   }
   checkMeasures(s, options, out);
   checkStats(mesh, used, out);
+  return out.finish();
+}
+
+std::vector<std::string> findNearDuplicates(const Mesh& mesh, const ValidateOptions& options) {
+  Problems out(options.maxProblems);
+  const std::size_t inputSegments = options.input ? options.input->segments.size() / 2 : SIZE_MAX;
+  if (!checkSizes(mesh, out) || !checkIndices(mesh, inputSegments, out)) return out.finish();
+  const Scaled s(mesh);
+  std::vector<bool> used(s.np, false);
+  for (std::uint32_t v : mesh.triangles) used[v] = true;
+  checkNearDuplicates(s, used, options, out);
   return out.finish();
 }
 

@@ -56,6 +56,10 @@ struct ValidateOptions {
 
 std::vector<std::string> validateMesh(const ruppert::Mesh& mesh, const ValidateOptions& options = {});
 
+// The near-duplicate check of validateMesh() alone (with the size and index checks it needs): cheap
+// where the full validation is slow, on meshes with vertex clusters.
+std::vector<std::string> findNearDuplicates(const ruppert::Mesh& mesh, const ValidateOptions& options = {});
+
 // Helpers used by tests.
 double meshArea(const ruppert::Mesh& mesh);                           // sum of triangle areas
 double triangleMinAngleDeg(const ruppert::Mesh& mesh, std::uint32_t t);  // smallest angle of t

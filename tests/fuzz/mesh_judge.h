@@ -46,34 +46,6 @@ inline void scaleBy(int shift, ruppert::Mesh& mesh, ruppert::Plc& plc, ruppert::
   o.maxArea = std::ldexp(o.maxArea, 2 * shift);
 }
 
-// The validator's near-duplicate rule (added vertices within nearDuplicateRelTol of another used
-// vertex, in the frame where the largest coordinate is in [1, 2)), checked first and alone: a
-// mesh with such a cluster is reported at once, with the cluster named, before the full validation.
-inline std::vector<std::string> nearDuplicateClusters(const ruppert::Mesh& scaled, std::size_t inputPoints,
-                                                      double eps, std::size_t maxProblems) {
-  std::vector<bool> used(scaled.points.size() / 2, false);
-  for (std::uint32_t v : scaled.triangles)
-    if (v < used.size()) used[v] = true;
-  std::vector<std::uint32_t> order;
-  for (std::uint32_t v = 0; v < used.size(); ++v)
-    if (used[v]) order.push_back(v);
-  const auto x = [&](std::uint32_t v) { return scaled.points[2 * v]; };
-  const auto y = [&](std::uint32_t v) { return scaled.points[2 * v + 1]; };
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return x(a) < x(b); });
-  std::vector<std::string> problems;
-  for (std::size_t i = 0; i < order.size() && problems.size() < maxProblems; ++i)
-    for (std::size_t j = i + 1; j < order.size() && x(order[j]) - x(order[i]) <= eps; ++j) {
-      const std::uint32_t a = order[i], b = order[j];
-      if ((a < inputPoints && b < inputPoints) || std::fabs(y(a) - y(b)) > eps) continue;
-      problems.push_back("vertices " + std::to_string(a) + " and " + std::to_string(b) +
-                         " are near-duplicates (closer than nearDuplicateRelTol relative to the largest coordinate)");
-      if (problems.size() >= maxProblems) break;
-    }
-  if (!problems.empty())
-    problems.push_back("(full validation not run: the mesh already fails, and its vertex clusters make it slow)");
-  return problems;
-}
-
 // Problems of `mesh` (empty: valid). Angle and area bounds are checked only when the mesh claims
 // completeness; SeditiousEdge reasons exempt skinny triangles as test_refine.cpp does.
 inline std::vector<std::string> judgeMesh(const ruppert::Mesh& original, const ruppert::Plc& input,
@@ -84,10 +56,13 @@ inline std::vector<std::string> judgeMesh(const ruppert::Mesh& original, const r
   o.minAngle = options.minAngle, o.maxArea = options.maxArea;
   scaleBy(unitScaleShift(mesh), mesh, plc, o);
   ruppert_test::ValidateOptions v;
-  std::vector<std::string> problems =
-      nearDuplicateClusters(mesh, plc.points.size() / 2, v.nearDuplicateRelTol, v.maxProblems);
-  if (!problems.empty()) return problems;
   v.input = &plc;
+  // Near-duplicate clusters first and alone: they make the full validation slow.
+  std::vector<std::string> problems = ruppert_test::findNearDuplicates(mesh, v);
+  if (!problems.empty()) {
+    problems.push_back("(full validation not run: the mesh already fails, and its vertex clusters make it slow)");
+    return problems;
+  }
   v.expectNoSteiner = isPlainCdt(plc, options);
   if (mesh.complete && o.minAngle > 0) {
     // The chapter's exemptions, each judged per triangle from the mesh and the input.
