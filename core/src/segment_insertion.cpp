@@ -18,10 +18,14 @@
 namespace ruppert::detail {
 namespace {
 
-// A rounded crossing is off its segments by a few units in the last place of their coordinates and
-// lengths. Within 2^-40 of that scale (far above the rounding, far below any feature the output
-// keeps) a point counts as on a segment, and a crossing as at a vertex (internal coordinates lie
-// within (-2, 2)).
+// A rounded crossing is off its segments by a few units in the last place of their coordinates
+// (about 2^-52 of their magnitude) and of the shorter one's length, so a point counts as on a piece
+// of a segment within 2^-48 (16 ulps) of that scale. Coarser tolerances let pieces of a cluster 1e-13
+// across turn through its neighbours (at coordinates near 1, or near a segment 10^12 times longer),
+// and the crossing repairs then looped or merged segments that only crossed. Along the segments a
+// crossing of two at a small angle can be far less accurate, so a crossing counts as at a vertex
+// within 2^-40 (internal coordinates lie within (-2, 2)) if that vertex is on the other segment.
+constexpr double kOnPiece = 0x1p-48;
 constexpr double kSnap = 0x1p-40;
 
 struct Task {
@@ -38,7 +42,12 @@ class SegmentInserter {
 
   void insert(std::uint32_t a, std::uint32_t b, std::int32_t id) {
     tasks_.push_back({a, b, id});
-    while (!tasks_.empty()) {
+    // Every task constrains an edge or splits its piece at a vertex or a new crossing, so a segment
+    // takes a few tasks per vertex at most; more means two pieces keep splitting each other, which
+    // must end in an error, not in a loop.
+    for (std::uint64_t done = 0; !tasks_.empty(); ++done) {
+      if (done > 8 * static_cast<std::uint64_t>(t_.vertexCount()) + 1000)
+        throw Error(ErrorCode::Internal, "recovering " + segName(id) + " did not converge");
       const Task task = tasks_.back();
       tasks_.pop_back();
       if (task.a != task.b) insertOne(task.a, task.b, task.id);
@@ -102,8 +111,10 @@ class SegmentInserter {
       const std::uint32_t i = t_.tv[3 * tri] == a ? 0 : t_.tv[3 * tri + 1] == a ? 1 : 2;
       const std::uint32_t v1 = t_.tv[3 * tri + (i + 1) % 3], v2 = t_.tv[3 * tri + (i + 2) % 3];
       const double o1 = orient2d(pa, pb, t_.pt(v1)), o2 = orient2d(pa, pb, t_.pt(v2));
-      if ((o1 == 0 || (bent && onInputSegment(v1, id))) && between(a, b, v1)) return splitAt(a, b, v1, id);
-      if ((o2 == 0 || (bent && onInputSegment(v2, id))) && between(a, b, v2)) return splitAt(a, b, v2, id);
+      if ((o1 == 0 && between(a, b, v1)) || (bent && onInputSegment(v1, id) && between(a, b, v1, id)))
+        return splitAt(a, b, v1, id);
+      if ((o2 == 0 && between(a, b, v2)) || (bent && onInputSegment(v2, id) && between(a, b, v2, id)))
+        return splitAt(a, b, v2, id);
       if (o1 < 0 && o2 > 0) {
         cross = 3 * tri + i;
         break;
@@ -123,7 +134,10 @@ class SegmentInserter {
       const std::uint32_t w = t_.apex(g);
       if (w == b) break;
       const double o = orient2d(pa, pb, t_.pt(w));
-      if (o == 0 || (bent && onInputSegment(w, id))) return splitAt(a, b, w, id);
+      // A vertex on the input segment but not between a and b (its far end, when a piece was bent
+      // back past it) is passed like any other: splitting there made two pieces that split each
+      // other forever (found by a sweep of tiny crossing clusters).
+      if (o == 0 || (bent && onInputSegment(w, id) && between(a, b, w, id))) return splitAt(a, b, w, id);
       cross = o > 0 ? next3(g) : prev3(g);
     }
     flipAway(a, b, crossed);
@@ -150,14 +164,28 @@ class SegmentInserter {
     return orient2d(t_.pt(rep[plc.segments[2 * id]]), t_.pt(rep[plc.segments[2 * id + 1]]), t_.pt(v)) == 0;
   }
 
-  // True if v's projection onto a -> b falls strictly between a and b.
-  bool between(std::uint32_t a, std::uint32_t b, std::uint32_t v) const {
+  // True if v's projection onto a -> b falls strictly between a and b: measured along input segment
+  // `id` when there is one, since its pieces can be bent far off its direction (by a crossing
+  // rounded to the nearest double, within a cluster a few ulps across), and a vertex ahead along the
+  // piece may be behind along the segment. Splitting there turned the chain back on itself and
+  // the repairs looped (found by a sweep of tiny clusters).
+  bool between(std::uint32_t a, std::uint32_t b, std::uint32_t v, std::int32_t id = -1) const {
     const double* pa = t_.pt(a);
     const double* pb = t_.pt(b);
     const double* pv = t_.pt(v);
-    const double dx = pb[0] - pa[0], dy = pb[1] - pa[1];
-    const double along = (pv[0] - pa[0]) * dx + (pv[1] - pa[1]) * dy;
-    return along > 0 && along < dx * dx + dy * dy;
+    double dx = pb[0] - pa[0], dy = pb[1] - pa[1];
+    if (id >= 0) {
+      const Plc& plc = *m_.plc;
+      const auto& rep = m_.input.representative;
+      const double* s0 = t_.pt(rep[plc.segments[2 * id]]);
+      const double* s1 = t_.pt(rep[plc.segments[2 * id + 1]]);
+      const double sx = s1[0] - s0[0], sy = s1[1] - s0[1];
+      const double sign = sx * dx + sy * dy < 0 ? -1 : 1;
+      dx = sign * sx, dy = sign * sy;
+    }
+    // Measured from both ends: a vertex an ulp from b on a piece of length 1 is ahead of a by an
+    // amount that rounds to the piece's length, but behind b by one that does not round to 0.
+    return (pv[0] - pa[0]) * dx + (pv[1] - pa[1]) * dy > 0 && (pb[0] - pv[0]) * dx + (pb[1] - pv[1]) * dy > 0;
   }
 
   void splitAt(std::uint32_t a, std::uint32_t b, std::uint32_t w, std::int32_t id) {
@@ -184,14 +212,17 @@ class SegmentInserter {
     // A crossing within rounding distance of an existing vertex (typically the crossing of a third
     // segment through the same point) is that vertex: a second vertex 1e-16 away would only leave
     // needle triangles behind. The nearest such vertex is taken, and only if the other segment may
-    // bend through it: a vertex near the crossing but off the other segment by more than that
-    // segment's rounding would leave it uncovered (found by fuzzing: four input points within 1e-19
-    // of the extent, and a crossing moved onto the one off the shorter segment).
+    // pass through it: within its rounding of its line, and ahead along it. A vertex off the other
+    // segment left that segment uncovered (found by fuzzing: four input points within 1e-19 of the
+    // extent, and a crossing moved onto the one off the shorter segment); one behind it turned the
+    // chain back on itself, and the repairs looped (found by a sweep of tiny clusters).
+    const double shorter = std::sqrt(std::min(length2(a, b), length2(l, r)));
     std::uint32_t w = kNone;
     double nearest = kSnap;
     for (std::uint32_t c : {l, r, a, b}) {
       const double d = std::max(std::fabs(t_.xy[2 * c] - q[0]), std::fabs(t_.xy[2 * c + 1] - q[1]));
-      const bool onOther = (c == l || c == r) ? onPiece(t_.pt(c), a, b) : onPiece(t_.pt(c), l, r);
+      const bool onOther = (c == l || c == r) ? between(a, b, c, id) && onPiece(t_.pt(c), a, b, shorter)
+                                              : between(l, r, c, other) && onPiece(t_.pt(c), l, r, shorter);
       if (d <= nearest && onOther) w = c, nearest = d;
     }
     // Free the crossed edge, insert the crossing point where it lies (it is rounded, so it need not
@@ -229,17 +260,18 @@ class SegmentInserter {
     return dx * dx + dy * dy;
   }
 
-  // True if p lies on the piece u-w up to 2^-40 of the piece's scale (its length plus its ends'
-  // magnitude; see kSnap).
-  bool onPiece(const double* p, std::uint32_t u, std::uint32_t w) const {
+  // True if p lies on the piece u-w, up to rounding (see kOnPiece): that of the piece's coordinates
+  // and of the crossing's, computed along the shorter of the two segments (length `shorter`). The
+  // longer one's length must not count: a segment 1e12 times longer than a cluster it passes would
+  // count the whole cluster as on it.
+  bool onPiece(const double* p, std::uint32_t u, std::uint32_t w, double shorter) const {
     const double* pu = t_.pt(u);
     const double* pw = t_.pt(w);
-    const double len = std::hypot(pw[0] - pu[0], pw[1] - pu[1]);
     const double tol =
-        kSnap * (len + std::max({std::fabs(pu[0]), std::fabs(pu[1]), std::fabs(pw[0]), std::fabs(pw[1])}));
+        kOnPiece * (shorter + std::max({std::fabs(pu[0]), std::fabs(pu[1]), std::fabs(pw[0]), std::fabs(pw[1])}));
     return p[0] >= std::min(pu[0], pw[0]) - tol && p[0] <= std::max(pu[0], pw[0]) + tol &&
            p[1] >= std::min(pu[1], pw[1]) - tol && p[1] <= std::max(pu[1], pw[1]) + tol &&
-           std::fabs(orient2d(pu, pw, p)) <= tol * len;
+           std::fabs(orient2d(pu, pw, p)) <= tol * std::hypot(pw[0] - pu[0], pw[1] - pu[1]);
   }
 
   // Where segment `id` (now the piece a-b) crosses segment `other` (the piece l-r). Computed from
@@ -277,7 +309,8 @@ class SegmentInserter {
     };
     // The whole-segment crossing is used only if it lies on both pieces (up to rounding); after
     // earlier repairs bent a chain, the pieces' own crossing is the right one.
-    if (intersect(p0, p1, q0, q1, q) && onPiece(q, a, b) && onPiece(q, l, r)) return;
+    const double shorter = std::sqrt(std::min(length2(a, b), length2(l, r)));
+    if (intersect(p0, p1, q0, q1, q) && onPiece(q, a, b, shorter) && onPiece(q, l, r, shorter)) return;
     if (intersect(a, b, l, r, q)) return;
     q[0] = (t_.xy[2 * a] + t_.xy[2 * b]) / 2;  // degenerate: the walk said they cross; use the middle
     q[1] = (t_.xy[2 * a + 1] + t_.xy[2 * b + 1]) / 2;

@@ -467,6 +467,33 @@ TEST_CASE("the validator rejects broken meshes", "[cdt][validator]") {
     CHECK(mentions(problems, "is not a subsegment"));
     CHECK(mentions(problems, "input segment 3"));
   }
+  SECTION("an interior segment left uncovered") {
+    Plc withDiagonal = plc;
+    withDiagonal.segments.insert(withDiagonal.segments.end(), {2, 3});  // C-D, an edge but not a subsegment
+    const auto problems = validateMesh(good, against(withDiagonal, area));
+    INFO(describeProblems(problems));
+    CHECK(mentions(problems, "input segment 4 (2, 3) is not covered"));
+  }
+  SECTION("a vertex added 1e-14 from another, joined to it") {
+    // E inside triangle ABC, 1e-14 from A: a refinement vertex there is a near-duplicate; a crossing
+    // there is not (the input put it there), nor is an input point; two crossings 4 ulps apart are.
+    Mesh m;
+    m.points = {0, 0, 1, 0, 0, 1, 1e-14, 1e-14};
+    m.triangles = {0, 1, 3, 3, 1, 2, 0, 3, 2};
+    m.neighbors = {-1, 1, 2, -1, -1, 0, 0, 1, -1};
+    m.vertexKinds.assign(4, std::uint8_t(ruppert::VertexKind::Input));
+    m.triangleAttributes.assign(3, 0.0);
+    INFO(describeProblems(ruppert_test::findNearDuplicates(m)));
+    CHECK(ruppert_test::findNearDuplicates(m).empty());
+    m.vertexKinds[3] = std::uint8_t(ruppert::VertexKind::Interior);
+    CHECK(mentions(ruppert_test::findNearDuplicates(m), "vertices 0 (0, 0) and 3"));
+    m.vertexKinds[3] = std::uint8_t(ruppert::VertexKind::Intersection);
+    CHECK(ruppert_test::findNearDuplicates(m).empty());
+    m.points[0] = std::nextafter(m.points[6], 1.0);
+    m.points[1] = 1e-14;
+    m.vertexKinds[0] = std::uint8_t(ruppert::VertexKind::Intersection);
+    CHECK(mentions(ruppert_test::findNearDuplicates(m), "are near-duplicates"));
+  }
   SECTION("a subsegment that is not an edge") {
     Mesh bad = good;
     bad.segments[0] = 0;  // subsegment 0 becomes (A, B), which the good mesh does not have

@@ -404,45 +404,39 @@ void checkNoOverlap(const Scaled& s, const std::vector<bool>& used, const Triang
   }
 }
 
-// Pairs of used vertices closer than the tolerance (in the scaled frame, where the largest magnitude
-// is in [1, 2)), at least one of them added by the mesher. Sweep over vertices sorted by x.
+// Edges shorter than the tolerance (in the scaled frame, where the largest magnitude is in [1, 2)),
+// at least one of whose ends the mesher added: the needles a vertex computed twice leaves. Vertices
+// that close across a hole or a segment are not joined and not reported: refinement on both sides
+// of an input gap 1e-13 wide puts them there, each side's cavity honouring the length floor.
 // Refinement keeps its vertices apart on that global scale (its length floor), but a crossing of
-// input segments lies where the input puts it: one among input points 1e-13 apart near the origin
-// is as far from them as the input's own points are from each other. Pairs of crossings and input
-// points are therefore held to the rounding scale of their own coordinates, which still catches a
-// crossing computed twice.
-bool nearDuplicatePair(const Scaled& s, std::uint32_t a, std::uint32_t b, std::size_t nInput, double eps) {
+// input segments lies where the input puts it: among input points 1e-13 apart, or an ulp from an
+// input point that is an ulp off the segment, it is as close to them as they are to each other.
+// So crossings are checked only against each other, within 4 ulps of their own coordinates (the
+// mesher counts a crossing within 16 of a segment as on it): a crossing computed twice.
+bool nearDuplicatePair(const Scaled& s, std::uint32_t a, std::uint32_t b, double eps) {
+  const auto kind = [&](std::uint32_t v) { return VertexKind(s.mesh.vertexKinds[v]); };
   const auto refinementVertex = [&](std::uint32_t v) {
-    const auto kind = VertexKind(s.mesh.vertexKinds[v]);
-    return kind == VertexKind::SegmentSplit || kind == VertexKind::Interior || kind == VertexKind::OffCenter;
+    return kind(v) == VertexKind::SegmentSplit || kind(v) == VertexKind::Interior || kind(v) == VertexKind::OffCenter;
   };
   const double dx = std::fabs(s.p(a)[0] - s.p(b)[0]), dy = std::fabs(s.p(a)[1] - s.p(b)[1]);
   if (refinementVertex(a) || refinementVertex(b)) return dx <= eps && dy <= eps;
-  const bool inputPair = s.mesh.vertexKinds[a] == std::uint8_t(VertexKind::Input) &&
-                         s.mesh.vertexKinds[b] == std::uint8_t(VertexKind::Input) && a < nInput && b < nInput;
-  if (inputPair) return false;
-  const double local = eps * std::max({std::fabs(s.p(a)[0]), std::fabs(s.p(a)[1]), std::fabs(s.p(b)[0]),
+  if (kind(a) != VertexKind::Intersection || kind(b) != VertexKind::Intersection) return false;
+  const double local = 0x1p-50 * std::max({std::fabs(s.p(a)[0]), std::fabs(s.p(a)[1]), std::fabs(s.p(b)[0]),
                                        std::fabs(s.p(b)[1])});
   return dx <= local && dy <= local;
 }
 
-void checkNearDuplicates(const Scaled& s, const std::vector<bool>& used, const ValidateOptions& o, Problems& out) {
+void checkNearDuplicates(const Scaled& s, const ValidateOptions& o, Problems& out) {
   if (!(o.nearDuplicateRelTol > 0)) return;
   const double eps = o.nearDuplicateRelTol;
-  const std::size_t nInput = o.input ? o.input->points.size() / 2 : SIZE_MAX;
-  std::vector<std::uint32_t> order;
-  for (std::size_t v = 0; v < s.np; ++v)
-    if (used[v]) order.push_back(std::uint32_t(v));
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return s.p(a)[0] < s.p(b)[0]; });
-  for (std::size_t i = 0; i < order.size(); ++i)
-    for (std::size_t j = i + 1; j < order.size() && s.p(order[j])[0] - s.p(order[i])[0] <= eps; ++j) {
-      const std::uint32_t a = order[i], b = order[j];
-      if (!nearDuplicatePair(s, a, b, nInput, eps)) continue;
-      out.add("vertices ", std::min(a, b), " (", fmt(s.mesh.points[2 * std::min(a, b)]), ", ",
-              fmt(s.mesh.points[2 * std::min(a, b) + 1]), ") and ", std::max(a, b), " (",
-              fmt(s.mesh.points[2 * std::max(a, b)]), ", ", fmt(s.mesh.points[2 * std::max(a, b) + 1]),
-              ") are near-duplicates (closer than ", fmt(eps), " relative to the largest coordinate, or to their own",
-              " coordinates for crossings)");
+  for (std::size_t t = 0; t < s.nt; ++t)
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = s.v(t, i), b = s.v(t, (i + 1) % 3);
+      if (a > b || !nearDuplicatePair(s, a, b, eps)) continue;  // each edge once (or twice if on the hull)
+      out.add("vertices ", a, " (", fmt(s.mesh.points[2 * a]), ", ", fmt(s.mesh.points[2 * a + 1]), ") and ", b, " (",
+              fmt(s.mesh.points[2 * b]), ", ", fmt(s.mesh.points[2 * b + 1]),
+              ") are near-duplicates joined by an edge (closer than ", fmt(eps),
+              " relative to the largest coordinate, or 2^-50 relative to their own coordinates for crossings)");
     }
 }
 
@@ -500,6 +494,30 @@ void checkHoles(const Scaled& s, const ValidateOptions& o, const TriangleIndex& 
   }
 }
 
+constexpr std::uint32_t kNoTriangle = 0xffffffffu;
+
+// A triangle the stretch u-w of an input segment runs into, or kNoTriangle if it lies outside the
+// domain. Judged at an end that is a mesh vertex, by which of its triangles' corners (closed) holds
+// the direction to the other end: a midpoint test misjudges short gaps, whose rounded midpoint can
+// land on the boundary or on an end (a stretch 2 ulps long leaving the domain at a vertex).
+std::uint32_t gapInDomain(const Scaled& s, const TriangleIndex& grid, std::uint32_t u, std::uint32_t w) {
+  for (const auto& [from, to] : {std::pair{u, w}, std::pair{w, u}}) {
+    bool isVertex = false;
+    for (std::uint32_t t : grid.containing(s.p(from), false)) {
+      const int i = s.v(t, 0) == from ? 0 : s.v(t, 1) == from ? 1 : s.v(t, 2) == from ? 2 : -1;
+      if (i < 0) continue;
+      isVertex = true;
+      const double* x = s.p(s.v(t, (i + 1) % 3));
+      const double* y = s.p(s.v(t, (i + 2) % 3));
+      if (orient2d(s.p(from), x, s.p(to)) >= 0 && orient2d(s.p(from), y, s.p(to)) <= 0) return t;
+    }
+    if (isVertex) return kNoTriangle;
+  }
+  const double mid[2] = {(s.p(u)[0] + s.p(w)[0]) / 2, (s.p(u)[1] + s.p(w)[1]) / 2};
+  const auto hits = grid.containing(mid, false);
+  return hits.empty() ? kNoTriangle : hits[0];
+}
+
 // Every input segment is a chain of subsegments from its first endpoint to its last (see header).
 void checkSegmentCoverage(const Scaled& s, const EdgeMaps& maps, const ValidateOptions& o, const TriangleIndex& grid,
                           Problems& out) {
@@ -550,11 +568,11 @@ void checkSegmentCoverage(const Scaled& s, const EdgeMaps& maps, const ValidateO
     }
     const std::uint32_t a = std::uint32_t(pa), b = std::uint32_t(pb);
     // Position of vertex v along the segment (0 at a, 1 at b) and its distance from the line, both in
-    // the scaled frame. Tolerance: relative to the segment's length plus its endpoints' magnitude.
+    // the scaled frame. Tolerance: see ValidateOptions::collinearRelTol.
     const double ax = s.p(a)[0], ay = s.p(a)[1], dx = s.p(b)[0] - ax, dy = s.p(b)[1] - ay;
     const double len2 = dx * dx + dy * dy, len = std::sqrt(len2);
-    const double tol = o.collinearRelTol *
-                       (len + std::max({std::fabs(ax), std::fabs(ay), std::fabs(s.p(b)[0]), std::fabs(s.p(b)[1])}));
+    const double tol = o.collinearRelTol * len +
+                       o.collinearUlpTol * std::max({std::fabs(ax), std::fabs(ay), std::fabs(s.p(b)[0]), std::fabs(s.p(b)[1])});
     auto param = [&](std::uint32_t v) { return ((s.p(v)[0] - ax) * dx + (s.p(v)[1] - ay) * dy) / len2; };
     auto onSegment = [&](std::uint32_t v) {
       const double dist = std::fabs((s.p(v)[0] - ax) * dy - (s.p(v)[1] - ay) * dx) / len;
@@ -568,13 +586,22 @@ void checkSegmentCoverage(const Scaled& s, const EdgeMaps& maps, const ValidateO
           out.add("subsegment ", k, " of input segment ", seg, " has vertex ", v, " (", fmt(m.points[2 * v]), ", ",
                   fmt(m.points[2 * v + 1]), ") off the segment (", a, ", ", b, ")");
 
-    // Subsegments allowed to cover this segment: its own and those of segments overlapping it.
+    // Subsegments allowed to cover this segment: its own and those of segments overlapping it, directly
+    // or through others (one segment's pieces can be held by a second that overlaps a third).
     std::vector<std::uint32_t> carriers = subsegmentsOf[seg];
-    if (partners.count(std::int64_t(seg)))
-      for (std::int64_t other : partners[std::int64_t(seg)])
-        if (other >= 0 && std::size_t(other) < nSeg)
+    std::set<std::int64_t> group{std::int64_t(seg)};
+    for (std::vector<std::int64_t> todo{std::int64_t(seg)}; !todo.empty();) {
+      const std::int64_t at = todo.back();
+      todo.pop_back();
+      const auto found = partners.find(at);
+      if (found == partners.end()) continue;
+      for (std::int64_t other : found->second)
+        if (other >= 0 && std::size_t(other) < nSeg && group.insert(other).second) {
+          todo.push_back(other);
           carriers.insert(carriers.end(), subsegmentsOf[std::size_t(other)].begin(),
                           subsegmentsOf[std::size_t(other)].end());
+        }
+    }
     std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> graph;
     std::unordered_set<std::uint64_t> carrierEdges;
     for (std::uint32_t k : carriers) {
@@ -598,20 +625,62 @@ void checkSegmentCoverage(const Scaled& s, const EdgeMaps& maps, const ValidateO
 
     // No complete chain: acceptable only where the missing pieces lie outside the meshed domain (the
     // segment runs through a hole or outside the domain and its subsegments were removed with it).
-    std::vector<std::pair<double, std::uint32_t>> stations{{0.0, a}, {1.0, b}};
-    for (const auto& entry : graph) stations.emplace_back(param(entry.first), entry.first);
-    std::sort(stations.begin(), stations.end());
-    stations.erase(std::unique(stations.begin(), stations.end()), stations.end());
-    for (std::size_t k = 0; k + 1 < stations.size(); ++k) {
-      const std::uint32_t u = stations[k].second, w = stations[k + 1].second;
-      if (carrierEdges.count(undirectedKey(u, w)) || maps.subsegments.count(undirectedKey(u, w))) continue;
-      const double mid[2] = {(s.p(u)[0] + s.p(w)[0]) / 2, (s.p(u)[1] + s.p(w)[1]) / 2};
-      const auto hits = grid.containing(mid, false);
-      if (!hits.empty()) {
-        out.add("input segment ", seg, " (", ia, ", ", ib, ") is not covered by subsegments between vertices ", u,
-                " and ", w, " (the gap's midpoint is inside triangle ", hits[0], ")");
-        break;
+    // The gaps are judged between connected runs of carriers, ordered along the segment, not between
+    // single vertices: within a cluster smaller than the tolerance, a partner's vertex counts as on
+    // this segment though its run only touches it, and would split a covered stretch in two.
+    struct Run {
+      double lo, hi;
+      std::uint32_t first, last;  // the run's vertices nearest a and nearest b
+    };
+    std::vector<Run> runs;
+    std::unordered_set<std::uint32_t> placed;
+    auto addRun = [&](std::uint32_t start) {
+      if (!placed.insert(start).second) return;
+      Run run{param(start), param(start), start, start};
+      std::vector<std::uint32_t> stack{start};
+      while (!stack.empty()) {
+        const std::uint32_t u = stack.back();
+        stack.pop_back();
+        const double t = param(u);
+        if (t < run.lo) run.lo = t, run.first = u;
+        if (t > run.hi) run.hi = t, run.last = u;
+        for (std::uint32_t w : graph[u])
+          if (placed.insert(w).second) stack.push_back(w);
       }
+      runs.push_back(run);
+    };
+    addRun(a);
+    addRun(b);
+    for (const auto& entry : graph) addRun(entry.first);
+    std::sort(runs.begin(), runs.end(), [](const Run& x, const Run& y) { return x.lo < y.lo; });
+    // Whether the segment's point at parameter t is within the tolerance of a carrier. Within a
+    // cluster smaller than the tolerance, vertices of other chains count as on the segment and the
+    // order of the runs means little; what the segment needs is a carrier near each of its points.
+    auto nearCarrier = [&](double t) {
+      const double p[2] = {ax + t * dx, ay + t * dy};
+      for (std::uint32_t k : carriers) {
+        const double* u = s.p(m.segments[2 * k]);
+        const double* w = s.p(m.segments[2 * k + 1]);
+        const double ex = w[0] - u[0], ey = w[1] - u[1], e2 = ex * ex + ey * ey;
+        const double f = e2 > 0 ? std::clamp(((p[0] - u[0]) * ex + (p[1] - u[1]) * ey) / e2, 0.0, 1.0) : 0.0;
+        if (std::hypot(p[0] - u[0] - f * ex, p[1] - u[1] - f * ey) <= tol) return true;
+      }
+      return false;
+    };
+    const Run* reach = &runs.front();
+    for (const Run& next : runs) {
+      if (next.lo > reach->hi) {
+        const std::uint32_t u = reach->last, w = next.first;
+        const bool bridged = carrierEdges.count(undirectedKey(u, w)) || maps.subsegments.count(undirectedKey(u, w)) ||
+                             nearCarrier((reach->hi + next.lo) / 2);
+        const std::uint32_t hit = bridged ? kNoTriangle : gapInDomain(s, grid, u, w);
+        if (hit != kNoTriangle) {
+          out.add("input segment ", seg, " (", ia, ", ", ib, ") is not covered by subsegments between vertices ", u,
+                  " and ", w, " (the gap runs into triangle ", hit, ")");
+          break;
+        }
+      }
+      if (next.hi > reach->hi) reach = &next;
     }
   }
 }
@@ -680,7 +749,7 @@ std::vector<std::string> validateMesh(const Mesh& mesh, const ValidateOptions& o
   checkVertexFans(s, used, out);
   const TriangleIndex grid(s);
   checkNoOverlap(s, used, grid, out);
-  checkNearDuplicates(s, used, options, out);
+  checkNearDuplicates(s, options, out);
   checkVertexKinds(s, used, options, out);
   if (options.input) {
     checkUnusedInputPoints(s, used, options, grid, out);
@@ -696,10 +765,7 @@ std::vector<std::string> findNearDuplicates(const Mesh& mesh, const ValidateOpti
   Problems out(options.maxProblems);
   const std::size_t inputSegments = options.input ? options.input->segments.size() / 2 : SIZE_MAX;
   if (!checkSizes(mesh, out) || !checkIndices(mesh, inputSegments, out)) return out.finish();
-  const Scaled s(mesh);
-  std::vector<bool> used(s.np, false);
-  for (std::uint32_t v : mesh.triangles) used[v] = true;
-  checkNearDuplicates(s, used, options, out);
+  checkNearDuplicates(Scaled(mesh), options, out);
   return out.finish();
 }
 

@@ -21,9 +21,12 @@ struct ValidateOptions {
   // subsegments (or be reported dropped by a notice, or lie outside the meshed domain), and every
   // input point must be used, merged (DuplicatePoint notice) or lie outside the domain.
   const ruppert::Plc* input = nullptr;
-  // Tolerance, relative to a segment's length plus its endpoints' magnitude, for how far a vertex of
-  // the segment's chain may be from its line (intersection vertices are rounded).
+  // How far a vertex of a segment's chain may be from its line (intersection vertices are rounded):
+  // collinearRelTol of the segment's length plus collinearUlpTol of its endpoints' magnitude. The
+  // second is a few dozen ulps, not more: a segment 1e-14 long at coordinates near 1 has neighbours
+  // 1e-14 away, which a looser tolerance would count as on it.
   double collinearRelTol = 1e-9;
+  double collinearUlpTol = 0x1p-46;
 
   // Total triangle area must equal this (relative tolerance areaRelTol) when >= 0.
   double expectedArea = -1;
