@@ -197,6 +197,38 @@ GeneratedPlc chordStar(std::uint64_t seed, std::size_t n) {
   return g;
 }
 
+GeneratedPlc crossingClusters(std::uint64_t seed, double decades) {
+  Draw draw(seed);
+  GeneratedPlc g;
+  auto point = [&](double x, double y) {
+    g.plc.points.insert(g.plc.points.end(), {x, y});
+    return std::uint32_t(g.plc.points.size() / 2 - 1);
+  };
+  auto segment = [&](std::uint32_t a, std::uint32_t b) { g.plc.segments.insert(g.plc.segments.end(), {a, b}); };
+  const double sx = draw.unit() < 0.5 ? 0 : draw.unit() * 4 - 2, sy = draw.unit() < 0.5 ? 0 : draw.unit() * 4 - 2;
+  const std::uint32_t corner = point(-1 + sx, -1 + sy);
+  point(1 + sx, -1 + sy), point(1 + sx, 1 + sy), point(-1 + sx, 1 + sy);
+  for (std::uint32_t k = 0; k < 4; ++k) segment(corner + k, corner + (k + 1) % 4);
+  for (std::uint64_t c = 0, clusters = 1 + draw.below(3); c < clusters; ++c) {
+    double cx = draw.unit() < 0.4 ? 0 : draw.unit() * 1.8 - 0.9 + sx;
+    double cy = draw.unit() < 0.4 ? 0 : draw.unit() * 1.8 - 0.9 + sy;
+    if (draw.unit() < 0.2) cx = sx + 1, cy = sy + draw.unit() * 1.8 - 0.9;  // on the right edge
+    const double size = std::pow(10.0, -1 - draw.unit() * decades);
+    const bool nearlyParallel = draw.unit() < 0.3;
+    const double base = draw.unit() * 3.14159265358979323846;
+    for (std::uint64_t k = 0, n = 2 + draw.below(6); k < n; ++k) {
+      const double a = nearlyParallel ? base + (draw.unit() - 0.5) * std::pow(10.0, -draw.unit() * 12)
+                                      : draw.unit() * 3.14159265358979323846;
+      const double len = size * (0.2 + draw.unit()), ox = (draw.unit() - 0.5) * size, oy = (draw.unit() - 0.5) * size;
+      const std::uint32_t p = point(cx + ox - len * std::cos(a), cy + oy - len * std::sin(a));
+      const std::uint32_t q = point(cx + ox + len * std::cos(a), cy + oy + len * std::sin(a));
+      segment(p, q);
+      if (draw.unit() < 0.2) segment(p, corner + std::uint32_t(draw.below(4)));
+    }
+  }
+  return g;
+}
+
 GeneratedPlc randomGridSegments(std::uint64_t seed, std::size_t n, std::uint32_t size) {
   Draw draw(seed);
   GeneratedPlc g;

@@ -52,6 +52,13 @@ GeneratedPlc randomGridSegments(std::uint64_t seed, std::size_t n, std::uint32_t
 // and enclose the domain themselves (area = 0, not computed).
 GeneratedPlc chordStar(std::uint64_t seed, std::size_t n);
 
+// The square [-1, 1]^2, shifted by up to 2, and one to three clusters of 2 to 7 short segments that
+// cross each other: each cluster 10^-1 to 10^-(1 + decades) across, at the origin, at a random
+// point or on the square's right edge, its segments at random directions or within 1e-12 rad of one
+// another, some joined to a corner of the square. Crossings then fall among input points a few
+// hundred ulps apart (area = 0, not computed).
+GeneratedPlc crossingClusters(std::uint64_t seed, double decades);
+
 // An nx-by-ny grid of points spaced `step` apart with the grid's boundary as segments between
 // neighbouring boundary points (so every boundary side is a chain of collinear points), plus, when
 // `crossLines` is set, the middle row and column as chains of segments. Every unit cell's corners are

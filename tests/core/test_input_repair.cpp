@@ -295,6 +295,32 @@ TEST_CASE("a duplicate segment crossed at a point doubles cannot represent", "[r
   CHECK(usedVerticesAt(mesh, 4.0 / 3, 2.0 / 3, 1e-9) == 1);
 }
 
+// Clusters of segments a hundred to 10^12 times shorter than the domain, crossing each other among
+// input points a few hundred ulps apart: crossing repair used to stop with "too many crossing
+// repairs" on a tenth of such inputs and bend chains through their neighbours on a fifth, and an
+// intermediate version looped. Options vary with the input (angle, placement, convex hull, budget).
+TEST_CASE("random clusters of tiny crossing segments are meshed validly", "[repair]") {
+  using ruppert::Placement;
+  for (std::uint64_t seed = 1; seed <= 2000; ++seed) {
+    const Plc plc = crossingClusters(seed, 12).plc;
+    ruppert::Options o;
+    o.minAngle = std::vector<double>{0, 20, 30, 34}[seed % 4];
+    o.placement = std::vector<Placement>{Placement::OffCenter, Placement::Circumcenter, Placement::Petal}[seed / 4 % 3];
+    o.convexHull = seed / 12 % 3 == 0;
+    o.autoHoles = true;
+    o.maxSteiner = std::vector<std::uint64_t>{0, 10, 2000}[seed / 36 % 3];
+    INFO("seed " << seed << ", angle " << o.minAngle << ", placement " << int(o.placement) << ", hull "
+                 << o.convexHull << ", budget " << o.maxSteiner);
+    Mesh mesh;
+    REQUIRE_NOTHROW(mesh = ruppert::triangulate(plc, o));
+    ValidateOptions v;
+    v.input = &plc;
+    const auto problems = validateMesh(mesh, v);
+    INFO(describeProblems(problems));
+    REQUIRE(problems.empty());
+  }
+}
+
 TEST_CASE("overlapping collinear segments are merged with a notice", "[repair]") {
   Plc plc = square(4);
   const std::uint32_t s0 = addSegment(plc, 1, 1, 3, 1);
