@@ -497,25 +497,28 @@ void checkHoles(const Scaled& s, const ValidateOptions& o, const TriangleIndex& 
 constexpr std::uint32_t kNoTriangle = 0xffffffffu;
 
 // A triangle the stretch u-w of an input segment runs into, or kNoTriangle if it lies outside the
-// domain. Judged at an end that is a mesh vertex, by which of its triangles' corners (closed) holds
-// the direction to the other end: a midpoint test misjudges short gaps, whose rounded midpoint can
-// land on the boundary or on an end (a stretch 2 ulps long leaving the domain at a vertex).
-std::uint32_t gapInDomain(const Scaled& s, const TriangleIndex& grid, std::uint32_t u, std::uint32_t w) {
-  for (const auto& [from, to] : {std::pair{u, w}, std::pair{w, u}}) {
-    bool isVertex = false;
+// domain: one holding its midpoint (a stretch along the domain's boundary, a hair off it, has its
+// midpoint on a boundary edge), or one whose corner at an end that is a mesh vertex holds the
+// direction to the other end (a midpoint test alone misses a stretch that enters the domain at one
+// end and leaves it again). A stretch that leaves the domain within `tol` of a vertex only touches it.
+std::uint32_t gapInDomain(const Scaled& s, const TriangleIndex& grid, std::uint32_t u, std::uint32_t w, double tol) {
+  const double mid[2] = {(s.p(u)[0] + s.p(w)[0]) / 2, (s.p(u)[1] + s.p(w)[1]) / 2};
+  const auto hits = grid.containing(mid, false);
+  if (!hits.empty()) return hits[0];
+  for (const auto& [from, to] : {std::pair{u, w}, std::pair{w, u}})
     for (std::uint32_t t : grid.containing(s.p(from), false)) {
       const int i = s.v(t, 0) == from ? 0 : s.v(t, 1) == from ? 1 : s.v(t, 2) == from ? 2 : -1;
       if (i < 0) continue;
-      isVertex = true;
       const double* x = s.p(s.v(t, (i + 1) % 3));
       const double* y = s.p(s.v(t, (i + 2) % 3));
-      if (orient2d(s.p(from), x, s.p(to)) >= 0 && orient2d(s.p(from), y, s.p(to)) <= 0) return t;
+      if (!(orient2d(s.p(from), x, s.p(to)) >= 0 && orient2d(s.p(from), y, s.p(to)) <= 0)) continue;
+      const double inside = orient2d(x, y, s.p(from)), beyond = orient2d(x, y, s.p(to));
+      if (s.mesh.neighbors[3 * t + std::size_t(i)] == ruppert::kNoNeighbor && beyond < 0 &&
+          inside / (inside - beyond) * std::hypot(s.p(to)[0] - s.p(from)[0], s.p(to)[1] - s.p(from)[1]) <= tol)
+        continue;
+      return t;
     }
-    if (isVertex) return kNoTriangle;
-  }
-  const double mid[2] = {(s.p(u)[0] + s.p(w)[0]) / 2, (s.p(u)[1] + s.p(w)[1]) / 2};
-  const auto hits = grid.containing(mid, false);
-  return hits.empty() ? kNoTriangle : hits[0];
+  return kNoTriangle;
 }
 
 // Every input segment is a chain of subsegments from its first endpoint to its last (see header).
@@ -574,6 +577,9 @@ void checkSegmentCoverage(const Scaled& s, const EdgeMaps& maps, const ValidateO
     const double tol = o.collinearRelTol * len +
                        o.collinearUlpTol * std::max({std::fabs(ax), std::fabs(ay), std::fabs(s.p(b)[0]), std::fabs(s.p(b)[1])});
     auto param = [&](std::uint32_t v) { return ((s.p(v)[0] - ax) * dx + (s.p(v)[1] - ay) * dy) / len2; };
+    auto withinTolerance = [&](std::uint32_t v) {  // of the segment's line, anywhere along it
+      return std::fabs((s.p(v)[0] - ax) * dy - (s.p(v)[1] - ay) * dx) / len <= tol;
+    };
     auto onSegment = [&](std::uint32_t v) {
       const double dist = std::fabs((s.p(v)[0] - ax) * dy - (s.p(v)[1] - ay) * dx) / len;
       const double t = param(v);
@@ -625,62 +631,30 @@ void checkSegmentCoverage(const Scaled& s, const EdgeMaps& maps, const ValidateO
 
     // No complete chain: acceptable only where the missing pieces lie outside the meshed domain (the
     // segment runs through a hole or outside the domain and its subsegments were removed with it).
-    // The gaps are judged between connected runs of carriers, ordered along the segment, not between
-    // single vertices: within a cluster smaller than the tolerance, a partner's vertex counts as on
-    // this segment though its run only touches it, and would split a covered stretch in two.
-    struct Run {
-      double lo, hi;
-      std::uint32_t first, last;  // the run's vertices nearest a and nearest b
-    };
-    std::vector<Run> runs;
-    std::unordered_set<std::uint32_t> placed;
-    auto addRun = [&](std::uint32_t start) {
-      if (!placed.insert(start).second) return;
-      Run run{param(start), param(start), start, start};
-      std::vector<std::uint32_t> stack{start};
-      while (!stack.empty()) {
-        const std::uint32_t u = stack.back();
-        stack.pop_back();
-        const double t = param(u);
-        if (t < run.lo) run.lo = t, run.first = u;
-        if (t > run.hi) run.hi = t, run.last = u;
-        for (std::uint32_t w : graph[u])
-          if (placed.insert(w).second) stack.push_back(w);
+    // Consecutive vertices along the segment must be joined by a carrier, so a chain that steps back
+    // (a subsegment passing beside a vertex of the segment) leaves a gap.
+    std::vector<std::pair<double, std::uint32_t>> stations{{0.0, a}, {1.0, b}};
+    for (const auto& entry : graph) stations.emplace_back(param(entry.first), entry.first);
+    std::sort(stations.begin(), stations.end());
+    stations.erase(std::unique(stations.begin(), stations.end()), stations.end());
+    for (std::size_t k = 0; k + 1 < stations.size(); ++k) {
+      const std::uint32_t u = stations[k].second, w = stations[k + 1].second;
+      if (carrierEdges.count(undirectedKey(u, w)) || maps.subsegments.count(undirectedKey(u, w))) continue;
+      // A stretch no longer than the tolerance is rounding: within a cluster that small, the order of
+      // vertices along the segment means little.
+      if (std::hypot(s.p(w)[0] - s.p(u)[0], s.p(w)[1] - s.p(u)[1]) <= tol) continue;
+      std::uint32_t hit = gapInDomain(s, grid, u, w, tol);
+      // A triangle lying wholly within the tolerance of the segment's line (a cell a few ulps across)
+      // is one its chain may pass beside: bent through a corner by rounding, the chain misses the
+      // cell, and the cell is no wider than the bend.
+      if (hit != kNoTriangle && withinTolerance(s.v(hit, 0)) && withinTolerance(s.v(hit, 1)) &&
+          withinTolerance(s.v(hit, 2)))
+        hit = kNoTriangle;
+      if (hit != kNoTriangle) {
+        out.add("input segment ", seg, " (", ia, ", ", ib, ") is not covered by subsegments between vertices ", u,
+                " and ", w, " (the gap runs into triangle ", hit, ")");
+        break;
       }
-      runs.push_back(run);
-    };
-    addRun(a);
-    addRun(b);
-    for (const auto& entry : graph) addRun(entry.first);
-    std::sort(runs.begin(), runs.end(), [](const Run& x, const Run& y) { return x.lo < y.lo; });
-    // Whether the segment's point at parameter t is within the tolerance of a carrier. Within a
-    // cluster smaller than the tolerance, vertices of other chains count as on the segment and the
-    // order of the runs means little; what the segment needs is a carrier near each of its points.
-    auto nearCarrier = [&](double t) {
-      const double p[2] = {ax + t * dx, ay + t * dy};
-      for (std::uint32_t k : carriers) {
-        const double* u = s.p(m.segments[2 * k]);
-        const double* w = s.p(m.segments[2 * k + 1]);
-        const double ex = w[0] - u[0], ey = w[1] - u[1], e2 = ex * ex + ey * ey;
-        const double f = e2 > 0 ? std::clamp(((p[0] - u[0]) * ex + (p[1] - u[1]) * ey) / e2, 0.0, 1.0) : 0.0;
-        if (std::hypot(p[0] - u[0] - f * ex, p[1] - u[1] - f * ey) <= tol) return true;
-      }
-      return false;
-    };
-    const Run* reach = &runs.front();
-    for (const Run& next : runs) {
-      if (next.lo > reach->hi) {
-        const std::uint32_t u = reach->last, w = next.first;
-        const bool bridged = carrierEdges.count(undirectedKey(u, w)) || maps.subsegments.count(undirectedKey(u, w)) ||
-                             nearCarrier((reach->hi + next.lo) / 2);
-        const std::uint32_t hit = bridged ? kNoTriangle : gapInDomain(s, grid, u, w);
-        if (hit != kNoTriangle) {
-          out.add("input segment ", seg, " (", ia, ", ", ib, ") is not covered by subsegments between vertices ", u,
-                  " and ", w, " (the gap runs into triangle ", hit, ")");
-          break;
-        }
-      }
-      if (next.hi > reach->hi) reach = &next;
     }
   }
 }
