@@ -503,8 +503,10 @@ constexpr std::uint32_t kNoTriangle = 0xffffffffu;
 // end and leaves it again). A stretch that leaves the domain within `tol` of a vertex only touches it.
 std::uint32_t gapInDomain(const Scaled& s, const TriangleIndex& grid, std::uint32_t u, std::uint32_t w, double tol) {
   const double mid[2] = {(s.p(u)[0] + s.p(w)[0]) / 2, (s.p(u)[1] + s.p(w)[1]) / 2};
+  // On the domain's boundary (one triangle holds it, on an edge), a rounded midpoint proves nothing:
+  // a stretch an ulp or two outside the domain can round onto the boundary; the corners decide.
   const auto hits = grid.containing(mid, false);
-  if (!hits.empty()) return hits[0];
+  if (hits.size() > 1 || (hits.size() == 1 && !grid.containing(mid, true).empty())) return hits[0];
   for (const auto& [from, to] : {std::pair{u, w}, std::pair{w, u}})
     for (std::uint32_t t : grid.containing(s.p(from), false)) {
       const int i = s.v(t, 0) == from ? 0 : s.v(t, 1) == from ? 1 : s.v(t, 2) == from ? 2 : -1;
