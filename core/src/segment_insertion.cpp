@@ -200,8 +200,9 @@ class SegmentInserter {
       throw Error(ErrorCode::Internal, "too many crossing repairs near " + segName(id));
     const std::uint32_t l = t_.origin(h), r = t_.dest(h);
     const std::int32_t other = t_.con[h];
+    const double shorter = std::sqrt(std::min(length2(a, b), length2(l, r)));
     double q[2];
-    crossingPoint(a, b, id, l, r, other, q);
+    crossingPoint(a, b, id, l, r, other, shorter, q);
     // Segments crossing a hair from an axis can round the crossing to a coordinate below the exact
     // predicates' range (y = 5e-40 with the extent 1.5). The point is rounded anyway, so 0 serves;
     // and it must be one the output's user units hold exactly (inputs near the subnormal range).
@@ -216,7 +217,6 @@ class SegmentInserter {
     // segment left that segment uncovered (found by fuzzing: four input points within 1e-19 of the
     // extent, and a crossing moved onto the one off the shorter segment); one behind it turned the
     // chain back on itself, and the repairs looped (found by a sweep of tiny clusters).
-    const double shorter = std::sqrt(std::min(length2(a, b), length2(l, r)));
     std::uint32_t w = kNone;
     double nearest = kSnap;
     for (std::uint32_t c : {l, r, a, b}) {
@@ -274,11 +274,12 @@ class SegmentInserter {
            std::fabs(orient2d(pu, pw, p)) <= tol * std::hypot(pw[0] - pu[0], pw[1] - pu[1]);
   }
 
-  // Where segment `id` (now the piece a-b) crosses segment `other` (the piece l-r). Computed from
+  // Where segment `id` (now the piece a-b) crosses segment `other` (the piece l-r; `shorter` is the
+  // shorter piece's length, as in crossConstraint). Computed from
   // the two whole input segments, lower index first, so the point does not depend on the order
   // of insertion.
   void crossingPoint(std::uint32_t a, std::uint32_t b, std::int32_t id, std::uint32_t l, std::uint32_t r,
-                     std::int32_t other, double q[2]) const {
+                     std::int32_t other, double shorter, double q[2]) const {
     std::uint32_t p0 = a, p1 = b, q0 = l, q1 = r;
     if (id >= 0 && other >= 0) {
       const Plc& plc = *m_.plc;
@@ -309,7 +310,6 @@ class SegmentInserter {
     };
     // The whole-segment crossing is used only if it lies on both pieces (up to rounding); after
     // earlier repairs bent a chain, the pieces' own crossing is the right one.
-    const double shorter = std::sqrt(std::min(length2(a, b), length2(l, r)));
     if (intersect(p0, p1, q0, q1, q) && onPiece(q, a, b, shorter) && onPiece(q, l, r, shorter)) return;
     if (intersect(a, b, l, r, q)) return;
     q[0] = (t_.xy[2 * a] + t_.xy[2 * b]) / 2;  // degenerate: the walk said they cross; use the middle

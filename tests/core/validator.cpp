@@ -583,9 +583,8 @@ void checkSegmentCoverage(const Scaled& s, const EdgeMaps& maps, const ValidateO
       return std::fabs((s.p(v)[0] - ax) * dy - (s.p(v)[1] - ay) * dx) / len <= tol;
     };
     auto onSegment = [&](std::uint32_t v) {
-      const double dist = std::fabs((s.p(v)[0] - ax) * dy - (s.p(v)[1] - ay) * dx) / len;
       const double t = param(v);
-      return dist <= tol && t * len >= -tol && (t - 1) * len <= tol;
+      return withinTolerance(v) && t * len >= -tol && (t - 1) * len <= tol;
     };
 
     for (std::uint32_t k : subsegmentsOf[seg])
