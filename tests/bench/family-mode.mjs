@@ -21,7 +21,8 @@ export function parseFamilyArgs(argv) {
   };
   const numbers = (text) => text.split(',').filter(Boolean).map(Number);
   const names = (text) => text.split(',').filter(Boolean);
-  const partial = ['--families', '--only', '--angles', '--ruppert-only-angles', '--placements'].some((f) => argv.includes(f));
+  // Placements are written one file each, so choosing some is still a full run of those.
+  const partial = ['--families', '--only', '--angles', '--ruppert-only-angles'].some((f) => argv.includes(f));
   return {
     dir: resolve(get('--dir', '')),
     families: names(get('--families', '')),
