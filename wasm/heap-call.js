@@ -41,18 +41,20 @@ function heapView(m, Type) {
 const utf8 = new TextDecoder();
 
 // The messages of `count` items (and the kinds' names), when there are any.
-const textsFromHeap = (count, bytes) => (count > 0 ? utf8.decode(bytes).split('\0') : []);
+const textsFromHeap = (count, bytes) => (count > 0 ? utf8.decode(bytes()).split('\0') : []);
 
 // One object literal per item (its shape fixed, so building 10^5 of them stays cheap; a kind number
 // is made a small integer before it indexes an array, which a double key would make a slow lookup).
-function reasonsFromHeap(count, numbers, bytes, kindBytes) {
+function reasonsFromHeap(count, numberView, bytes, kindBytes) {
+  const numbers = count > 0 ? numberView() : null;
   const messages = textsFromHeap(count, bytes), kinds = textsFromHeap(count, kindBytes);
   const reasons = [];
   for (let i = 0; i < count; i++) reasons.push({ kind: kinds[numbers[2 * i] | 0], count: numbers[2 * i + 1], message: messages[i] });
   return reasons;
 }
 
-function noticesFromHeap(count, numbers, bytes, kindBytes) {
+function noticesFromHeap(count, numberView, bytes, kindBytes) {
+  const numbers = count > 0 ? numberView() : null;
   const messages = textsFromHeap(count, bytes), kinds = textsFromHeap(count, kindBytes);
   const notices = [];
   for (let i = 0, k = 0; i < count; i++, k += 5) {
@@ -81,7 +83,8 @@ function readMesh(m) {
   for (const [name, Type, view] of ARRAYS) {
     const address = table[k++], length = table[k++];
     const start = address / Type.BYTES_PER_ELEMENT;
-    if (view) arrays[name] = heapView(m, Type).subarray(start, start + length);
+    // A view is made only when there is something to read (most calls have no reasons or notices).
+    if (view) arrays[name] = () => heapView(m, Type).subarray(start, start + length);
     else arrays[name] = length > 0 ? heapView(m, Type).slice(start, start + length) : new Type(0);
   }
   const indexBase = table[k++], complete = table[k++] === 1;
