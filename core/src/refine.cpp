@@ -200,6 +200,15 @@ class Refiner {
     bad_.push(t_, s, skinny, shortest2, q.sin2MinAngle);
   }
 
+  // Checked before every insertion, so that a budget of k inserts at most k vertices (0: none).
+  // The loop also stops once k are in (outOfBudget), so any k > 0 gives the first k insertions of
+  // the unbounded run.
+  bool mayInsert() {
+    if (inserted_ < budget_) return true;
+    budgetHit_ = true;
+    return false;
+  }
+
   bool outOfBudget() {
     if (inserted_ >= budget_) {
       budgetHit_ = true;
@@ -383,6 +392,7 @@ class Refiner {
       ++floorHits_;
       return false;
     }
+    if (!mayInsert()) return false;
     const std::int32_t segment = t_.con[h] >= 0 ? t_.con[h] : -1;
     const double x = split[0], y = split[1];
     const std::uint32_t v = m_.addVertex(x, y, VertexKind::SegmentSplit, segment);
@@ -501,6 +511,7 @@ class Refiner {
 
   void insertSteiner(const BadTriangle& bt, const double* target, const Location& loc, VertexKind kind,
                      const CavityRef& known) {
+    if (!mayInsert()) return;
     const std::uint32_t v = m_.addVertex(target[0], target[1], kind, -1);
     corner_.push_back(0);
     if (!insertAt(v, loc, known)) {
