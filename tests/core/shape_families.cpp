@@ -88,6 +88,13 @@ class PlcBuilder {
   ruppert::Plc plc_;
 };
 
+// A PLC of one closed polygon, its inside the domain.
+GeneratedPlc simplePolygon(const std::vector<Pt>& ring) {
+  PlcBuilder b;
+  const double area = b.ring(ring);
+  return b.done(area);
+}
+
 double distance(Pt a, Pt b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
 // Places up to `count` disks of radius drawn by radius() with centres drawn by centre(), each at
@@ -103,6 +110,18 @@ std::vector<std::pair<Pt, double>> scatterDisks(int count, double clearance, Rad
     if (free) disks.emplace_back(c, r);
   }
   return disks;
+}
+
+// A hole in every disk: a regular polygon of minSides..maxSides sides inscribed in it, turned at
+// random, with its seed at the centre. Returns the holes' total area.
+double punchHoles(PlcBuilder& b, Random& random, const std::vector<std::pair<Pt, double>>& disks, int minSides, int maxSides) {
+  double area = 0;
+  for (const auto& [c, r] : disks) {
+    const int sides = random.integer(minSides, maxSides);
+    area += b.ring(regularPolygon(c, r, sides, random.range(0, kPi)));
+    b.hole(c);
+  }
+  return area;
 }
 
 }  // namespace
@@ -124,9 +143,7 @@ GeneratedPlc skyline(std::uint64_t seed, int buildings) {
     previous = h;
   }
   ring.push_back({x, 0});
-  PlcBuilder b;
-  const double area = b.ring(ring);
-  return b.done(area);
+  return simplePolygon(ring);
 }
 
 // A bar whose top is cut by narrow rectangular slots of random depths and widths.
@@ -141,9 +158,7 @@ GeneratedPlc combOfSlots(std::uint64_t seed, int slots) {
     ring.insert(ring.end(), {{left + width, height}, {left + width, bottom}, {left, bottom}, {left, height}});
   }
   ring.push_back({0, height});
-  PlcBuilder b;
-  const double area = b.ring(ring);
-  return b.done(area);
+  return simplePolygon(ring);
 }
 
 // A star with hundreds of spikes of random lengths: sharp tips (small input angles) and reflex
@@ -153,12 +168,11 @@ GeneratedPlc spikyStar(std::uint64_t seed, int spikes) {
   std::vector<Pt> ring;
   for (int k = 0; k < spikes; ++k) {
     const double step = 2 * kPi / spikes;
-    ring.push_back(polar({0, 0}, random.range(0.75, 1.0), step * (k + random.range(-0.15, 0.15))));
+    const double tip = random.range(0.75, 1.0), shift = random.range(-0.15, 0.15);  // drawn in this order
+    ring.push_back(polar({0, 0}, tip, step * (k + shift)));
     ring.push_back(polar({0, 0}, random.range(0.55, 0.7), step * (k + 0.5)));
   }
-  PlcBuilder b;
-  const double area = b.ring(ring);
-  return b.done(area);
+  return simplePolygon(ring);
 }
 
 // A long rectangular channel with round obstacles (polygonal holes), some of them close to each
@@ -173,12 +187,8 @@ GeneratedPlc channelWithObstacles(std::uint64_t seed, int obstacles) {
     return Pt{random.range(margin, length - margin), random.range(margin, 1 - margin)};
   };
   PlcBuilder b;
-  double area = b.ring({{0, 0}, {length, 0}, {length, 1}, {0, 1}});
-  for (const auto& [c, r] : scatterDisks(obstacles, clearance, radius, centre)) {
-    area -= b.ring(regularPolygon(c, r, random.integer(12, 40), random.range(0, kPi)));
-    b.hole(c);
-  }
-  return b.done(area);
+  const double area = b.ring({{0, 0}, {length, 0}, {length, 1}, {0, 1}});
+  return b.done(area - punchHoles(b, random, scatterDisks(obstacles, clearance, radius, centre), 12, 40));
 }
 
 namespace {
@@ -249,9 +259,7 @@ GeneratedPlc serpentineCorridor(std::uint64_t seed, int walls) {
     ring.insert(ring.end(), {{spans[i].second, height}, {spans[i].second, gap}, {spans[i].first, gap}, {spans[i].first, height}});
   }
   ring.push_back({0, height});
-  PlcBuilder b;
-  const double area = b.ring(ring);
-  return b.done(area);
+  return simplePolygon(ring);
 }
 
 namespace {
@@ -304,12 +312,8 @@ GeneratedPlc perforatedDisk(std::uint64_t seed, int holes) {
     }
   };
   PlcBuilder b;
-  double area = b.ring(regularPolygon({0, 0}, 1, sides, 0));
-  for (const auto& [c, r] : scatterDisks(holes, clearance, radius, centre)) {
-    area -= b.ring(regularPolygon(c, r, random.integer(3, 8), random.range(0, kPi)));
-    b.hole(c);
-  }
-  return b.done(area);
+  const double area = b.ring(regularPolygon({0, 0}, 1, sides, 0));
+  return b.done(area - punchHoles(b, random, scatterDisks(holes, clearance, radius, centre), 3, 8));
 }
 
 // An ellipse whose boundary is cut by sharp radial V notches (opening 3 to 25 degrees, depth 15%
@@ -335,9 +339,7 @@ GeneratedPlc vNotchedOutline(std::uint64_t seed, int notches) {
       ring.push_back(onEllipse(from + (to - from) * a / (arcPoints + 1)));
     }
   }
-  PlcBuilder b;
-  const double area = b.ring(ring);
-  return b.done(area);
+  return simplePolygon(ring);
 }
 
 // A long thin strip (length 5-12, height 0.05-0.2) with bumps on both long sides: triangles,
@@ -368,10 +370,20 @@ GeneratedPlc stripWithBumps(std::uint64_t seed, int bumps) {
   std::vector<Pt> top = side(h, 1);
   ring.insert(ring.end(), top.rbegin(), top.rend());
   ring.push_back({0, h});
-  PlcBuilder b;
-  const double area = b.ring(ring);
-  return b.done(area);
+  return simplePolygon(ring);
 }
+
+namespace {
+
+// Roughly normal on [-1.5, 1.5]: the sum of three uniforms, each drawn in its own statement.
+double bellCurve(Random& random) {
+  double sum = random.unit();
+  sum += random.unit();
+  sum += random.unit();
+  return sum - 1.5;
+}
+
+}  // namespace
 
 // The unit square with points inside it: uniform ones and tight clusters.
 GeneratedPlc pointCloudInSquare(std::uint64_t seed, int points) {
@@ -386,8 +398,8 @@ GeneratedPlc pointCloudInSquare(std::uint64_t seed, int points) {
     Pt p{random.range(0.001, 0.999), random.range(0.001, 0.999)};
     if (random.chance(0.6)) {  // a cluster point: sum of three uniforms, roughly normal
       const Pt& c = centres[std::size_t(random.integer(0, int(centres.size()) - 1))];
-      p = {c.x + spread * (random.unit() + random.unit() + random.unit() - 1.5),
-           c.y + spread * (random.unit() + random.unit() + random.unit() - 1.5)};
+      const double dx = bellCurve(random), dy = bellCurve(random);
+      p = {c.x + spread * dx, c.y + spread * dy};
       if (p.x <= 0.001 || p.x >= 0.999 || p.y <= 0.001 || p.y >= 0.999) continue;
     }
     if (!taken.emplace(std::make_pair(snap(p.x), snap(p.y)), true).second) continue;
@@ -414,7 +426,8 @@ GeneratedPlc nestedRings(std::uint64_t seed, int rings) {
     }
     const double inner = r * random.range(0.55, 0.85);
     const double room = r * std::cos(kPi / sides) - inner;  // what the next ring may move
-    const Pt next = polar(c, room * random.range(0, 0.4), random.range(0, 2 * kPi));
+    const double offset = room * random.range(0, 0.4), direction = random.range(0, 2 * kPi);
+    const Pt next = polar(c, offset, direction);
     if (i % 2 == 1) {
       // A hole annulus: its seed on the ray from the inner centre, between the two rings.
       const double outerReach = r * std::cos(kPi / sides) - distance(next, c);
@@ -523,8 +536,9 @@ void addOutline(const Bitmap& bm, double shear, PlcBuilder& b) {
         if (!edge(s)) { ++s; continue; }
         int e = s + 1;
         while (e < along && edge(e) && !crossed(e)) ++e;
-        if (pass == 0) b.segment(vertex(s, line), vertex(e, line));
-        else b.segment(vertex(line, s), vertex(line, e));
+        const std::uint32_t from = pass == 0 ? vertex(s, line) : vertex(line, s);  // numbered in this order
+        const std::uint32_t to = pass == 0 ? vertex(e, line) : vertex(line, e);
+        b.segment(from, to);
         s = e;
       }
   }
@@ -608,7 +622,10 @@ GeneratedPlc squareWithCracks(std::uint64_t seed, int cracks) {
   }
   PlcBuilder b;
   b.ring({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
-  for (const auto& [p, q] : kept) b.segment(b.point(p), b.point(q));
+  for (const auto& [p, q] : kept) {
+    const std::uint32_t from = b.point(p);  // numbered in this order
+    b.segment(from, b.point(q));
+  }
   return b.done(1.0);
 }
 

@@ -5,7 +5,9 @@
 // Every member is a valid PLC: segments meet only at shared endpoints, no point lies on a segment
 // it is not an end of, no two points coincide, and every hole has a seed strictly inside it.
 // Deterministic on every platform: the draws come from SplitMix64 mapped to values by this code
-// (no std::*_distribution, whose algorithms differ between standard libraries), and every
+// (no std::*_distribution, whose algorithms differ between standard libraries), each in a statement
+// of its own or a braced list (C++ leaves the order of calls among function arguments open, and
+// GCC and Clang take them in opposite orders), and every
 // coordinate, hole seed and region seed is rounded to a multiple of 2^-20, so an ulp of difference
 // in a library's sin or cos cannot change the output (and integer translations are exact).
 #pragma once
