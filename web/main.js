@@ -12,6 +12,7 @@ import { findTriangle, triangleShape } from './mesh-geometry.js';
 import { DEFAULT_PRESET, PRESETS, presetDrawing } from './presets.js';
 import { Renderer, legendEntries } from './render.js';
 import { showStats } from './stats-panel.js';
+import { StepReplay } from './step-replay.js';
 import { Stepper } from './stepper.js';
 import { MAX_HASH_LENGTH, decodeDrawing, encodeDrawing } from './url-state.js';
 import { View } from './view.js';
@@ -36,6 +37,7 @@ const app = {
   notices: [],
   colorMode: 'angle',
   stepMode: false,
+  stepMesh: null,       // step mode: the mesh of the step on screen (StepReplay), else null
   hoverTriangle: -1,
   writtenHash: '',
   viewMoved: false,     // set by the editor on pan and zoom
@@ -90,7 +92,8 @@ function scheduleDraw() {
 }
 
 function draw() {
-  const step = app.stepMode && app.mesh?.events ? { mesh: app.mesh, events: app.mesh.events, index: stepper.index } : null;
+  const step = app.stepMode && app.mesh?.events
+    ? { final: app.mesh, events: app.mesh.events, index: stepper.index, shown: app.stepMesh } : null;
   renderer.draw({
     view,
     drawing: app.drawing,
@@ -217,11 +220,13 @@ const scheduler = new MeshScheduler({
     app.meshedPlc = request.plc;
     app.notices = mesh.notices;
     app.hoverTriangle = -1;
+    app.stepMesh = null;
     renderer.setMesh(mesh);
     showStats(statElements, mesh);
     showNotices(mesh.notices);
     updateLegend();
-    stepper.setEvents(app.stepMode ? mesh.events : null);
+    replay.reset(request.plc, request.options, app.stepMode ? mesh : null);
+    stepper.setEvents(app.stepMode ? mesh.events : null, { points: mesh.points, minAngle: request.options.minAngle });
     const s = mesh.stats;
     const summary = `${s.triangles.toLocaleString('en-US')} triangles, ${s.vertices.toLocaleString('en-US')} vertices, ` +
       `min angle ${s.minAngle.toFixed(2)}° in ${s.milliseconds.toFixed(1)} ms`;
@@ -263,8 +268,10 @@ function clearMesh() {
   app.notices = [];
   app.hoverTriangle = -1;
   $('hover-info').hidden = true;
+  app.stepMesh = null;
   renderer.setMesh(null);
   showStats(statElements, null);
+  replay.clear();
   stepper.setEvents(null);
   updateLegend();
 }
@@ -297,14 +304,16 @@ function hover(world) {
     scheduleDraw();
     return;
   }
-  const t = findTriangle(app.mesh, world.x, world.y, app.hoverTriangle);
+  // In step mode the mesh on screen is that of the step shown.
+  const mesh = app.stepMesh ?? app.mesh;
+  const t = findTriangle(mesh, world.x, world.y, app.hoverTriangle);
   app.hoverTriangle = t;
   if (t < 0) {
     info.hidden = true;
   } else {
-    const shape = triangleShape(app.mesh, t);
-    const kinds = shape.vertices.map((v) => `${v} ${VERTEX_KINDS[app.mesh.vertexKinds[v]] ?? '?'}`);
-    const attribute = app.mesh.triangleAttributes[t];
+    const shape = triangleShape(mesh, t);
+    const kinds = shape.vertices.map((v) => `${v} ${VERTEX_KINDS[mesh.vertexKinds[v]] ?? '?'}`);
+    const attribute = mesh.triangleAttributes[t];
     info.textContent = `Triangle ${t}: angles ${shape.angles.map((a) => `${a.toFixed(2)}°`).join(', ')}; ` +
       `radius-edge ratio ${shape.radiusEdge.toFixed(3)}; area ${shape.area.toPrecision(4)}; ` +
       `vertices ${kinds.join(', ')}${attribute ? `; attribute ${attribute}` : ''}`;
@@ -335,7 +344,7 @@ function shortcut(key) {
     case ',': if (app.stepMode) stepper.step(-1); return app.stepMode;
     case '.': if (app.stepMode) stepper.step(1); return app.stepMode;
     case 'home': if (app.stepMode) stepper.go(0); return app.stepMode;
-    case 'end': if (app.stepMode) stepper.go(stepper.count - 1); return app.stepMode;
+    case 'end': if (app.stepMode) stepper.go(stepper.count); return app.stepMode;
     default: return false;
   }
 }
@@ -470,15 +479,38 @@ $('color-mode').addEventListener('change', () => {
   scheduleDraw();
 });
 
+// The mesh of each step, meshed on demand; shown when it is still the step wanted.
+const replay = new StepReplay((k, mesh) => {
+  if (!app.stepMode || k !== stepper.index) return;
+  app.stepMesh = mesh;
+  app.hoverTriangle = -1;
+  renderer.setMesh(mesh);
+  const { vertices, triangles, minAngle } = mesh.stats;
+  $('step-mesh').textContent = `Mesh at step ${k}: ${vertices.toLocaleString('en-US')} vertices, ` +
+    `${triangles.toLocaleString('en-US')} triangles, smallest angle ${minAngle.toFixed(2)}°`;
+  document.body.dataset.stepShown = String(k);
+  scheduleDraw();
+});
+
 const stepper = new Stepper({
   first: $('step-first'), back: $('step-back'), play: $('step-play'), forward: $('step-forward'),
   last: $('step-last'), scrub: $('step-scrub'), speed: $('step-speed'), info: $('step-info'),
-}, () => scheduleDraw());
+}, (k) => {
+  delete document.body.dataset.stepShown;
+  $('step-mesh').textContent = `Mesh at step ${k}: meshing…`;
+  replay.show(k);
+  scheduleDraw();
+});
 
 function setStepMode() {
   app.stepMode = $('step-mode').checked;
   $('stepper').hidden = !app.stepMode;
-  if (!app.stepMode) stepper.pause();
+  if (!app.stepMode) {
+    stepper.pause();
+    replay.clear();
+    app.stepMesh = null;
+    if (app.mesh) renderer.setMesh(app.mesh);
+  }
   // Events are recorded only on request (options.trace): mesh again.
   remesh(0);
   scheduleDraw();
