@@ -1,6 +1,9 @@
 // Drawing with the mouse and keyboard, meshing in the worker, parameters, undo, error display.
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
+import { init } from '../../wasm/index.js';
+import { toMeshOptions, toPlc } from '../../web/drawing.js';
+import { decodeDrawing } from '../../web/url-state.js';
 import {
   SCREENSHOTS, canvasFingerprint, clickCanvas, launch, moveOnCanvas, openPage, readStats, settle,
 } from './harness.mjs';
@@ -123,11 +126,25 @@ test('select, drag and delete a vertex; zoom with the wheel', async () => {
   const box = await page.locator('#canvas').boundingBox();
   await page.mouse.move(box.x + 520, box.y + 520);
   await page.mouse.down();
-  await page.mouse.move(box.x + 580, box.y + 560, { steps: 5 });
+  // The mesh follows the vertex while it moves: meshes arrive before the button is released.
+  const meshesBefore = await page.evaluate(() => Number(document.body.dataset.meshCount ?? 0));
+  for (let i = 1; i <= 12; i++) {
+    await page.mouse.move(box.x + 520 + 5 * i, box.y + 520 + 3 * i);
+    await page.waitForTimeout(40);
+  }
+  const meshesDuring = await page.evaluate(() => Number(document.body.dataset.meshCount ?? 0));
+  assert.ok(meshesDuring - meshesBefore >= 2, `${meshesDuring - meshesBefore} meshes during the drag`);
   await page.mouse.up();
   assert.equal(await settle(page), 'done');
   assert.notEqual(await page.evaluate(() => location.hash), hashBefore, 'the drag moved a vertex');
   assert.notDeepEqual(await readStats(page), before);
+  // The last mesh is of the last position: the drawing in the link, meshed by the package here,
+  // gives the same counts.
+  const dragged = await readStats(page);
+  const drawing = decodeDrawing(await page.evaluate(() => location.hash));
+  const expected = (await init()).triangulate(toPlc(drawing), toMeshOptions(drawing)).stats;
+  assert.equal(dragged.triangles, expected.triangles, 'the last position was meshed last');
+  assert.equal(dragged.vertices, expected.vertices, 'the last position was meshed last');
 
   // Delete the hole seed (the hole fills), then an inner vertex (its two segments go with it).
   await clickCanvas(page, ...HOLE);
