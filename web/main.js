@@ -4,7 +4,7 @@
 // worker) -> onMeshed: renderer, stats, stepper, notices, postMessage to a host.
 import { DEFAULT_OPTIONS, cloneDrawing, drawingBounds, emptyDrawing, fromPlc, pointCount, toMeshOptions, toPlc, Item } from './drawing.js';
 import { Editor, TOOL_HINTS } from './editor.js';
-import { isEmbedded, listenForLoad, postError, postMeshed } from './embed.js';
+import { isEditable, isEmbedded, listenToHost, postError, postMeshed, postStepped } from './embed.js';
 import { canvasBlob, download, exportText, parseInput, parsePolyText } from './files.js';
 import { History } from './history.js';
 import { MeshScheduler } from './mesh-scheduler.js';
@@ -13,8 +13,8 @@ import { DEFAULT_PRESET, PRESETS, presetDrawing } from './presets.js';
 import { Renderer, legendEntries } from './render.js';
 import { showStats } from './stats-panel.js';
 import { StepReplay } from './step-replay.js';
-import { Stepper } from './stepper.js';
-import { MAX_HASH_LENGTH, decodeDrawing, encodeDrawing } from './url-state.js';
+import { Stepper, describeEvent } from './stepper.js';
+import { MAX_HASH_LENGTH, decodeDrawing, decodePageState, encodeDrawing, encodePageState } from './url-state.js';
 import { View } from './view.js';
 
 const $ = (id) => document.getElementById(id);
@@ -26,6 +26,7 @@ const view = new View();
 const renderer = new Renderer(canvas);
 const embedded = isEmbedded();
 if (embedded) document.body.classList.add('embed');
+const readOnly = !isEditable();
 
 const app = {
   canvas,
@@ -38,6 +39,7 @@ const app = {
   colorMode: 'angle',
   stepMode: false,
   stepMesh: null,       // step mode: the mesh of the step on screen (StepReplay), else null
+  pendingStep: null,    // a step to show once the mesh with its trace arrives (link, host)
   hoverTriangle: -1,
   writtenHash: '',
   viewMoved: false,     // set by the editor on pan and zoom
@@ -55,6 +57,7 @@ const app = {
 };
 const history = new History(app.drawing);
 const editor = new Editor(app);
+editor.readOnly = readOnly;
 
 // ---------------------------------------------------------------- status
 function setStatus(text, kind = 'info') {
@@ -92,6 +95,7 @@ function scheduleDraw() {
 }
 
 function draw() {
+  if (app.viewMoved) writeHashSoon();
   const step = app.stepMode && app.mesh?.events
     ? { final: app.mesh, events: app.mesh.events, index: stepper.index, shown: app.stepMesh } : null;
   renderer.draw({
@@ -170,8 +174,15 @@ function updateButtons() {
 }
 
 function writeHash() {
-  const hash = encodeDrawing(app.drawing);
+  const state = encodePageState({
+    step: app.stepMode ? stepper.index : null,
+    color: app.colorMode,
+    view: app.viewMoved ? { x: view.centerX, y: view.centerY, scale: view.scale } : null,
+  });
+  const hash = `${encodeDrawing(app.drawing)}${state}`;
   const base = `${location.pathname}${location.search}`;
+  // The embed's link to the full page carries the same state.
+  $('open-full').href = `${location.pathname}#${hash}`;
   if (hash.length > MAX_HASH_LENGTH) {
     app.writtenHash = '';
     window.history.replaceState(null, '', base);
@@ -179,6 +190,14 @@ function writeHash() {
   }
   app.writtenHash = `#${hash}`;
   if (location.hash !== app.writtenHash) window.history.replaceState(null, '', `${base}#${hash}`);
+}
+
+// Steps, pans and zooms change the link too, but at most a few times a second (browsers throttle
+// history.replaceState calls).
+let hashTimer = null;
+function writeHashSoon() {
+  if (hashTimer !== null) return;
+  hashTimer = setTimeout(() => { hashTimer = null; writeHash(); }, 300);
 }
 
 function readHash() {
@@ -236,10 +255,11 @@ const scheduler = new MeshScheduler({
     // A result that a newer, still debounced request will replace is shown, but not 'done'.
     document.body.dataset.meshState = scheduler.queued ? 'queued' : 'done';
     document.body.dataset.meshCount = String(Number(document.body.dataset.meshCount ?? 0) + 1);
-    postMeshed(mesh);
+    postMeshed(mesh, request.id);
+    showPendingStep();
     scheduleDraw();
   },
-  onError(error) {
+  onError(error, request) {
     stopProgress();
     if (error?.code === 'CANCELLED') {
       setStatus('Meshing cancelled. Change the drawing or a parameter to mesh again.', 'warn');
@@ -250,7 +270,7 @@ const scheduler = new MeshScheduler({
     setStatus(`Cannot mesh this drawing: ${error?.message ?? error}`, 'error');
     showNotices([], error);
     document.body.dataset.meshState = scheduler.queued ? 'queued' : 'error';
-    postError(error);
+    postError(error, request?.id ?? null);
     scheduleDraw();
   },
 });
@@ -290,7 +310,20 @@ function remesh(delay) {
   }
   // 'queued' until the result of this very request arrives (tests and hosts can wait for 'done').
   document.body.dataset.meshState = 'queued';
-  scheduler.request(toPlc(app.drawing), toMeshOptions(app.drawing, { trace: app.stepMode }), delay);
+  scheduler.request(toPlc(app.drawing), toMeshOptions(app.drawing, { trace: app.stepMode }), delay, hostId);
+  hostId = null;
+}
+
+// The id of a host's 'ruppert:load', given to the mesh request it causes (and echoed in the reply).
+let hostId = null;
+
+/** Shows the step a link or a host asked for, once the mesh with the trace is there. */
+function showPendingStep() {
+  if (app.pendingStep === null || !app.stepMode || !app.mesh?.events) return;
+  const k = app.pendingStep;
+  app.pendingStep = null;
+  stepper.pause();
+  stepper.go(k);
 }
 
 $('cancel').addEventListener('click', () => scheduler.cancel());
@@ -476,6 +509,7 @@ function updateLegend() {
 $('color-mode').addEventListener('change', () => {
   app.colorMode = $('color-mode').value;
   updateLegend();
+  writeHash();
   scheduleDraw();
 });
 
@@ -489,6 +523,11 @@ const replay = new StepReplay((k, mesh) => {
   $('step-mesh').textContent = `Mesh at step ${k}: ${vertices.toLocaleString('en-US')} vertices, ` +
     `${triangles.toLocaleString('en-US')} triangles, smallest angle ${minAngle.toFixed(2)}°`;
   document.body.dataset.stepShown = String(k);
+  const events = app.mesh.events;
+  postStepped({
+    index: k, total: stepper.count, vertices, triangles,
+    event: k > 0 ? describeEvent(events, k - 1, { points: app.mesh.points, minAngle: app.drawing.options.minAngle }) : null,
+  });
   scheduleDraw();
 });
 
@@ -497,6 +536,7 @@ const stepper = new Stepper({
   last: $('step-last'), scrub: $('step-scrub'), speed: $('step-speed'), info: $('step-info'),
 }, (k) => {
   delete document.body.dataset.stepShown;
+  writeHashSoon();
   $('step-mesh').textContent = `Mesh at step ${k}: meshing…`;
   replay.show(k);
   scheduleDraw();
@@ -656,24 +696,55 @@ $('copy-link').addEventListener('click', async () => {
 });
 
 // ---------------------------------------------------------------- embedding
-listenForLoad(async ({ poly, options }) => {
-  const failed = loading();
-  try {
-    const plc = await parsePolyText(poly, '<ruppert:load>');
-    const merged = { ...DEFAULT_OPTIONS, ...app.drawing.options };
-    if (options.minAngle !== undefined) merged.minAngle = Math.min(60, Math.max(0, options.minAngle));
-    if (options.maxArea !== undefined) merged.maxArea = options.maxArea > 0 ? options.maxArea : null;
-    setDrawing(fromPlc(plc, merged));
-  } catch (error) {
-    failed();
-    setStatus(`Could not load the posted drawing: ${error.message}`, 'error');
-    postError(error);
-  }
+listenToHost({
+  async onLoad({ poly, options, id }) {
+    const failed = loading();
+    try {
+      const plc = await parsePolyText(poly, '<ruppert:load>');
+      hostId = id;
+      setDrawing(fromPlc(plc, { ...DEFAULT_OPTIONS, ...app.drawing.options, ...options }));
+    } catch (error) {
+      failed();
+      setStatus(`Could not load the posted drawing: ${error.message}`, 'error');
+      postError(error, id);
+    }
+  },
+  onStep(index) {
+    if (!app.stepMode) {
+      app.pendingStep = index;
+      $('step-mode').checked = true;
+      setStepMode();
+    } else if (app.mesh?.events) {
+      stepper.pause();
+      stepper.go(index);
+    } else {
+      app.pendingStep = index;  // the mesh with the trace is still on its way
+    }
+  },
 });
 
 // ---------------------------------------------------------------- start
 const initial = readHash() ?? { ...presetDrawing(DEFAULT_PRESET), options: { ...DEFAULT_OPTIONS } };
+const pageState = decodePageState(location.hash);
 if (!location.hash) $('preset').value = DEFAULT_PRESET;
-setTool('polyline');
+if (pageState.color) {
+  $('color-mode').value = pageState.color;
+  app.colorMode = pageState.color;
+}
+if (pageState.step !== null) {  // step mode from the link: one mesh, with its trace
+  $('step-mode').checked = true;
+  app.stepMode = true;
+  $('stepper').hidden = false;
+  app.pendingStep = pageState.step;
+}
+setTool(readOnly ? 'select' : 'polyline');
+if (readOnly) $('tool-hint').textContent = 'View only: drag to pan, wheel or +/- to zoom, hover a triangle for its angles.';
 setDrawing(initial, { commit: false });
+if (pageState.view) {
+  view.centerX = pageState.view.x;
+  view.centerY = pageState.view.y;
+  view.scale = pageState.view.scale;
+  app.viewMoved = true;
+  scheduleDraw();
+}
 updateLegend();

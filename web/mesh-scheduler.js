@@ -28,9 +28,13 @@ export class MeshScheduler {
     this.generation = 0;
   }
 
-  /** Meshes `plc` with `options` after `delay` ms (0: now), or once the running mesh is done. */
-  request(plc, options, delay = DEBOUNCE_MS) {
-    this.waiting = { plc, options };
+  /**
+   * Meshes `plc` with `options` after `delay` ms (0: now), or once the running mesh is done.
+   * `id` (a host's request id) rides along to onResult/onError; a request that replaces a waiting
+   * one keeps its id when it has none.
+   */
+  request(plc, options, delay = DEBOUNCE_MS, id = null) {
+    this.waiting = { plc, options, id: id ?? this.waiting?.id ?? null };
     if (this.running !== null) {
       if (performance.now() - this.running.started > ABORT_AFTER_MS) this.startWaiting();
       return;
