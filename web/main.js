@@ -9,7 +9,7 @@ import { canvasBlob, download, exportText, parseInput, parsePolyText } from './f
 import { History } from './history.js';
 import { MeshScheduler } from './mesh-scheduler.js';
 import { findTriangle, triangleShape } from './mesh-geometry.js';
-import { DEFAULT_PRESET, PRESETS, presetDrawing } from './presets.js';
+import { DEFAULT_PRESET, PRESETS, findPreset } from './presets.js';
 import { Renderer, legendEntries } from './render.js';
 import { showStats } from './stats-panel.js';
 import { StepReplay } from './step-replay.js';
@@ -44,7 +44,7 @@ const app = {
   writtenHash: '',
   viewMoved: false,     // set by the editor on pan and zoom
   changed: ({ commit }) => {
-    if (commit) $('preset').value = '';  // an edit on the canvas: no longer the preset
+    if (commit) notPreset();  // an edit on the canvas: no longer the preset
     changed(commit);
   },
   redraw: () => scheduleDraw(),
@@ -158,7 +158,7 @@ function setDrawing(drawing, { commit = true, fit = true } = {}) {
 function restore(drawing) {
   if (drawing === null) return;
   app.drawing = drawing;
-  $('preset').value = '';
+  notPreset();
   editor.reset();
   syncOptionFields();
   writeHash();
@@ -263,6 +263,11 @@ const scheduler = new MeshScheduler({
     stopProgress();
     if (error?.code === 'CANCELLED') {
       setStatus('Meshing cancelled. Change the drawing or a parameter to mesh again.', 'warn');
+      // The mesh on screen is an older one: its panel must not claim it answers the new request.
+      if (app.mesh) {
+        $('stat-complete').textContent = 'cancelled: the mesh shown is of the previous drawing or parameters';
+        $('stat-complete').className = 'bad';
+      }
       document.body.dataset.meshState = scheduler.queued ? 'queued' : 'cancelled';
       return;
     }
@@ -410,6 +415,7 @@ function syncOptionFields() {
   const o = app.drawing.options;
   minAngleRange.value = String(o.minAngle);
   minAngleNumber.value = String(o.minAngle);
+  $('min-angle-warning').hidden = !(o.minAngle > 34);
   $('max-area').value = o.maxArea > 0 ? String(o.maxArea) : '';
   $('placement').value = o.placement;
   $('max-steiner').value = Number.isInteger(o.maxSteiner) ? String(o.maxSteiner) : '';
@@ -425,6 +431,7 @@ function setMinAngle(value, commit) {
   }
   minAngleNumber.removeAttribute('aria-invalid');
   app.drawing.options.minAngle = value;
+  $('min-angle-warning').hidden = !(value > 34);
   changed(commit);
 }
 // The slider re-meshes while it moves and records an undo step once it rests (browsers differ in
@@ -577,9 +584,31 @@ $('preset').addEventListener('change', () => {
     loadSharedPreset(value.slice(SHARED_PRESET.length));
     return;
   }
-  const drawing = presetDrawing(value);
-  if (drawing) setDrawing({ ...drawing, options: { ...app.drawing.options } });
+  applyPreset(findPreset(value), app.drawing.options);
 });
+
+/** Loads a preset: its drawing, its options over `base`, its caption, and step mode if it asks. */
+function applyPreset(preset, base) {
+  showCaption(preset?.caption ?? '');
+  if (!preset) return;
+  if (preset.steps && !app.stepMode) {
+    $('step-mode').checked = true;
+    app.stepMode = true;
+    $('stepper').hidden = false;
+  }
+  setDrawing({ ...preset.build(), options: { ...base, ...(preset.options ?? {}) } });
+}
+
+/** The drawing is no longer a preset (edited, a file, a message): the box and caption say so. */
+function notPreset() {
+  $('preset').value = '';
+  showCaption('');
+}
+
+function showCaption(text) {
+  $('preset-caption').textContent = text;
+  $('preset-caption').hidden = text === '';
+}
 
 // The corpus of real PLCs beside the repository (../shared/data), when the server offers it
 // (web/serve.mjs does; a plain static host does not, and the group is simply absent).
@@ -612,6 +641,7 @@ async function loadSharedPreset(name) {
     const response = await fetch(`../shared-data/${encodeURIComponent(name)}`, { cache: 'no-cache' });
     if (!response.ok) throw new Error(`the server answered ${response.status}`);
     const plc = await parseInput(await response.text(), name);
+    showCaption('');
     setDrawing(fromPlc(plc, app.drawing.options));
     $('preset').value = SHARED_PRESET + name;
     setStatus(`Loaded ${name}: ${plc.points.length / 2} points, ${plc.segments.length / 2} segments.`, 'ok');
@@ -634,6 +664,7 @@ async function loadFile(file) {
   try {
     const text = await file.text();
     const plc = await parseInput(text, file.name);
+    notPreset();
     setDrawing(fromPlc(plc, app.drawing.options));
     setStatus(`Loaded ${file.name}: ${plc.points.length / 2} points, ${plc.segments.length / 2} segments.`, 'ok');
   } catch (error) {
@@ -702,6 +733,7 @@ listenToHost({
     try {
       const plc = await parsePolyText(poly, '<ruppert:load>');
       hostId = id;
+      notPreset();
       setDrawing(fromPlc(plc, { ...DEFAULT_OPTIONS, ...app.drawing.options, ...options }));
     } catch (error) {
       failed();
@@ -724,9 +756,9 @@ listenToHost({
 });
 
 // ---------------------------------------------------------------- start
-const initial = readHash() ?? { ...presetDrawing(DEFAULT_PRESET), options: { ...DEFAULT_OPTIONS } };
+const linked = readHash();
 const pageState = decodePageState(location.hash);
-if (!location.hash) $('preset').value = DEFAULT_PRESET;
+if (!linked) $('preset').value = DEFAULT_PRESET;
 if (pageState.color) {
   $('color-mode').value = pageState.color;
   app.colorMode = pageState.color;
@@ -739,7 +771,12 @@ if (pageState.step !== null) {  // step mode from the link: one mesh, with its t
 }
 setTool(readOnly ? 'select' : 'polyline');
 if (readOnly) $('tool-hint').textContent = 'View only: drag to pan, wheel or +/- to zoom, hover a triangle for its angles.';
-setDrawing(initial, { commit: false });
+if (linked) setDrawing(linked, { commit: false });
+else {
+  const preset = findPreset(DEFAULT_PRESET);
+  showCaption(preset.caption ?? '');
+  setDrawing({ ...preset.build(), options: { ...DEFAULT_OPTIONS, ...(preset.options ?? {}) } }, { commit: false });
+}
 if (pageState.view) {
   view.centerX = pageState.view.x;
   view.centerY = pageState.view.y;
