@@ -76,7 +76,7 @@ test('keyboard only: tools, zoom, step mode, and a visible focus ring', async ()
   await page.keyboard.press('s');
   assert.equal(await page.isChecked('#step-mode'), true);
   assert.equal(await settle(page), 'done');
-  assert.match(await page.locator('#step-info').textContent(), /^Event 1 of \d+|No refinement events/);
+  assert.match(await page.locator('#step-info').textContent(), /^Step 0 of \d+: .*before refinement|No refinement events/);
   await page.keyboard.press('s');
   assert.equal(await page.isChecked('#step-mode'), false);
   await page.keyboard.press('g');
