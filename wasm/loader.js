@@ -12,10 +12,18 @@ function defaultWasmUrl() {
   if (import.meta.url === undefined) return new URL('ruppert.wasm', classicScriptUrl);
   // Written literally so that bundlers that copy assets (vite, webpack) see it and copy the file.
   const url = new URL('./dist/ruppert.wasm', import.meta.url);
-  // A bundler that copies no assets (esbuild) leaves it relative to the bundle: then, as the README
-  // says, ruppert.wasm is expected beside the bundle rather than in a dist/ folder below it.
-  const bundled = !new URL(import.meta.url).pathname.endsWith('/loader.js');
-  return bundled && url.pathname.endsWith('/dist/ruppert.wasm') ? new URL('../ruppert.wasm', url) : url;
+  // A bundler that copies no assets (esbuild) leaves that URL as it is, relative to the bundle: then,
+  // as the README says, ruppert.wasm is expected beside the bundle rather than in a dist/ below it.
+  const inPackage = new URL(import.meta.url).pathname.endsWith('/loader.js');
+  const rewritten = url.href !== besideThisModule('./dist/ruppert.wasm').href;
+  return inPackage || rewritten ? url : besideThisModule('./ruppert.wasm');
+}
+
+// new URL(file, import.meta.url) as the platform resolves it, out of bundlers' sight: webpack
+// rewrites that form even with a variable first argument, so the base goes through a variable too.
+function besideThisModule(file) {
+  const here = import.meta.url;
+  return new URL(file, here);
 }
 
 function loadFailure(url, reason, cause) {

@@ -2,7 +2,8 @@
 // `npm run test:bundlers`: the package as users bundle it. `npm pack`, install the tarball and
 // vite, webpack 5 and esbuild into one temporary app, build app/src/main.js with each (no bundler
 // configuration beyond the entry; esbuild gets the .wasm copied beside the bundle, as the README
-// says), serve each output on 127.0.0.1 and run it in Debian's Chromium: a mesh on the main
+// says), serve each output on 127.0.0.1 (and the sources through vite's development server) and
+// run it in Debian's Chromium: a mesh on the main
 // thread, a worker mesh with progress, a cancel and a request after it, and the two load
 // failures (a missing .wasm, a missing worker script) named with their URL and HTTP status.
 // Set RUPPERT_KEEP_TMP=1 to keep the folder for inspection.
@@ -14,7 +15,7 @@ import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { CHROMIUM } from '../browser/harness.mjs';
-import { serveFolder } from './serve-folder.mjs';
+import { serveFolder, startViteDev } from './serve-folder.mjs';
 
 // The versions measured in /work/shared/GUIDE.md; pinned so that CI does not change under us.
 const BUNDLERS = ['vite@8.4.0', 'webpack@5.113.0', 'webpack-cli@7.3.1', 'esbuild@0.28.2'];
@@ -61,6 +62,8 @@ const BUILDS = {
     writeFileSync(join(app, 'out/esbuild-iife/index.html'), page('<script src="main.js"></script>'));
   },
 };
+// vite's development server (`vite`), which serves the package through its dependency optimizer.
+const VITE_DEV = 'vite (development server)';
 const OUT = { vite: 'out/vite', webpack: 'out/webpack', 'esbuild (esm)': 'out/esbuild-esm',
   'esbuild (iife, its default format)': 'out/esbuild-iife' };
 
@@ -83,7 +86,7 @@ function assertNoNodeImports(out) {
   }
 }
 
-function checkResults(results, url) {
+function checkResults(results, url, devServer) {
   assert.deepEqual(Object.keys(results.mainThread).sort(), ['complete', 'minAngle', 'triangles'],
     `main thread: ${JSON.stringify(results.mainThread)}`);
   assert.ok(results.mainThread.triangles > 100 && results.mainThread.complete && results.mainThread.minAngle >= 30);
@@ -94,13 +97,20 @@ function checkResults(results, url) {
   assert.ok(worker.afterCancel.complete && worker.afterCancel.triangles > 10, 'a request after the cancel');
   const { wasm, workerScript } = results.loadFailures;
   assert.equal(wasm.code, 'IO_ERROR', JSON.stringify(wasm));
-  assert.match(wasm.message, new RegExp(`${url}no-such-file\\.wasm: HTTP 404`));
   assert.equal(workerScript.code, 'IO_ERROR', JSON.stringify(workerScript));
-  assert.match(workerScript.message, new RegExp(`${url}no-such-worker\\.js: HTTP 404`));
+  if (devServer) {
+    // vite's development server answers an unknown path with its index.html (HTTP 200).
+    assert.match(wasm.message, new RegExp(`${url}no-such-file\\.wasm: not a WebAssembly module .*served as text/html`));
+    assert.match(workerScript.message, new RegExp(`${url}no-such-worker\\.js: it loads \\(HTTP 200, text/html\\)`));
+  } else {
+    assert.match(wasm.message, new RegExp(`${url}no-such-file\\.wasm: HTTP 404`));
+    assert.match(workerScript.message, new RegExp(`${url}no-such-worker\\.js: HTTP 404`));
+  }
 }
 
 async function runInBrowser(browser, name) {
-  const server = await serveFolder(join(app, OUT[name]));
+  const devServer = name === VITE_DEV;
+  const server = devServer ? await startViteDev(bin('vite'), app) : await serveFolder(join(app, OUT[name]));
   const tab = await browser.newPage();
   const problems = [];
   tab.on('pageerror', (error) => problems.push(`pageerror: ${error.message}`));
@@ -113,7 +123,7 @@ async function runInBrowser(browser, name) {
     await tab.waitForFunction(() => window.ruppertResults !== undefined, null, { timeout: 120_000 });
     const results = await tab.evaluate(() => window.ruppertResults);
     assert.deepEqual(problems, []);
-    checkResults(results, server.url);
+    checkResults(results, server.url, devServer);
     console.log(`${name}: ok ${JSON.stringify(results.mainThread)}, worker ${results.worker.mesh.triangles} triangles, ` +
       `${results.worker.progressCalls} progress calls, cancel ${results.worker.cancelled.code}`);
     console.log(`  ${results.loadFailures.wasm.message}\n  ${results.loadFailures.workerScript.message}`);
@@ -130,7 +140,7 @@ for (const [name, build] of Object.entries(BUILDS)) {
 }
 const browser = await chromium.launch({ executablePath: CHROMIUM, args: ['--no-sandbox', '--disable-gpu'] });
 let failed = false;
-for (const name of Object.keys(BUILDS)) {
+for (const name of [...Object.keys(BUILDS), VITE_DEV]) {
   try {
     await runInBrowser(browser, name);
   } catch (error) {
