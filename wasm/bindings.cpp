@@ -389,6 +389,15 @@ val readPlc(std::string text, std::string format, std::string name) {
   });
 }
 
+// A .poly declaring 0 points with the text of the .node file that holds them.
+val readPolyWithNode(std::string polyText, std::string polyName, std::string nodeText, std::string nodeName) {
+  return guarded([&] {
+    val out = val::object();
+    out.set("plc", plcToJs(ruppert::parsePolyWithNode(polyText, nodeText, polyName, nodeName)));
+    return out;
+  });
+}
+
 // format: "node", "ele", "poly", "json" or "svg". `input` may be null (no holes or regions).
 val writeMesh(val meshJs, val inputJs, std::string format) {
   return guarded([&] {
@@ -581,6 +590,7 @@ EMSCRIPTEN_BINDINGS(ruppert) {
   emscripten::function("stagedFailure", &stagedFailure);
   emscripten::function("stagedExtras", &stagedExtras);
   emscripten::function("readPlc", &readPlc);
+  emscripten::function("readPolyWithNode", &readPolyWithNode);
   emscripten::function("writeMesh", &writeMesh);
   emscripten::function("parseCliArgs", &parseCliArgs);
   emscripten::function("allocatedBytes", &allocatedBytes);

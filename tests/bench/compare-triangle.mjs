@@ -7,6 +7,15 @@
 //   node tests/bench/compare-triangle.mjs [--runs N] [--timeout SECONDS] [--only SUBSTRING]
 //        [--angles 20,30,33] [--ruppert-only-angles 35,38,40] [--sizes 1e-4,...] [--no-native] [--no-write]
 //        [--placement offcenter|circumcenter|petal]   (ruppert's Steiner placement; default offcenter)
+//   node tests/bench/compare-triangle.mjs --dir DIR [--families a,b] [--placements default,petal]
+//        [--angles 20,25,30,33] [--ruppert-only-angles 35,38,40] [--ruppert-timeout 30] [--timeout 10]
+//        [--only SUBSTRING] [--no-triangle-cache] [--write | --no-write]
+//   (family mode, see family-mode.mjs: the shape families written by
+//   `build-native/tests/write_shape_families DIR`, per family and placement; placement "default" is
+//   the library's own default. Writes tests/bench/results/families-<placement>.{md,json} on a full
+//   run, or a partial one (any filter) with --write. A quick re-measure of ruppert only, with
+//   Triangle's counts from DIR/triangle-cache.json:
+//   node tests/bench/compare-triangle.mjs --dir /tmp/families --placements default --angles 30,33)
 //
 // For every clean .poly in the shared data folder and every angle it meshes the same PLC with
 // Triangle (switches -pzQq<angle>, plus -a when a region carries an area bound) and with ruppert
@@ -28,6 +37,8 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { Worker, isMainThread, parentPort } from 'node:worker_threads';
+import { runFamilies } from './family-mode.mjs';
+import { nonExemptMinAngle } from './mesh-exemptions.mjs';
 
 const require = createRequire(import.meta.url);
 const repoRoot = fileURLToPath(new URL('../../', import.meta.url));
@@ -106,13 +117,13 @@ async function runWorker() {
     const mesher = await init();
     mesh = (plc, job) => {
       const m = mesher.triangulate(plc, job.options);
-      return {
-        points: m.points, triangles: m.triangles,
-        extra: {
-          complete: m.complete, reasons: m.reasons.map((r) => `${r.kind}:${r.count}`),
-          notices: m.notices.length, statMinAngle: m.stats.minAngle, coreMs: m.stats.milliseconds,
-        },
+      const extra = {
+        complete: m.complete, reasons: m.reasons.map((r) => `${r.kind}:${r.count}`),
+        notices: m.notices.length, statMinAngle: m.stats.minAngle, coreMs: m.stats.milliseconds,
       };
+      // Family mode: the smallest angle over the triangles the chapter does not exempt.
+      if (job.judge) ({ minAngle: extra.nonExemptMin, exempt: extra.exempt } = nonExemptMinAngle(m, plc));
+      return { points: m.points, triangles: m.triangles, extra };
     };
   }
   parentPort.postMessage({ type: 'ready' });
@@ -125,13 +136,13 @@ async function runWorker() {
         const t0 = performance.now();
         out = mesh(job.plc, job);
         const ms = performance.now() - t0;
-        if (i > 0) {
+        if (i > 0 || job.runs === 0) {  // runs 0: the single first run is the time
           times.push(ms);
           if (out.extra) coreTimes.push(out.extra.coreMs);
         }
         parentPort.postMessage({ type: 'tick' });
         // A call slower than a second is neither warm-up- nor noise-bound: its first run is the time.
-        if (i === 0 && ms > 1000) {
+        if (i === 0 && ms > 1000 && job.runs > 0) {
           times.push(ms);
           if (out.extra) coreTimes.push(out.extra.coreMs);
           break;
@@ -429,6 +440,20 @@ async function main() {
   if (!existsSync(join(repoRoot, 'wasm/dist/ruppert.wasm'))) {
     console.error('compare-triangle: wasm/dist/ruppert.wasm is missing; build it first: node wasm/build-wasm.mjs');
     process.exitCode = 1;
+    return;
+  }
+  if (process.argv.includes('--dir')) {
+    const { init } = await import(new URL('../../wasm/index.js', import.meta.url));
+    const cpus = (await import('node:os')).cpus();
+    const meta = {
+      date: new Date().toISOString().slice(0, 10), node: `Node ${process.version}`,
+      cpu: `${cpus.length} x ${cpus[0]?.model ?? 'unknown CPU'}`, ruppert: gitDescription(), triangleWasm: triangleWasmVersion,
+      command: `node tests/bench/compare-triangle.mjs ${process.argv.slice(2).join(' ')}`.trim(),
+    };
+    const log = (text) => process.stderr.write(`${text}\n`);
+    await runFamilies(process.argv.slice(2), {
+      Engine, triangleWasmDir, triangleWasmVersion, reader: await init(), repoRoot, meta, log,
+    });
     return;
   }
   const dataDir = process.env.RUPPERT_SHARED_DATA ?? join(repoRoot, '../shared/data');

@@ -418,6 +418,26 @@ TEST_CASE("hole seeds outside the domain or on a segment", "[repair]") {
     const auto e = expectError(plc);
     CHECK(e.code() == ErrorCode::EmptyDomain);
     CHECK(mentionsWord(e.what(), "holes[0]"));
+    CHECK(std::string(e.what()).find("only region the segments enclose") != std::string::npos);
+  }
+  SECTION("inside the only closed polygon: the message says so, not that the boundary is open") {
+    Plc plc = square(1);
+    plc.holes = {0.5, 0.5};
+    const auto e = expectError(plc);
+    CHECK(e.code() == ErrorCode::EmptyDomain);
+    INFO(e.what());
+    CHECK(std::string(e.what()).find("only region the segments enclose") != std::string::npos);
+    CHECK(std::string(e.what()).find("not closed") == std::string::npos);
+  }
+  SECTION("among segments that enclose nothing: the hull is the hole's region") {
+    Plc plc;
+    plc.points = {0, 0, 10, 0, 10, 10, 0, 10};
+    plc.segments = {0, 1, 1, 2};
+    plc.holes = {5, 5};
+    const auto e = expectError(plc);
+    CHECK(e.code() == ErrorCode::EmptyDomain);
+    INFO(e.what());
+    CHECK(std::string(e.what()).find("enclose no region") != std::string::npos);
   }
 }
 
