@@ -15,6 +15,7 @@
 //   * triangulate() goes through the heap (wasm/heap-call.js and "triangulate() through the heap"
 //     below); readers, writers and the CLI parser use embind objects.
 #include <emscripten/bind.h>
+#include <emscripten/emscripten.h>
 #include <emscripten/val.h>
 #include <malloc.h>
 
@@ -59,23 +60,42 @@ val failure(const char* code, const std::string& message, bool reset = false) {
   return out;
 }
 
+// How a call failed: an ErrorCode name (or CALLBACK_FAILED, TOO_LARGE, INTERNAL), the message, and
+// whether JavaScript should start a fresh instance.
+struct Failure {
+  const char* code = "";
+  std::string message;
+  bool reset = false;
+};
+
+// Runs `body` and turns every way it can fail into `failed`; true if it succeeded.
+template <class Body>
+bool attempt(Body&& body, Failure& failed) {
+  try {
+    body();
+    return true;
+  } catch (const ruppert::Error& e) {
+    failed = {ruppert::errorCodeName(e.code()), e.what(), false};
+  } catch (const CallbackFailed&) {
+    failed = {"CALLBACK_FAILED", "a JavaScript callback failed", false};
+  } catch (const std::bad_alloc&) {
+    // The heap may now be grown to its 4 GB ceiling: ask JavaScript for a fresh instance.
+    failed = {"TOO_LARGE", "out of memory: the mesh does not fit in 4 GB of WebAssembly memory", true};
+  } catch (const std::exception& e) {
+    failed = {"INTERNAL", std::string("internal error: ") + e.what(), true};
+  } catch (...) {
+    failed = {"INTERNAL", "internal error: unknown exception", true};
+  }
+  return false;
+}
+
 // Runs `body` and turns every way it can fail into a failure object.
 template <class Body>
 val guarded(Body&& body) {
-  try {
-    return body();
-  } catch (const ruppert::Error& e) {
-    return failure(ruppert::errorCodeName(e.code()), e.what());
-  } catch (const CallbackFailed&) {
-    return failure("CALLBACK_FAILED", "a JavaScript callback failed");
-  } catch (const std::bad_alloc&) {
-    // The heap may now be grown to its 4 GB ceiling: ask JavaScript for a fresh instance.
-    return failure("TOO_LARGE", "out of memory: the mesh does not fit in 4 GB of WebAssembly memory", true);
-  } catch (const std::exception& e) {
-    return failure("INTERNAL", std::string("internal error: ") + e.what(), true);
-  } catch (...) {
-    return failure("INTERNAL", "internal error: unknown exception", true);
-  }
+  val out = val::undefined();
+  Failure failed;
+  if (attempt([&] { out = body(); }, failed)) return out;
+  return failure(failed.code, failed.message, failed.reset);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -102,24 +122,29 @@ ruppert::Plc plcFromJs(const val& js) {
   return plc;
 }
 
-ruppert::Options optionsFromJs(const val& js) {
-  ruppert::Options o;
-  o.minAngle = js["minAngle"].as<double>();
-  o.maxArea = js["maxArea"].as<double>();
-  // index.js sends -1 for "automatic"; anything else is a validated non-negative integer.
-  const double steiner = js["maxSteiner"].as<double>();
-  o.maxSteiner = steiner < 0 ? ruppert::kAutoSteinerBudget : static_cast<std::uint64_t>(steiner);
-  o.placement = static_cast<ruppert::Placement>(js["placement"].as<int>());
-  o.encroachment = static_cast<ruppert::Encroachment>(js["encroachment"].as<int>());
-  o.variant = static_cast<ruppert::Variant>(js["variant"].as<int>());
-  o.convexHull = js["convexHull"].as<bool>();
-  o.autoHoles = js["autoHoles"].as<bool>();
-  o.trace = js["trace"].as<bool>();
-  o.sizeMeasure = js["sizeMeasure"].as<bool>();
+// Options as wasm/heap-call.js writes them into the input table (OPTION_FIELDS there), one double
+// each: reading them as embind properties cost a JavaScript round trip per field and per call.
+constexpr int kOptionCount = 10;
 
-  // The JavaScript wrappers never throw: they return NaN (size) or -1 (progress) after storing
-  // the user's error, and we unwind with CallbackFailed.
-  const val size = js["sizeFunction"];
+ruppert::Options optionsFromTable(const double* v) {
+  ruppert::Options o;
+  o.minAngle = v[0];
+  o.maxArea = v[1];
+  // heap-call.js sends -1 for "automatic"; anything else is a validated non-negative integer.
+  o.maxSteiner = v[2] < 0 ? ruppert::kAutoSteinerBudget : static_cast<std::uint64_t>(v[2]);
+  o.placement = static_cast<ruppert::Placement>(static_cast<int>(v[3]));
+  o.encroachment = static_cast<ruppert::Encroachment>(static_cast<int>(v[4]));
+  o.variant = static_cast<ruppert::Variant>(static_cast<int>(v[5]));
+  o.convexHull = v[6] != 0;
+  o.autoHoles = v[7] != 0;
+  o.trace = v[8] != 0;
+  o.sizeMeasure = v[9] != 0;
+  return o;
+}
+
+// The JavaScript wrappers never throw: they return NaN (size) or -1 (progress) after storing
+// the user's error, and we unwind with CallbackFailed.
+void addCallbacks(ruppert::Options& o, const val& size, const val& progress) {
   if (!size.isUndefined() && !size.isNull()) {
     o.sizeFunction = [size](double x, double y) {
       const double area = size(x, y).as<double>();
@@ -127,7 +152,6 @@ ruppert::Options optionsFromJs(const val& js) {
       return area;
     };
   }
-  const val progress = js["onProgress"];
   if (!progress.isUndefined() && !progress.isNull()) {
     o.onProgress = [progress](const ruppert::Progress& p) {
       const int verdict = progress(static_cast<double>(p.insertedVertices),
@@ -137,7 +161,6 @@ ruppert::Options optionsFromJs(const val& js) {
       return verdict != 0;
     };
   }
-  return o;
 }
 
 ruppert::Mesh meshFromJs(const val& js) {
@@ -221,31 +244,49 @@ val eventsToJs(const std::vector<ruppert::Event>& events) {
   return o;
 }
 
-val reasonsToJs(const std::vector<ruppert::Reason>& list) {
-  val reasons = val::array();
-  for (const ruppert::Reason& r : list) {
-    val item = val::object();
-    item.set("kind", std::string(reasonKindName(r.kind)));
-    item.set("count", static_cast<double>(r.count));
-    item.set("message", r.message);
-    reasons.call<void>("push", item);
-  }
-  return reasons;
+// Reasons and notices go through the heap too (see wasm/heap-call.js): numbers per item (the kind's
+// number first), one UTF-8 text of "message\0" per item, and the kinds' names, which JavaScript
+// decodes at once. An input with 10^5 duplicate points has 10^5 notices; an object built field by
+// field through embind cost microseconds each.
+void appendMessage(std::string& text, const std::string& message) {
+  const std::size_t start = text.size();
+  text.append(message).push_back('\0');
+  // A message never holds a NUL (the core writes them from numbers and names); were one to, it
+  // would shift every later item, so it is replaced.
+  const std::size_t end = text.size() - 1;  // the message's own terminator
+  for (std::size_t i = text.find('\0', start); i < end; i = text.find('\0', i + 1)) text[i] = ' ';
 }
 
-val noticesToJs(const std::vector<ruppert::Notice>& list) {
-  val notices = val::array();
-  for (const ruppert::Notice& n : list) {
-    val item = val::object();
-    item.set("kind", std::string(noticeKindName(n.kind)));
-    item.set("a", static_cast<double>(n.a));
-    item.set("b", static_cast<double>(n.b));
-    item.set("x", n.x);
-    item.set("y", n.y);
-    item.set("message", n.message);
-    notices.call<void>("push", item);
+// "NAME0\0NAME1\0...": the name of every kind, in the enum's order.
+template <class Kind>
+const std::string& kindNames(const char* (*name)(Kind)) {
+  static const std::string names = [name] {
+    std::string text;
+    for (int k = 0; std::string(name(static_cast<Kind>(k))) != "UNKNOWN"; ++k) text.append(name(static_cast<Kind>(k))).push_back('\0');
+    return text;
+  }();
+  return names;
+}
+
+// numbers: kind, count per reason.
+void reasonsToTable(const std::vector<ruppert::Reason>& list, std::vector<double>& numbers, std::string& text) {
+  numbers.clear(), text.clear();
+  for (const ruppert::Reason& r : list) {
+    numbers.insert(numbers.end(), {static_cast<double>(r.kind), static_cast<double>(r.count)});
+    appendMessage(text, r.message);
   }
-  return notices;
+}
+
+// numbers: kind, a, b, x, y per notice.
+void noticesToTable(const std::vector<ruppert::Notice>& list, std::vector<double>& numbers, std::string& text) {
+  numbers.clear(), text.clear();
+  numbers.reserve(5 * list.size());
+  text.reserve(48 * list.size());  // "points[i] duplicates points[j]; merged"
+  for (const ruppert::Notice& n : list) {
+    numbers.insert(numbers.end(),
+                   {static_cast<double>(n.kind), static_cast<double>(n.a), static_cast<double>(n.b), n.x, n.y});
+    appendMessage(text, n.message);
+  }
 }
 
 // `report` (used by wasm/cli.js) is { summary, stats, trace } booleans: the native CLI's texts for
@@ -348,6 +389,15 @@ val readPlc(std::string text, std::string format, std::string name) {
   });
 }
 
+// A .poly declaring 0 points with the text of the .node file that holds them.
+val readPolyWithNode(std::string polyText, std::string polyName, std::string nodeText, std::string nodeName) {
+  return guarded([&] {
+    val out = val::object();
+    out.set("plc", plcToJs(ruppert::parsePolyWithNode(polyText, nodeText, polyName, nodeName)));
+    return out;
+  });
+}
+
 // format: "node", "ele", "poly", "json" or "svg". `input` may be null (no holes or regions).
 val writeMesh(val meshJs, val inputJs, std::string format) {
   return guarded([&] {
@@ -374,21 +424,29 @@ val writeMesh(val meshJs, val inputJs, std::string format) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// triangulate() through the heap (wasm/heap-call.js): the input arrays are written by JavaScript
-// straight into the vectors of a staged Plc, and the output arrays are read back from a table of
-// addresses. A small mesh otherwise spends a third of its call in embind, one JavaScript round trip
-// per object field.
+// triangulate() through the heap (wasm/heap-call.js): the input arrays and the options are written
+// by JavaScript straight into a staged Plc and a table of numbers, and the output arrays (reasons and
+// notices included) are read back from a table of addresses. A small mesh otherwise spends most of
+// its call in embind, one JavaScript round trip per object field. Without callbacks the call goes
+// through plain exported functions (rp_*), which cost no more than any wasm call; embind is left for
+// callbacks, failures, traces and the CLI's texts.
 // ---------------------------------------------------------------------------------------------
-// Layout of outputTable(), read by wasm/heap-call.js: nine (address, length) pairs, then scalars.
-constexpr int kOutputTableSize = 2 * 9 + 18;
+// Layout of the output table, read by wasm/heap-call.js (ARRAYS, then the scalars): fifteen
+// (address, length) pairs, then scalars.
+constexpr int kOutputArrays = 15;
+constexpr int kOutputTableSize = 2 * kOutputArrays + 18;
+constexpr int kInputArrays = 6;
 
 struct Staged {
   ruppert::Plc plc;
   std::vector<double> regions;  // x, y, attribute, maxArea per region
-  std::uintptr_t inputTable[6] = {};
+  // Addresses of the six input arrays (as doubles), then the options (optionsFromTable).
+  double inputTable[kInputArrays + kOptionCount] = {};
   ruppert::Mesh mesh;
-  std::vector<double> histogram;
+  std::vector<double> histogram, reasonNumbers, noticeNumbers;
+  std::string reasonText, noticeText;
   double outputTable[kOutputTableSize] = {};
+  Failure failed;
 };
 
 Staged& staged() {
@@ -397,17 +455,91 @@ Staged& staged() {
 }
 
 template <class T>
-std::uintptr_t sized(std::vector<T>& v, double length) {
+double sized(std::vector<T>& v, double length) {
   v.assign(static_cast<std::size_t>(length), T{});
   v.shrink_to_fit();  // the previous call's capacity is not kept
-  return reinterpret_cast<std::uintptr_t>(v.data());
+  return static_cast<double>(reinterpret_cast<std::uintptr_t>(v.data()));
 }
 
-// Sizes the staged input arrays (lengths in elements) and returns the address of six addresses where
-// JavaScript writes them: points (f64), segments (u32), holes (f64), regions (f64, 4 per region),
-// pointMarkers (i32), segmentMarkers (i32). 0 if they do not fit in memory.
-std::uintptr_t stageInput(double points, double segments, double holes, double regions, double pointMarkers,
-                          double segmentMarkers, int indexBase) {
+void writeOutputTable(Staged& s) {
+  const ruppert::Mesh& m = s.mesh;
+  const ruppert::Stats& st = m.stats;
+  s.histogram.assign(st.angleHistogram.begin(), st.angleHistogram.end());
+  reasonsToTable(m.reasons, s.reasonNumbers, s.reasonText);
+  noticesToTable(m.notices, s.noticeNumbers, s.noticeText);
+  double* t = s.outputTable;
+  auto array = [&t](const auto& v) {
+    *t++ = static_cast<double>(reinterpret_cast<std::uintptr_t>(v.data()));
+    *t++ = static_cast<double>(v.size());
+  };
+  array(m.points), array(m.triangles), array(m.neighbors), array(m.segments), array(m.segmentIds);
+  array(m.vertexKinds), array(m.triangleAttributes), array(m.pointMarkers), array(s.histogram);
+  array(s.reasonNumbers), array(s.reasonText), array(kindNames(&reasonKindName));
+  array(s.noticeNumbers), array(s.noticeText), array(kindNames(&noticeKindName));
+  for (double v : {double(m.indexBase), m.complete ? 1.0 : 0.0, double(m.reasons.size()), double(m.notices.size()),
+                   double(m.events.size()), double(st.vertices), double(st.triangles), st.minAngle, st.maxAngle,
+                   double(st.inputVertices), double(st.segmentVertices), double(st.interiorVertices),
+                   double(st.offCenterVertices), double(st.intersectionVertices), double(st.rejectedCircumcenters),
+                   st.lfsIntegral, st.trianglesPerLfsIntegral, st.milliseconds})
+    *t++ = v;
+}
+
+// Meshes the staged input with the staged options (plus callbacks, if any); true on success, else the
+// failure is in staged().failed.
+bool runStaged(const val* sizeFunction, const val* onProgress) {
+  Staged& s = staged();
+  // Moved out, so that the input is freed however this call ends.
+  ruppert::Plc plc = std::move(s.plc);
+  const std::vector<double> regions = std::move(s.regions);
+  s.plc = ruppert::Plc{}, s.regions = {};
+  return attempt(
+      [&] {
+        for (std::size_t i = 0; i + 3 < regions.size(); i += 4)
+          plc.regions.push_back(ruppert::Region{regions[i], regions[i + 1], regions[i + 2], regions[i + 3]});
+        ruppert::Options options = optionsFromTable(s.inputTable + kInputArrays);
+        if (sizeFunction != nullptr) addCallbacks(options, *sizeFunction, *onProgress);
+        s.mesh = ruppert::triangulate(plc, options);
+        writeOutputTable(s);
+      },
+      s.failed);
+}
+
+// Meshes the staged input with callbacks (JavaScript functions, or null). Returns null on success,
+// else a failure object.
+val triangulateStaged(val sizeFunction, val onProgress) {
+  if (runStaged(&sizeFunction, &onProgress)) return val::null();
+  const Failure& f = staged().failed;
+  return failure(f.code, f.message, f.reset);
+}
+
+// The failure of the last rp_triangulate().
+val stagedFailure() {
+  const Failure& f = staged().failed;
+  return failure(f.code, f.message, f.reset);
+}
+
+// The staged mesh's events when traced, and the CLI's texts when `report` is not null (see
+// reportToJs).
+val stagedExtras(val report, bool trace) {
+  return guarded([&] {
+    const ruppert::Mesh& mesh = staged().mesh;
+    val out = val::object();
+    if (trace) out.set("events", eventsToJs(mesh.events));
+    if (!report.isNull() && !report.isUndefined()) out.set("report", reportToJs(mesh, report));
+    return out;
+  });
+}
+
+}  // namespace
+
+// The plain exports of the hot path (Module._rp_*, no embind).
+extern "C" {
+
+// Sizes the staged input arrays (lengths in elements) and returns the address of the input table:
+// the addresses where JavaScript writes points (f64), segments (u32), holes (f64), regions (f64, 4 per
+// region), pointMarkers (i32), segmentMarkers (i32), then the options. 0 if they do not fit in memory.
+EMSCRIPTEN_KEEPALIVE std::uintptr_t rp_stage_input(double points, double segments, double holes, double regions,
+                                                   double pointMarkers, double segmentMarkers, int indexBase) {
   Staged& s = staged();
   try {
     s.mesh = ruppert::Mesh{};
@@ -426,57 +558,24 @@ std::uintptr_t stageInput(double points, double segments, double holes, double r
   return reinterpret_cast<std::uintptr_t>(s.inputTable);
 }
 
-// Meshes the staged input. Returns null on success (the mesh is then described by outputTable(), and
-// its reasons, notices, events and report by stagedExtras()), else a failure object.
-val triangulateStaged(val optionsJs) {
-  return guarded([&] {
-    Staged& s = staged();
-    // Moved out, so that the input is freed however this call ends.
-    ruppert::Plc plc = std::move(s.plc);
-    const std::vector<double> regions = std::move(s.regions);
-    s.plc = ruppert::Plc{}, s.regions = {};
-    for (std::size_t i = 0; i + 3 < regions.size(); i += 4)
-      plc.regions.push_back(ruppert::Region{regions[i], regions[i + 1], regions[i + 2], regions[i + 3]});
-    const ruppert::Options options = optionsFromJs(optionsJs);
-    s.mesh = ruppert::triangulate(plc, options);
-    const ruppert::Mesh& m = s.mesh;
-    const ruppert::Stats& st = m.stats;
-    s.histogram.assign(st.angleHistogram.begin(), st.angleHistogram.end());
-    double* t = s.outputTable;
-    auto array = [&t](const auto& v) {
-      *t++ = static_cast<double>(reinterpret_cast<std::uintptr_t>(v.data()));
-      *t++ = static_cast<double>(v.size());
-    };
-    array(m.points), array(m.triangles), array(m.neighbors), array(m.segments), array(m.segmentIds);
-    array(m.vertexKinds), array(m.triangleAttributes), array(m.pointMarkers), array(s.histogram);
-    for (double v : {double(m.indexBase), m.complete ? 1.0 : 0.0, double(m.reasons.size()), double(m.notices.size()),
-                     double(m.events.size()), double(st.vertices), double(st.triangles), st.minAngle, st.maxAngle,
-                     double(st.inputVertices), double(st.segmentVertices), double(st.interiorVertices),
-                     double(st.offCenterVertices), double(st.intersectionVertices), double(st.rejectedCircumcenters),
-                     st.lfsIntegral, st.trianglesPerLfsIntegral, st.milliseconds})
-      *t++ = v;
-    return val::null();
-  });
-}
+// Meshes the staged input without callbacks: 0 on success (the mesh is then described by the output
+// table), 1 on failure (stagedFailure() says what).
+EMSCRIPTEN_KEEPALIVE int rp_triangulate() { return runStaged(nullptr, nullptr) ? 0 : 1; }
 
-std::uintptr_t outputTable() { return reinterpret_cast<std::uintptr_t>(staged().outputTable); }
-
-// The staged mesh's reasons and notices, its events when traced, and the CLI's texts when `report`
-// is not null (see reportToJs).
-val stagedExtras(val report, bool trace) {
-  return guarded([&] {
-    const ruppert::Mesh& mesh = staged().mesh;
-    val out = val::object();
-    out.set("reasons", reasonsToJs(mesh.reasons));
-    out.set("notices", noticesToJs(mesh.notices));
-    if (trace) out.set("events", eventsToJs(mesh.events));
-    if (!report.isNull() && !report.isUndefined()) out.set("report", reportToJs(mesh, report));
-    return out;
-  });
-}
+EMSCRIPTEN_KEEPALIVE std::uintptr_t rp_output_table() { return reinterpret_cast<std::uintptr_t>(staged().outputTable); }
 
 // Frees the staged mesh once JavaScript has copied it out.
-void releaseStaged() { staged().mesh = ruppert::Mesh{}; }
+EMSCRIPTEN_KEEPALIVE void rp_release_staged() {
+  Staged& s = staged();
+  s.mesh = ruppert::Mesh{};
+  s.histogram = {}, s.reasonNumbers = {}, s.noticeNumbers = {};
+  s.reasonText = {}, s.noticeText = {};
+  s.failed = {};
+}
+
+}  // extern "C"
+
+namespace {
 
 // Bytes currently allocated by malloc: lets tests prove that repeated calls do not leak.
 double allocatedBytes() { return static_cast<double>(mallinfo().uordblks); }
@@ -487,12 +586,11 @@ void abortForTesting() { std::abort(); }
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(ruppert) {
-  emscripten::function("stageInput", &stageInput);
   emscripten::function("triangulateStaged", &triangulateStaged);
-  emscripten::function("outputTable", &outputTable);
+  emscripten::function("stagedFailure", &stagedFailure);
   emscripten::function("stagedExtras", &stagedExtras);
-  emscripten::function("releaseStaged", &releaseStaged);
   emscripten::function("readPlc", &readPlc);
+  emscripten::function("readPolyWithNode", &readPolyWithNode);
   emscripten::function("writeMesh", &writeMesh);
   emscripten::function("parseCliArgs", &parseCliArgs);
   emscripten::function("allocatedBytes", &allocatedBytes);

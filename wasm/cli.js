@@ -7,7 +7,7 @@
 // Exit status: 0 success, 1 invalid input, 2 usage error, 3 an output file could not be written.
 import { readFile, writeFile } from 'node:fs/promises';
 import { extname } from 'node:path';
-import { init, MeshError } from './index.js';
+import { init, MeshError } from './node.js';
 
 const EXIT_OK = 0;
 const EXIT_INVALID_INPUT = 1;

@@ -182,17 +182,31 @@ export declare const NO_NEIGHBOR: -1;
 export declare const NO_INPUT_SEGMENT: -1;
 
 export interface InitOptions {
-  /** Where dist/ruppert.wasm is served; default: next to the package's module. */
+  /**
+   * Where ruppert.wasm is served. Default: where vite or webpack put it; unbundled, the package's
+   * wasm/dist/ruppert.wasm; in a bundle of a bundler that copies no assets (esbuild), ruppert.wasm
+   * beside the bundle.
+   */
   wasmUrl?: string | URL;
   locateFile?: (file: string) => string;
   wasmBinary?: ArrayBuffer | ArrayBufferView;
   wasmModule?: WebAssembly.Module;
 }
 
+/** The second argument of parsePoly: a name for messages, or these. */
+export interface ParsePolyOptions {
+  /** Shown in error messages. Default '<poly>'. */
+  name?: string;
+  /** Text of the .node file holding the points of a .poly that declares 0 points (Triangle's split form). */
+  node?: string;
+  /** Shown in error messages about the .node text. Default '<node>'. */
+  nodeName?: string;
+}
+
 export interface Mesher {
   /** Meshes a PLC. Throws MeshError on input that cannot be repaired. */
   triangulate(plc: Plc, options?: TriangulateOptions): Mesh;
-  parsePoly(text: string, name?: string): ParsedPlc;
+  parsePoly(text: string, options?: string | ParsePolyOptions): ParsedPlc;
   parseNode(text: string, name?: string): ParsedPlc;
   parseJson(text: string, name?: string): ParsedPlc;
   toNode(mesh: Mesh): string;
@@ -209,7 +223,7 @@ export interface Mesher {
 export declare function init(options?: InitOptions): Promise<Mesher>;
 
 /** The helpers below use the most recently initialised mesher: `await init()` first. */
-export declare function parsePoly(text: string, name?: string): ParsedPlc;
+export declare function parsePoly(text: string, options?: string | ParsePolyOptions): ParsedPlc;
 export declare function parseNode(text: string, name?: string): ParsedPlc;
 export declare function parseJson(text: string, name?: string): ParsedPlc;
 export declare function toPoly(mesh: Mesh, input?: Plc): string;
@@ -232,5 +246,14 @@ export interface MeshWorker {
   terminate(): Promise<void>;
 }
 
+export interface MeshWorkerOptions extends Omit<InitOptions, 'locateFile'> {
+  /**
+   * Where ruppert's worker script is served, for setups that place it themselves (browsers: a
+   * module worker; Node: a file: URL of wasm/worker-node.js). Default: where vite or webpack put
+   * it; otherwise worker.js beside the module (or the bundle) that calls createMeshWorker.
+   */
+  workerUrl?: string | URL;
+}
+
 /** A mesher in a Web Worker (browsers) or a worker_threads worker (Node). */
-export declare function createMeshWorker(options?: InitOptions): MeshWorker;
+export declare function createMeshWorker(options?: MeshWorkerOptions): MeshWorker;

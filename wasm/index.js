@@ -8,6 +8,7 @@
 // goes stale when the wasm heap grows. See index.d.ts for every field.
 import { MeshError, ERROR_CODES } from './errors.js';
 import { compileWasm, instantiate } from './loader.js';
+import { rejectUnknownKeys } from './known-keys.js';
 import { createMesher } from './mesher.js';
 
 export { MeshError, ERROR_CODES };
@@ -23,6 +24,9 @@ export const EventKind = Object.freeze({ SEGMENT_SPLIT: 0, CIRCUMCENTER: 1, OFF_
 export const NO_NEIGHBOR = -1;
 /** mesh.segmentIds entry for a convex-hull edge that no input segment covers. */
 export const NO_INPUT_SEGMENT = -1;
+
+const INIT_KEYS = ['wasmUrl', 'locateFile', 'wasmBinary', 'wasmModule'];
+const invalidOption = (message) => new MeshError('INVALID_OPTION', message);
 
 let defaultMesher = null;  // Promise of the mesher for init() without options: loaded once
 let lastMesher = null;     // the most recent mesher, used by the top-level helpers below
@@ -44,6 +48,11 @@ export function init(options) {
   if (options !== undefined && (options === null || typeof options !== 'object')) {
     return Promise.reject(new MeshError('MALFORMED_INPUT', 'init(options): options must be an object'));
   }
+  try {
+    if (options !== undefined) rejectUnknownKeys(options, INIT_KEYS, 'init(options)', invalidOption);
+  } catch (error) {
+    return Promise.reject(error);
+  }
   if (options === undefined || Object.keys(options).length === 0) {
     if (defaultMesher === null) {
       defaultMesher = build({});
@@ -59,8 +68,12 @@ function loaded(name) {
   return lastMesher;
 }
 
-/** Reads Triangle's .poly text into a PLC (needs a prior `await init()`). */
-export const parsePoly = (text, name) => loaded('parsePoly').parsePoly(text, name);
+/**
+ * Reads Triangle's .poly text into a PLC (needs a prior `await init()`). The second argument is a
+ * name for messages, or { name, node, nodeName } with `node` the text of the .node file that holds
+ * the points of a .poly declaring 0 points.
+ */
+export const parsePoly = (text, options) => loaded('parsePoly').parsePoly(text, options);
 /** Reads Triangle's .node text into a PLC without segments. */
 export const parseNode = (text, name) => loaded('parseNode').parseNode(text, name);
 /** Reads the JSON input format into a PLC. */

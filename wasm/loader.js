@@ -4,28 +4,79 @@
 // (out of memory, a trap): instantiating an already compiled module is cheap and can be done
 // synchronously where the platform allows it (Node, workers).
 import createRuppertModule from './dist/ruppert.mjs';
-
-const isNode = typeof process === 'object' && typeof process.versions === 'object' &&
-  typeof process.versions.node === 'string';
+import { MeshError } from './errors.js';
+import { absoluteUrl, classicScriptUrl, getNodeHost } from './host.js';
 
 function defaultWasmUrl() {
-  // Written literally so that bundlers see the asset and copy it.
-  return new URL('./dist/ruppert.wasm', import.meta.url);
+  // A classic-script bundle (esbuild's default iife format) has no import.meta.url.
+  if (import.meta.url === undefined) return new URL('ruppert.wasm', classicScriptUrl);
+  // Written literally so that bundlers that copy assets (vite, webpack) see it and copy the file.
+  const url = new URL('./dist/ruppert.wasm', import.meta.url);
+  // A bundler that copies no assets (esbuild) leaves that URL as it is, relative to the bundle: then,
+  // as the README says, ruppert.wasm is expected beside the bundle rather than in a dist/ below it.
+  const inPackage = new URL(import.meta.url).pathname.endsWith('/loader.js');
+  const rewritten = url.href !== besideThisModule('./dist/ruppert.wasm').href;
+  return inPackage || rewritten ? url : besideThisModule('./ruppert.wasm');
+}
+
+// new URL(file, import.meta.url) as the platform resolves it, out of bundlers' sight: webpack
+// rewrites that form even with a variable first argument, so the base goes through a variable too.
+function besideThisModule(file) {
+  const here = import.meta.url;
+  return new URL(file, here);
+}
+
+function loadFailure(url, reason, cause) {
+  return new MeshError('IO_ERROR', `could not load the WebAssembly module ${absoluteUrl(url)}: ${reason}` +
+    ' (pass init({ wasmUrl }) to say where ruppert.wasm is served)', { cause });
+}
+
+// Node without the package's node entry (a direct import of wasm/index.js, as the benchmarks do).
+function builtinReadFile() {
+  const fs = globalThis.process?.getBuiltinModule?.('fs');
+  return fs ? (url) => fs.promises.readFile(url) : null;
+}
+
+async function compileBytes(bytes, url, contentType) {
+  try {
+    return await WebAssembly.compile(bytes);
+  } catch (cause) {
+    const served = contentType ? `, served as ${contentType}` : '';
+    throw loadFailure(url, `not a WebAssembly module (${cause.message}${served})`, cause);
+  }
+}
+
+async function readLocal(url) {
+  const readFile = getNodeHost()?.readFile ?? builtinReadFile();
+  if (readFile === null) throw loadFailure(url, 'file: URLs can only be read in Node');
+  let bytes;
+  try {
+    bytes = await readFile(new URL(url));
+  } catch (cause) {
+    throw loadFailure(url, cause.message, cause);
+  }
+  return compileBytes(bytes, url);
 }
 
 async function fetchAndCompile(url) {
-  if (isNode && String(url).startsWith('file:')) {
-    const { readFile } = await import(/* webpackIgnore: true */ /* @vite-ignore */ 'node:fs/promises');
-    return WebAssembly.compile(await readFile(new URL(url)));
+  if (String(url).startsWith('file:')) return readLocal(url);
+  let response;
+  try {
+    response = await fetch(url, { credentials: 'same-origin' });
+  } catch (cause) {
+    throw loadFailure(url, `the request failed (${cause.message})`, cause);
   }
-  const response = await fetch(url, { credentials: 'same-origin' });
-  if (!response.ok) throw new Error(`could not load ${url}: HTTP ${response.status}`);
+  if (!response.ok) throw loadFailure(url, `HTTP ${response.status}${response.statusText ? ` ${response.statusText}` : ''}`);
+  const contentType = response.headers.get('content-type') ?? '';
   // Streaming compilation needs the application/wasm MIME type; fall back when a server lacks it.
-  if (typeof WebAssembly.compileStreaming === 'function' &&
-      (response.headers.get('content-type') ?? '').startsWith('application/wasm')) {
-    return WebAssembly.compileStreaming(response);
+  if (typeof WebAssembly.compileStreaming === 'function' && contentType.startsWith('application/wasm')) {
+    try {
+      return await WebAssembly.compileStreaming(response);
+    } catch (cause) {
+      throw loadFailure(url, `not a WebAssembly module (${cause.message})`, cause);
+    }
   }
-  return WebAssembly.compile(await response.arrayBuffer());
+  return compileBytes(await response.arrayBuffer(), url, contentType);
 }
 
 /**
@@ -45,6 +96,9 @@ export async function compileWasm(options = {}) {
 function moduleArgument(instantiate) {
   return {
     instantiateWasm: instantiate,
+    // Never used for loading (instantiateWasm does that), but without it Emscripten's glue evaluates
+    // new URL('ruppert.wasm', import.meta.url), which throws where a bundle has no import.meta.url.
+    locateFile: (file) => file,
     // The binding reports every error itself; keep Emscripten from printing to the console.
     print: () => {},
     printErr: () => {},

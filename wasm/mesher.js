@@ -7,6 +7,7 @@
 import { MeshError } from './errors.js';
 import { triangulateInHeap } from './heap-call.js';
 import { instantiate, instantiateSync } from './loader.js';
+import { rejectUnknownKeys } from './known-keys.js';
 import { normalizeMesh, normalizeOptions, normalizePlc } from './validate.js';
 
 function describeReturn(value) {
@@ -122,6 +123,25 @@ export function createMesher(compiled, firstModule) {
     return check(call('readPlc', text, format, name)).plc;
   }
 
+  // parsePoly(text, name) or parsePoly(text, { name, node, nodeName }): `node` is the text of the
+  // .node file that holds the points of a .poly declaring 0 points (Triangle's split form).
+  function readPoly(text, options = '<poly>') {
+    if (typeof options === 'string') return read(text, 'poly', options, 'parsePoly');
+    if (options === null || typeof options !== 'object') {
+      throw new MeshError('MALFORMED_INPUT', 'parsePoly(text, options): options must be a name or { name, node, nodeName }');
+    }
+    rejectUnknownKeys(options, ['name', 'node', 'nodeName'], 'parsePoly\'s options',
+      (message) => new MeshError('INVALID_OPTION', message));
+    const { name = '<poly>', node, nodeName = '<node>' } = options;
+    if (node === undefined) return read(text, 'poly', name, 'parsePoly');
+    requireText(text, 'parsePoly');
+    requireText(node, 'parsePoly\'s options.node');
+    if (typeof name !== 'string' || typeof nodeName !== 'string') {
+      throw new MeshError('MALFORMED_INPUT', 'parsePoly: name and nodeName must be strings');
+    }
+    return check(call('readPolyWithNode', text, name, node, nodeName)).plc;
+  }
+
   function write(mesh, input, format) {
     const normalized = normalizeMesh(mesh);
     const plc = input == null ? null : normalizePlc(input);
@@ -134,7 +154,7 @@ export function createMesher(compiled, firstModule) {
     _triangulateWithReport: (plc, options, report) => triangulate(plc, options, report),
     /** For wasm/cli.js: the native CLI's argument parser. */
     _parseCliArgs: (args) => check(call('parseCliArgs', args)),
-    parsePoly: (text, name = '<poly>') => read(text, 'poly', name, 'parsePoly'),
+    parsePoly: (text, options) => readPoly(text, options),
     parseNode: (text, name = '<node>') => read(text, 'node', name, 'parseNode'),
     parseJson: (text, name = '<json>') => read(text, 'json', name, 'parseJson'),
     toNode: (mesh) => write(mesh, null, 'node'),

@@ -6,8 +6,11 @@
 // Value checks that need geometry (non-finite coordinates, duplicate points, hole placement) stay
 // in the core, which reports them with the same codes.
 import { MeshError } from './errors.js';
+import { nearestKey, rejectUnknownKeys } from './known-keys.js';
 
 const MAX_UINT32 = 0xffffffff;
+const PLC_KEYS = ['points', 'segments', 'holes', 'regions', 'pointMarkers', 'segmentMarkers', 'indexBase'];
+const REGION_KEYS = ['x', 'y', 'attribute', 'maxArea'];
 
 function describe(value) {
   if (value === undefined) return 'undefined';
@@ -117,6 +120,7 @@ export function normalizePlc(plc) {
   if (plc === null || typeof plc !== 'object' || Array.isArray(plc) || ArrayBuffer.isView(plc)) {
     throw invalid(`the input must be an object { points, segments, holes, regions }, got ${describe(plc)}`);
   }
+  rejectUnknownKeys(plc, PLC_KEYS, 'the input', invalid);
   if (plc.points === undefined) throw invalid('the input has no "points" array');
   const points = toFloat64(plc.points, 'points', { pairs: true });
   const pointCount = points.length / 2;
@@ -139,6 +143,7 @@ export function normalizePlc(plc) {
         if (r === undefined && !(i in plc.regions)) throw invalid(`regions[${i}] is missing (sparse array)`);
         throw invalid(`regions[${i}] = ${describe(r)} is not an object { x, y, attribute, maxArea }`);
       }
+      rejectUnknownKeys(r, REGION_KEYS, `regions[${i}]`, invalid);
       regions[4 * i] = regionNumber(r, i, 'x');
       regions[4 * i + 1] = regionNumber(r, i, 'y');
       regions[4 * i + 2] = regionNumber(r, i, 'attribute', 0);
@@ -167,6 +172,15 @@ const OPTION_KEYS = ['minAngle', 'maxArea', 'maxSteiner', 'sizeFunction', 'onPro
 
 function badOption(message) {
   return new MeshError('INVALID_OPTION', message);
+}
+
+// A number-valued option: the wrong type (or NaN) is named as such before any range check.
+function numberOption(options, key, fallback, meaning) {
+  const v = options[key] ?? fallback;
+  if (typeof v !== 'number' || Number.isNaN(v)) {
+    throw badOption(`${key} = ${describe(v)} is not a number (${meaning})`);
+  }
+  return v;
 }
 
 function booleanOption(options, key) {
@@ -203,22 +217,20 @@ export function normalizeOptions(options) {
   }
   for (const key of Object.keys(options)) {
     if (!OPTION_KEYS.includes(key)) {
-      const near = OPTION_KEYS.find((k) => k.toLowerCase() === key.toLowerCase().replace(/[-_]/g, ''));
+      const near = nearestKey(key, OPTION_KEYS);
       throw badOption(`unknown option '${key}'${near ? ` (did you mean '${near}'?)` : ''}`);
     }
   }
 
-  const minAngle = options.minAngle ?? 30;
-  if (typeof minAngle !== 'number' || !(minAngle >= 0 && minAngle <= 60)) {
+  const minAngle = numberOption(options, 'minAngle', 30, 'degrees in [0, 60]');
+  if (!(minAngle >= 0 && minAngle <= 60)) {
     throw badOption(`minAngle = ${describe(minAngle)} is outside [0, 60] degrees`);
   }
-  let maxArea = options.maxArea ?? 0;
-  if (typeof maxArea !== 'number' || Number.isNaN(maxArea) || maxArea < 0) {
-    throw badOption(`maxArea = ${describe(maxArea)} must be a number >= 0 (0: no bound)`);
-  }
+  let maxArea = numberOption(options, 'maxArea', 0, 'an area >= 0; 0: no bound');
+  if (maxArea < 0) throw badOption(`maxArea = ${describe(maxArea)} must be >= 0 (0: no bound)`);
   if (maxArea === Infinity) maxArea = 0;
-  let maxSteiner = options.maxSteiner ?? Infinity;
-  if (typeof maxSteiner !== 'number' || !(maxSteiner >= 0) ||
+  let maxSteiner = numberOption(options, 'maxSteiner', Infinity, 'a count of vertices, or Infinity');
+  if (!(maxSteiner >= 0) ||
       (maxSteiner !== Infinity && (!Number.isInteger(maxSteiner) || maxSteiner > Number.MAX_SAFE_INTEGER))) {
     throw badOption(`maxSteiner = ${describe(maxSteiner)} must be a non-negative integer or Infinity`);
   }

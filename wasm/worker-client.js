@@ -4,20 +4,59 @@
 // to stop it is to end the worker. The cancelled request rejects with MeshError 'CANCELLED', and
 // requests queued behind it are re-sent to a fresh worker.
 import { MeshError, deserializeError } from './errors.js';
+import { absoluteUrl, classicScriptUrl, getNodeHost } from './host.js';
+import { rejectUnknownKeys } from './known-keys.js';
 import { normalizeOptions, normalizePlc } from './validate.js';
 
-const isNode = typeof process === 'object' && typeof process.versions === 'object' &&
-  typeof process.versions.node === 'string' && typeof window === 'undefined';
+// The bundled default: the literal pattern that vite and webpack turn into a worker entry. Both
+// rewrite only this exact form (`new Worker(new URL('...', import.meta.url), { type: 'module' })`).
+function defaultBrowserWorker() {
+  if (import.meta.url === undefined) return new Worker(new URL('worker.js', classicScriptUrl), { type: 'module' });
+  return new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+}
 
-// Browsers and bundlers: the literal `new Worker(new URL(...), { type: 'module' })` pattern.
-function spawnBrowserWorker() {
-  const worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+// Where the default worker script is expected when no bundler rewrote the line above (unbundled, or
+// esbuild): named in the error when it fails to load. Not written as new URL('...', import.meta.url)
+// so that bundlers do not copy the unbundled file as an asset.
+function expectedWorkerUrl() {
+  return import.meta.url === undefined ? new URL('worker.js', classicScriptUrl)
+    : new URL(import.meta.url.replace(/[^/?#]*([?#].*)?$/, 'worker.js'));
+}
+
+// A worker script that fails to load fires a bare 'error' event: ask the server why.
+async function describeLoadFailure(url) {
+  try {
+    const response = await fetch(url, { credentials: 'same-origin' });
+    const type = response.headers.get('content-type') ?? 'no content type';
+    return response.ok ? `it loads (HTTP ${response.status}, ${type}) but did not start as a module worker`
+      : `HTTP ${response.status}`;
+  } catch (cause) {
+    return `the request failed (${cause.message})`;
+  }
+}
+
+function workerFailure(event, url) {
+  const hint = ' (pass createMeshWorker({ workerUrl }) to say where ruppert\'s worker.js is served)';
+  if (event.message) {
+    const where = event.filename ? ` at ${event.filename}:${event.lineno}` : '';
+    return Promise.resolve(new MeshError('INTERNAL', `mesh worker failed: ${event.message}${where}`));
+  }
+  return describeLoadFailure(url).then((reason) =>
+    new MeshError('IO_ERROR', `could not load the mesh worker script ${url}: ${reason}${hint}`));
+}
+
+function spawnBrowserWorker(workerUrl) {
+  if (typeof Worker !== 'function') {
+    throw new MeshError('INTERNAL', 'createMeshWorker: this platform has no Worker (in Node, import the package \'ruppert\')');
+  }
+  const worker = workerUrl === undefined ? defaultBrowserWorker() : new Worker(workerUrl, { type: 'module' });
+  const url = absoluteUrl(workerUrl ?? expectedWorkerUrl());
   return {
     post: (data) => worker.postMessage(data),
     onMessage: (fn) => worker.addEventListener('message', (event) => fn(event.data)),
     onFailure: (fn) => worker.addEventListener('error', (event) => {
       event.preventDefault();
-      fn(new MeshError('INTERNAL', `mesh worker failed: ${event.message ?? 'error'}`));
+      workerFailure(event, url).then(fn);
     }),
     terminate: () => worker.terminate(),
     hold: () => {},
@@ -25,28 +64,24 @@ function spawnBrowserWorker() {
   };
 }
 
-async function spawnNodeWorker() {
-  const { Worker } = await import(/* webpackIgnore: true */ /* @vite-ignore */ 'node:worker_threads');
-  const worker = new Worker(new URL('./worker.js', import.meta.url));
-  let ended = false;
-  return {
-    post: (data) => worker.postMessage(data),
-    onMessage: (fn) => worker.on('message', fn),
-    onFailure: (fn) => {
-      worker.on('error', (error) => fn(new MeshError('INTERNAL', `mesh worker failed: ${error.message}`, { cause: error })));
-      worker.on('exit', (code) => { if (!ended) fn(new MeshError('INTERNAL', `mesh worker exited with code ${code}`)); });
-    },
-    terminate: () => { ended = true; return worker.terminate(); },
-    // An idle worker must not keep a Node process alive.
-    hold: () => worker.ref(),
-    release: () => worker.unref(),
-  };
+function spawn(workerUrl) {
+  const nodeHost = getNodeHost();
+  return nodeHost ? nodeHost.spawnWorker(workerUrl) : spawnBrowserWorker(workerUrl);
 }
 
 /**
- * @param {{ wasmUrl?: string | URL, wasmBinary?: ArrayBuffer }} [loadOptions] passed to init() in the worker
+ * @param {{ workerUrl?: string | URL, wasmUrl?: string | URL, wasmBinary?: ArrayBuffer }} [options]
+ *   workerUrl: where ruppert's worker.js is served (default: beside this module, or where the bundler
+ *   put it); the others are passed to init() in the worker
  */
-export function createMeshWorker(loadOptions = {}) {
+export function createMeshWorker(options = {}) {
+  if (options === null || typeof options !== 'object') {
+    throw new MeshError('MALFORMED_INPUT', 'createMeshWorker(options): options must be an object');
+  }
+  // No locateFile: a function cannot be sent to the worker.
+  rejectUnknownKeys(options, ['workerUrl', 'wasmUrl', 'wasmBinary', 'wasmModule'], 'createMeshWorker(options)',
+    (message) => new MeshError('INVALID_OPTION', message));
+  const { workerUrl, ...loadOptions } = options;
   let worker = null;       // Promise of the current worker handle
   let nextId = 1;
   const jobs = new Map();  // id -> { request, resolve, reject, onProgress, cleanup }
@@ -59,7 +94,7 @@ export function createMeshWorker(loadOptions = {}) {
   }
 
   function start() {
-    const handlePromise = (isNode ? spawnNodeWorker() : Promise.resolve(spawnBrowserWorker())).then((handle) => {
+    const handlePromise = new Promise((resolve) => resolve(spawn(workerUrl))).then((handle) => {
       handle.onMessage((message) => {
         const job = jobs.get(message.id);
         if (job === undefined) return;

@@ -10,6 +10,8 @@
 //
 // The editor mutates app.drawing and then calls app.changed({ commit }): commit = true records
 // an undo step (a click, the end of a drag), false only re-meshes (while dragging).
+// Read-only (an embed without &edit=1): the drawing cannot change; pointer and arrows pan, the
+// wheel and +/- zoom, hovering still reports triangles.
 import { Item, addPoint, addSegment, hitTest, itemPosition, moveItem, removeItem } from './drawing.js';
 import { snapToGrid } from './view.js';
 
@@ -52,6 +54,7 @@ export class Editor {
     this.spaceDown = false;
     this.touches = new Map(); // pointerId -> { x, y } (client pixels) of fingers on the canvas
     this.keyCursor = null;    // world position of the keyboard cursor, once arrows moved it
+    this.readOnly = false;
     this.bind();
   }
 
@@ -155,6 +158,10 @@ export class Editor {
       return;
     }
     if (e.button !== 0) return;
+    if (this.readOnly) {
+      this.startGesture(e, { type: 'pan', x: e.clientX, y: e.clientY });
+      return;
+    }
     const d = this.app.drawing;
     const r = this.radius;
 
@@ -336,7 +343,13 @@ export class Editor {
     const ctrl = e.ctrlKey || e.metaKey;
     const key = e.key;
     let handled = true;
-    if (ctrl && (key === 'z' || key === 'Z')) {
+    if (this.readOnly && !ctrl && key.startsWith('Arrow')) {
+      this.arrow(key, e.shiftKey, false);  // pans
+    } else if (this.readOnly && !ctrl && !['+', '=', '-', '_'].includes(key)) {
+      handled = this.app.shortcut(key.toLowerCase());  // fit, step mode and stepping only
+    } else if (this.readOnly && ctrl) {
+      handled = false;
+    } else if (ctrl && (key === 'z' || key === 'Z')) {
       if (e.shiftKey) this.app.redo(); else this.app.undo();
     } else if (ctrl && (key === 'y' || key === 'Y')) {
       this.app.redo();

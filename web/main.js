@@ -4,16 +4,17 @@
 // worker) -> onMeshed: renderer, stats, stepper, notices, postMessage to a host.
 import { DEFAULT_OPTIONS, cloneDrawing, drawingBounds, emptyDrawing, fromPlc, pointCount, toMeshOptions, toPlc, Item } from './drawing.js';
 import { Editor, TOOL_HINTS } from './editor.js';
-import { isEmbedded, listenForLoad, postError, postMeshed } from './embed.js';
+import { isEditable, isEmbedded, listenToHost, postError, postMeshed, postStepped } from './embed.js';
 import { canvasBlob, download, exportText, parseInput, parsePolyText } from './files.js';
 import { History } from './history.js';
 import { MeshScheduler } from './mesh-scheduler.js';
 import { findTriangle, triangleShape } from './mesh-geometry.js';
-import { DEFAULT_PRESET, PRESETS, presetDrawing } from './presets.js';
+import { DEFAULT_PRESET, PRESETS, findPreset } from './presets.js';
 import { Renderer, legendEntries } from './render.js';
 import { showStats } from './stats-panel.js';
-import { Stepper } from './stepper.js';
-import { MAX_HASH_LENGTH, decodeDrawing, encodeDrawing } from './url-state.js';
+import { StepReplay } from './step-replay.js';
+import { Stepper, describeEvent } from './stepper.js';
+import { MAX_HASH_LENGTH, decodeDrawing, decodePageState, encodeDrawing, encodePageState } from './url-state.js';
 import { View } from './view.js';
 
 const $ = (id) => document.getElementById(id);
@@ -25,6 +26,7 @@ const view = new View();
 const renderer = new Renderer(canvas);
 const embedded = isEmbedded();
 if (embedded) document.body.classList.add('embed');
+const readOnly = !isEditable();
 
 const app = {
   canvas,
@@ -36,11 +38,13 @@ const app = {
   notices: [],
   colorMode: 'angle',
   stepMode: false,
+  stepMesh: null,       // step mode: the mesh of the step on screen (StepReplay), else null
+  pendingStep: null,    // a step to show once the mesh with its trace arrives (link, host)
   hoverTriangle: -1,
   writtenHash: '',
   viewMoved: false,     // set by the editor on pan and zoom
   changed: ({ commit }) => {
-    if (commit) $('preset').value = '';  // an edit on the canvas: no longer the preset
+    if (commit) notPreset();  // an edit on the canvas: no longer the preset
     changed(commit);
   },
   redraw: () => scheduleDraw(),
@@ -53,6 +57,7 @@ const app = {
 };
 const history = new History(app.drawing);
 const editor = new Editor(app);
+editor.readOnly = readOnly;
 
 // ---------------------------------------------------------------- status
 function setStatus(text, kind = 'info') {
@@ -90,7 +95,9 @@ function scheduleDraw() {
 }
 
 function draw() {
-  const step = app.stepMode && app.mesh?.events ? { mesh: app.mesh, events: app.mesh.events, index: stepper.index } : null;
+  if (app.viewMoved) writeHashSoon();
+  const step = app.stepMode && app.mesh?.events
+    ? { final: app.mesh, events: app.mesh.events, index: stepper.index, shown: app.stepMesh } : null;
   renderer.draw({
     view,
     drawing: app.drawing,
@@ -151,7 +158,7 @@ function setDrawing(drawing, { commit = true, fit = true } = {}) {
 function restore(drawing) {
   if (drawing === null) return;
   app.drawing = drawing;
-  $('preset').value = '';
+  notPreset();
   editor.reset();
   syncOptionFields();
   writeHash();
@@ -167,8 +174,15 @@ function updateButtons() {
 }
 
 function writeHash() {
-  const hash = encodeDrawing(app.drawing);
+  const state = encodePageState({
+    step: app.stepMode ? stepper.index : null,
+    color: app.colorMode,
+    view: app.viewMoved ? { x: view.centerX, y: view.centerY, scale: view.scale } : null,
+  });
+  const hash = `${encodeDrawing(app.drawing)}${state}`;
   const base = `${location.pathname}${location.search}`;
+  // The embed's link to the full page carries the same state.
+  $('open-full').href = `${location.pathname}#${hash}`;
   if (hash.length > MAX_HASH_LENGTH) {
     app.writtenHash = '';
     window.history.replaceState(null, '', base);
@@ -176,6 +190,14 @@ function writeHash() {
   }
   app.writtenHash = `#${hash}`;
   if (location.hash !== app.writtenHash) window.history.replaceState(null, '', `${base}#${hash}`);
+}
+
+// Steps, pans and zooms change the link too, but at most a few times a second (browsers throttle
+// history.replaceState calls).
+let hashTimer = null;
+function writeHashSoon() {
+  if (hashTimer !== null) return;
+  hashTimer = setTimeout(() => { hashTimer = null; writeHash(); }, 300);
 }
 
 function readHash() {
@@ -217,11 +239,13 @@ const scheduler = new MeshScheduler({
     app.meshedPlc = request.plc;
     app.notices = mesh.notices;
     app.hoverTriangle = -1;
+    app.stepMesh = null;
     renderer.setMesh(mesh);
     showStats(statElements, mesh);
     showNotices(mesh.notices);
     updateLegend();
-    stepper.setEvents(app.stepMode ? mesh.events : null);
+    replay.reset(request.plc, request.options, app.stepMode ? mesh : null);
+    stepper.setEvents(app.stepMode ? mesh.events : null, { points: mesh.points, minAngle: request.options.minAngle });
     const s = mesh.stats;
     const summary = `${s.triangles.toLocaleString('en-US')} triangles, ${s.vertices.toLocaleString('en-US')} vertices, ` +
       `min angle ${s.minAngle.toFixed(2)}° in ${s.milliseconds.toFixed(1)} ms`;
@@ -231,13 +255,19 @@ const scheduler = new MeshScheduler({
     // A result that a newer, still debounced request will replace is shown, but not 'done'.
     document.body.dataset.meshState = scheduler.queued ? 'queued' : 'done';
     document.body.dataset.meshCount = String(Number(document.body.dataset.meshCount ?? 0) + 1);
-    postMeshed(mesh);
+    postMeshed(mesh, request.id);
+    showPendingStep();
     scheduleDraw();
   },
-  onError(error) {
+  onError(error, request) {
     stopProgress();
     if (error?.code === 'CANCELLED') {
       setStatus('Meshing cancelled. Change the drawing or a parameter to mesh again.', 'warn');
+      // The mesh on screen is an older one: its panel must not claim it answers the new request.
+      if (app.mesh) {
+        $('stat-complete').textContent = 'cancelled: the mesh shown is of the previous drawing or parameters';
+        $('stat-complete').className = 'bad';
+      }
       document.body.dataset.meshState = scheduler.queued ? 'queued' : 'cancelled';
       return;
     }
@@ -245,7 +275,7 @@ const scheduler = new MeshScheduler({
     setStatus(`Cannot mesh this drawing: ${error?.message ?? error}`, 'error');
     showNotices([], error);
     document.body.dataset.meshState = scheduler.queued ? 'queued' : 'error';
-    postError(error);
+    postError(error, request?.id ?? null);
     scheduleDraw();
   },
 });
@@ -263,8 +293,10 @@ function clearMesh() {
   app.notices = [];
   app.hoverTriangle = -1;
   $('hover-info').hidden = true;
+  app.stepMesh = null;
   renderer.setMesh(null);
   showStats(statElements, null);
+  replay.clear();
   stepper.setEvents(null);
   updateLegend();
 }
@@ -283,7 +315,20 @@ function remesh(delay) {
   }
   // 'queued' until the result of this very request arrives (tests and hosts can wait for 'done').
   document.body.dataset.meshState = 'queued';
-  scheduler.request(toPlc(app.drawing), toMeshOptions(app.drawing, { trace: app.stepMode }), delay);
+  scheduler.request(toPlc(app.drawing), toMeshOptions(app.drawing, { trace: app.stepMode }), delay, hostId);
+  hostId = null;
+}
+
+// The id of a host's 'ruppert:load', given to the mesh request it causes (and echoed in the reply).
+let hostId = null;
+
+/** Shows the step a link or a host asked for, once the mesh with the trace is there. */
+function showPendingStep() {
+  if (app.pendingStep === null || !app.stepMode || !app.mesh?.events) return;
+  const k = app.pendingStep;
+  app.pendingStep = null;
+  stepper.pause();
+  stepper.go(k);
 }
 
 $('cancel').addEventListener('click', () => scheduler.cancel());
@@ -297,14 +342,16 @@ function hover(world) {
     scheduleDraw();
     return;
   }
-  const t = findTriangle(app.mesh, world.x, world.y, app.hoverTriangle);
+  // In step mode the mesh on screen is that of the step shown.
+  const mesh = app.stepMesh ?? app.mesh;
+  const t = findTriangle(mesh, world.x, world.y, app.hoverTriangle);
   app.hoverTriangle = t;
   if (t < 0) {
     info.hidden = true;
   } else {
-    const shape = triangleShape(app.mesh, t);
-    const kinds = shape.vertices.map((v) => `${v} ${VERTEX_KINDS[app.mesh.vertexKinds[v]] ?? '?'}`);
-    const attribute = app.mesh.triangleAttributes[t];
+    const shape = triangleShape(mesh, t);
+    const kinds = shape.vertices.map((v) => `${v} ${VERTEX_KINDS[mesh.vertexKinds[v]] ?? '?'}`);
+    const attribute = mesh.triangleAttributes[t];
     info.textContent = `Triangle ${t}: angles ${shape.angles.map((a) => `${a.toFixed(2)}°`).join(', ')}; ` +
       `radius-edge ratio ${shape.radiusEdge.toFixed(3)}; area ${shape.area.toPrecision(4)}; ` +
       `vertices ${kinds.join(', ')}${attribute ? `; attribute ${attribute}` : ''}`;
@@ -335,7 +382,7 @@ function shortcut(key) {
     case ',': if (app.stepMode) stepper.step(-1); return app.stepMode;
     case '.': if (app.stepMode) stepper.step(1); return app.stepMode;
     case 'home': if (app.stepMode) stepper.go(0); return app.stepMode;
-    case 'end': if (app.stepMode) stepper.go(stepper.count - 1); return app.stepMode;
+    case 'end': if (app.stepMode) stepper.go(stepper.count); return app.stepMode;
     default: return false;
   }
 }
@@ -368,6 +415,7 @@ function syncOptionFields() {
   const o = app.drawing.options;
   minAngleRange.value = String(o.minAngle);
   minAngleNumber.value = String(o.minAngle);
+  $('min-angle-warning').hidden = !(o.minAngle > 34);
   $('max-area').value = o.maxArea > 0 ? String(o.maxArea) : '';
   $('placement').value = o.placement;
   $('max-steiner').value = Number.isInteger(o.maxSteiner) ? String(o.maxSteiner) : '';
@@ -383,6 +431,7 @@ function setMinAngle(value, commit) {
   }
   minAngleNumber.removeAttribute('aria-invalid');
   app.drawing.options.minAngle = value;
+  $('min-angle-warning').hidden = !(value > 34);
   changed(commit);
 }
 // The slider re-meshes while it moves and records an undo step once it rests (browsers differ in
@@ -467,18 +516,48 @@ function updateLegend() {
 $('color-mode').addEventListener('change', () => {
   app.colorMode = $('color-mode').value;
   updateLegend();
+  writeHash();
+  scheduleDraw();
+});
+
+// The mesh of each step, meshed on demand; shown when it is still the step wanted.
+const replay = new StepReplay((k, mesh) => {
+  if (!app.stepMode || k !== stepper.index) return;
+  app.stepMesh = mesh;
+  app.hoverTriangle = -1;
+  renderer.setMesh(mesh);
+  const { vertices, triangles, minAngle } = mesh.stats;
+  $('step-mesh').textContent = `Mesh at step ${k}: ${vertices.toLocaleString('en-US')} vertices, ` +
+    `${triangles.toLocaleString('en-US')} triangles, smallest angle ${minAngle.toFixed(2)}°`;
+  document.body.dataset.stepShown = String(k);
+  const events = app.mesh.events;
+  postStepped({
+    index: k, total: stepper.count, vertices, triangles,
+    event: k > 0 ? describeEvent(events, k - 1, { points: app.mesh.points, minAngle: app.drawing.options.minAngle }) : null,
+  });
   scheduleDraw();
 });
 
 const stepper = new Stepper({
   first: $('step-first'), back: $('step-back'), play: $('step-play'), forward: $('step-forward'),
   last: $('step-last'), scrub: $('step-scrub'), speed: $('step-speed'), info: $('step-info'),
-}, () => scheduleDraw());
+}, (k) => {
+  delete document.body.dataset.stepShown;
+  writeHashSoon();
+  $('step-mesh').textContent = `Mesh at step ${k}: meshing…`;
+  replay.show(k);
+  scheduleDraw();
+});
 
 function setStepMode() {
   app.stepMode = $('step-mode').checked;
   $('stepper').hidden = !app.stepMode;
-  if (!app.stepMode) stepper.pause();
+  if (!app.stepMode) {
+    stepper.pause();
+    replay.clear();
+    app.stepMesh = null;
+    if (app.mesh) renderer.setMesh(app.mesh);
+  }
   // Events are recorded only on request (options.trace): mesh again.
   remesh(0);
   scheduleDraw();
@@ -505,9 +584,31 @@ $('preset').addEventListener('change', () => {
     loadSharedPreset(value.slice(SHARED_PRESET.length));
     return;
   }
-  const drawing = presetDrawing(value);
-  if (drawing) setDrawing({ ...drawing, options: { ...app.drawing.options } });
+  applyPreset(findPreset(value), app.drawing.options);
 });
+
+/** Loads a preset: its drawing, its options over `base`, its caption, and step mode if it asks. */
+function applyPreset(preset, base) {
+  showCaption(preset?.caption ?? '');
+  if (!preset) return;
+  if (preset.steps && !app.stepMode) {
+    $('step-mode').checked = true;
+    app.stepMode = true;
+    $('stepper').hidden = false;
+  }
+  setDrawing({ ...preset.build(), options: { ...base, ...(preset.options ?? {}) } });
+}
+
+/** The drawing is no longer a preset (edited, a file, a message): the box and caption say so. */
+function notPreset() {
+  $('preset').value = '';
+  showCaption('');
+}
+
+function showCaption(text) {
+  $('preset-caption').textContent = text;
+  $('preset-caption').hidden = text === '';
+}
 
 // The corpus of real PLCs beside the repository (../shared/data), when the server offers it
 // (web/serve.mjs does; a plain static host does not, and the group is simply absent).
@@ -540,6 +641,7 @@ async function loadSharedPreset(name) {
     const response = await fetch(`../shared-data/${encodeURIComponent(name)}`, { cache: 'no-cache' });
     if (!response.ok) throw new Error(`the server answered ${response.status}`);
     const plc = await parseInput(await response.text(), name);
+    showCaption('');
     setDrawing(fromPlc(plc, app.drawing.options));
     $('preset').value = SHARED_PRESET + name;
     setStatus(`Loaded ${name}: ${plc.points.length / 2} points, ${plc.segments.length / 2} segments.`, 'ok');
@@ -562,6 +664,7 @@ async function loadFile(file) {
   try {
     const text = await file.text();
     const plc = await parseInput(text, file.name);
+    notPreset();
     setDrawing(fromPlc(plc, app.drawing.options));
     setStatus(`Loaded ${file.name}: ${plc.points.length / 2} points, ${plc.segments.length / 2} segments.`, 'ok');
   } catch (error) {
@@ -624,24 +727,61 @@ $('copy-link').addEventListener('click', async () => {
 });
 
 // ---------------------------------------------------------------- embedding
-listenForLoad(async ({ poly, options }) => {
-  const failed = loading();
-  try {
-    const plc = await parsePolyText(poly, '<ruppert:load>');
-    const merged = { ...DEFAULT_OPTIONS, ...app.drawing.options };
-    if (options.minAngle !== undefined) merged.minAngle = Math.min(60, Math.max(0, options.minAngle));
-    if (options.maxArea !== undefined) merged.maxArea = options.maxArea > 0 ? options.maxArea : null;
-    setDrawing(fromPlc(plc, merged));
-  } catch (error) {
-    failed();
-    setStatus(`Could not load the posted drawing: ${error.message}`, 'error');
-    postError(error);
-  }
+listenToHost({
+  async onLoad({ poly, options, id }) {
+    const failed = loading();
+    try {
+      const plc = await parsePolyText(poly, '<ruppert:load>');
+      hostId = id;
+      notPreset();
+      setDrawing(fromPlc(plc, { ...DEFAULT_OPTIONS, ...app.drawing.options, ...options }));
+    } catch (error) {
+      failed();
+      setStatus(`Could not load the posted drawing: ${error.message}`, 'error');
+      postError(error, id);
+    }
+  },
+  onStep(index) {
+    if (!app.stepMode) {
+      app.pendingStep = index;
+      $('step-mode').checked = true;
+      setStepMode();
+    } else if (app.mesh?.events) {
+      stepper.pause();
+      stepper.go(index);
+    } else {
+      app.pendingStep = index;  // the mesh with the trace is still on its way
+    }
+  },
 });
 
 // ---------------------------------------------------------------- start
-const initial = readHash() ?? { ...presetDrawing(DEFAULT_PRESET), options: { ...DEFAULT_OPTIONS } };
-if (!location.hash) $('preset').value = DEFAULT_PRESET;
-setTool('polyline');
-setDrawing(initial, { commit: false });
+const linked = readHash();
+const pageState = decodePageState(location.hash);
+if (!linked) $('preset').value = DEFAULT_PRESET;
+if (pageState.color) {
+  $('color-mode').value = pageState.color;
+  app.colorMode = pageState.color;
+}
+if (pageState.step !== null) {  // step mode from the link: one mesh, with its trace
+  $('step-mode').checked = true;
+  app.stepMode = true;
+  $('stepper').hidden = false;
+  app.pendingStep = pageState.step;
+}
+setTool(readOnly ? 'select' : 'polyline');
+if (readOnly) $('tool-hint').textContent = 'View only: drag to pan, wheel or +/- to zoom, hover a triangle for its angles.';
+if (linked) setDrawing(linked, { commit: false });
+else {
+  const preset = findPreset(DEFAULT_PRESET);
+  showCaption(preset.caption ?? '');
+  setDrawing({ ...preset.build(), options: { ...DEFAULT_OPTIONS, ...(preset.options ?? {}) } }, { commit: false });
+}
+if (pageState.view) {
+  view.centerX = pageState.view.x;
+  view.centerY = pageState.view.y;
+  view.scale = pageState.view.scale;
+  app.viewMoved = true;
+  scheduleDraw();
+}
 updateLegend();

@@ -1,5 +1,7 @@
 // Example drawings. Each builds points + segments from simple outlines, so the coordinates can be
-// read (and changed) here.
+// read (and changed) here. A preset may carry options (applied when it is chosen, over the page's
+// current ones), a one-line caption naming the chapter's figure it redraws, and `steps: true` to
+// open it in step-by-step mode.
 
 /** Adds a closed polygon (a ring of segments) and returns its first point index. */
 function ring(d, coordinates) {
@@ -93,24 +95,61 @@ function comb() {
   return d;
 }
 
+/**
+ * The chapter's Figure 6.9: two polygons, the top one extremely thin compared to the bottom one;
+ * the mesh grades from the thin polygon's tiny features to the large one's.
+ */
+function twoPolygons() {
+  const d = blank();
+  ring(d, [0, 0, 12, 0, 14, 4, 10, 7, 3, 6.5, -1, 3]);
+  ring(d, [0.5, 8, 13.5, 8.6, 13.5, 8.75, 0.5, 8.2]);
+  return d;
+}
+
 export const PRESETS = [
-  { id: 'square-hole', name: 'Square with a square hole', build: squareWithHole },
-  { id: 'figure-6-4', name: 'Polygon with an interior segment (Fig. 6.4-like)', build: figure64 },
-  { id: 'skyline', name: 'Skyline', build: skyline },
-  { id: 'two-sizes', name: 'Two polygons of very different sizes', build: twoSizes },
-  { id: 'fan', name: 'Small-angle fan (5°)', build: smallAngleFan },
   {
-    id: 'comb',
-    name: 'Comb (Fig. 6.16): try Algorithm “box”',
-    title: 'Teeth 1 wide, gaps 0.05 wide. Switch Algorithm to "Delaunay in a bounding box" to see the ' +
-      'over-refinement of Ruppert\'s original algorithm in the gaps.',
-    build: comb,
+    id: 'skyline', name: 'Fig. 6.1: skyline at 28°', build: skyline, options: { minAngle: 28 },
+    caption: 'Figure 6.1: a skyline and its Delaunay mesh with no angle under 28°.',
   },
+  {
+    id: 'figure-6-4', name: 'Fig. 6.4 (a)-(f): the refinement step by step', build: figure64, steps: true,
+    caption: 'Figure 6.4: a polygon with an interior segment, refined one insertion at a time; step through it below.',
+  },
+  ...[5, 20, 30, 34.2].map((angle) => ({
+    id: `figure-6-9-${String(angle).replace('.', '-')}`,
+    name: `Fig. 6.9: two polygons at ${angle}°`,
+    build: twoPolygons,
+    options: { minAngle: angle },
+    caption: `Figure 6.9: two polygons, the top one very thin, meshed with no angle under ${angle}° (the chapter shows 5, 20, 30 and 34.2°).`,
+  })),
+  {
+    id: 'fan', name: 'Figs. 6.12-6.14: small input angles (5° fan)', build: smallAngleFan,
+    caption: 'Figures 6.12-6.14: segments 5° apart. Concentric-shell splits stop the ping-pong of Fig. 6.12; ' +
+      'triangles in the small angles and with seditious edges are left as they are.',
+  },
+  {
+    id: 'comb', name: 'Fig. 6.16 right: comb, constrained Delaunay', build: comb, options: { variant: 'cdt' },
+    title: 'Teeth 1 wide, gaps 0.05 wide. Compare with Fig. 6.16 left, Ruppert\'s original algorithm in a ' +
+      'bounding box, or switch Algorithm: the box refines the narrow gaps outside too.',
+    caption: 'Figure 6.16, right: the comb meshed by constrained Delaunay refinement: the narrow gaps outside are never looked across.',
+  },
+  {
+    id: 'comb-box', name: 'Fig. 6.16 left: comb, Delaunay in a box', build: comb, options: { variant: 'box', minAngle: 20 },
+    caption: 'Figure 6.16, left: Ruppert\'s original algorithm meshes a bounding box; the gaps are refined to their tiny width.',
+  },
+  { id: 'square-hole', name: 'Square with a square hole', build: squareWithHole },
+  { id: 'two-sizes', name: 'Two polygons of very different sizes, with regions', build: twoSizes },
 ];
 
-export const DEFAULT_PRESET = 'figure-6-4';
+// The first sight: two polygons of very different sizes, graded at the default 30 degrees.
+export const DEFAULT_PRESET = 'figure-6-9-30';
 
 export function presetDrawing(id) {
   const preset = PRESETS.find((p) => p.id === id);
   return preset ? preset.build() : null;
+}
+
+/** The preset of that id (with its options, caption and steps flag), or null. */
+export function findPreset(id) {
+  return PRESETS.find((p) => p.id === id) ?? null;
 }

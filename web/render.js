@@ -142,7 +142,8 @@ export class Renderer {
    * @param {object} s what to draw:
    *   view, drawing, colorMode, showGrid, snap, selection, hoverItem, hoverTriangle,
    *   pendingChain: { from: pointIndex, to: {x,y} } | null, keyCursor: {x,y} | null (keyboard cursor),
-   *   notices, step: { mesh, events, index } | null
+   *   notices, step: { final, events, index, shown } | null: `final` the full mesh (its points
+   *   number every vertex of every step), `index` the step wanted, `shown` the mesh on screen
    */
   draw(s) {
     const { ctx, dpr } = this;
@@ -160,7 +161,9 @@ export class Renderer {
     if (this.mesh) {
       if (this.cache === null || this.cache.mode !== s.colorMode) this.buildPaths(s.colorMode);
       world();
-      ctx.globalAlpha = s.step ? 0.35 : 1;
+      // Step mode: the mesh is that of the step (StepReplay); dimmed only while it is still on
+      // its way, when the picture under the event is the previous step's.
+      ctx.globalAlpha = s.step && !this.showsStep(s.step) ? 0.35 : 1;
       for (const { colour, path } of this.cache.fills) {
         ctx.fillStyle = colour;
         ctx.fill(path);
@@ -331,24 +334,27 @@ export class Renderer {
     }
   }
 
-  /** Step mode: vertices inserted up to the current event, and the current event's geometry. */
+  /** Whether the mesh on screen is that of step s.index (it arrives from a worker). */
+  showsStep(step) {
+    return step.shown !== null && step.shown === this.mesh
+      && step.shown.points.length === step.final.points.length - 2 * (step.events.count - step.index);
+  }
+
+  /**
+   * Step mode: the event that made step `index` (the index-th insertion) drawn over that step's
+   * mesh: its new triangles (the star of the new vertex: the cavity it retriangulated), the
+   * skinny triangle and its circumcircle, the encroached subsegment and its diametral circle, the
+   * rejected point. Vertex numbers are those of the final mesh, the same in every step.
+   */
   drawStep(step, view, world, screen, px) {
     const { ctx } = this;
-    const { mesh, events, index } = step;
-    if (!events || events.count === 0) return;
-    const p = mesh.points;
+    const { final, events, index } = step;
+    if (!events || events.count === 0 || index === 0) return;
+    const e = index - 1;
+    const p = final.points;
     const at = (v) => view.toScreen(p[2 * v], p[2 * v + 1]);
+    if (this.showsStep(step)) this.drawNewTriangles(step.shown, events.vertex[e], world, screen, px);
 
-    // New vertices of events 0..index.
-    ctx.fillStyle = COLOURS.newVertex;
-    ctx.beginPath();
-    for (let e = 0; e <= index; e++) {
-      const q = view.toScreen(events.xy[2 * e], events.xy[2 * e + 1]);
-      ctx.moveTo(q.x + 2.5, q.y); ctx.arc(q.x, q.y, 2.5, 0, 2 * Math.PI);
-    }
-    ctx.fill();
-
-    const kind = events.kind[index];
     const circle = (cx, cy, r, colour) => {
       world();
       ctx.beginPath(); ctx.arc(cx, cy, r, 0, 2 * Math.PI);
@@ -361,16 +367,16 @@ export class Renderer {
       ctx.beginPath(); ctx.moveTo(qa.x, qa.y); ctx.lineTo(qb.x, qb.y);
       ctx.strokeStyle = colour; ctx.lineWidth = width; ctx.stroke();
     };
-    const triangle = (e, colour) => {
+    // The triangle split is gone from this step's mesh: drawn as an outline where it was.
+    const triangle = (colour) => {
       const [i, j, k] = [events.triangle[3 * e], events.triangle[3 * e + 1], events.triangle[3 * e + 2]];
       const qi = at(i); const qj = at(j); const qk = at(k);
       ctx.beginPath(); ctx.moveTo(qi.x, qi.y); ctx.lineTo(qj.x, qj.y); ctx.lineTo(qk.x, qk.y); ctx.closePath();
-      ctx.fillStyle = 'rgba(214, 51, 108, 0.18)'; ctx.fill();
-      ctx.strokeStyle = colour; ctx.lineWidth = 2.5; ctx.stroke();
+      ctx.strokeStyle = colour; ctx.lineWidth = 2.5; ctx.setLineDash([5, 3]); ctx.stroke(); ctx.setLineDash([]);
       const c = circumcircle(p, i, j, k);
       if (c) circle(c.x, c.y, c.r, colour);
     };
-    const subsegment = (e, colour) => {
+    const subsegment = (colour) => {
       const a = events.a[e]; const b = events.b[e];
       line(a, b, colour, 4);
       // The diametral circle: centred at the midpoint, through both endpoints.
@@ -384,23 +390,45 @@ export class Renderer {
       ctx.strokeStyle = '#fff'; ctx.lineWidth = 2; ctx.stroke();
     };
 
+    const kind = events.kind[e];
     if (kind === 0) {  // SEGMENT_SPLIT
-      subsegment(index, COLOURS.step);
-      const by = events.by[index];
+      subsegment(COLOURS.step);
+      const by = events.by[e];
       if (by >= 0) marker(p[2 * by], p[2 * by + 1], COLOURS.stepSecondary, 5);  // the encroaching vertex
     } else if (kind === 1 || kind === 2) {  // CIRCUMCENTER, OFF_CENTER
-      triangle(index, COLOURS.step);
+      triangle(COLOURS.step);
     } else if (kind === 3) {  // REJECTED
-      triangle(index, COLOURS.stepSecondary);
-      subsegment(index, COLOURS.step);
-      const cx = events.circumcenter[2 * index]; const cy = events.circumcenter[2 * index + 1];
-      const q = view.toScreen(cx, cy);
+      triangle(COLOURS.stepSecondary);
+      subsegment(COLOURS.step);
+      const q = view.toScreen(events.circumcenter[2 * e], events.circumcenter[2 * e + 1]);
       ctx.beginPath();
       ctx.moveTo(q.x - 6, q.y - 6); ctx.lineTo(q.x + 6, q.y + 6);
       ctx.moveTo(q.x + 6, q.y - 6); ctx.lineTo(q.x - 6, q.y + 6);
       ctx.strokeStyle = COLOURS.stepSecondary; ctx.lineWidth = 3; ctx.stroke();
     }
-    marker(events.xy[2 * index], events.xy[2 * index + 1], COLOURS.newVertex, 6);
+    marker(events.xy[2 * e], events.xy[2 * e + 1], COLOURS.newVertex, 6);
+  }
+
+  /** The triangles of `mesh` around vertex v, filled: what the insertion of v created. */
+  drawNewTriangles(mesh, v, world, screen, px) {
+    const { ctx } = this;
+    const tri = mesh.triangles;
+    const p = mesh.points;
+    const path = new Path2D();
+    for (let t = 0; t < tri.length; t += 3) {
+      if (tri[t] !== v && tri[t + 1] !== v && tri[t + 2] !== v) continue;
+      path.moveTo(p[2 * tri[t]], p[2 * tri[t] + 1]);
+      path.lineTo(p[2 * tri[t + 1]], p[2 * tri[t + 1] + 1]);
+      path.lineTo(p[2 * tri[t + 2]], p[2 * tri[t + 2] + 1]);
+      path.closePath();
+    }
+    world();
+    ctx.fillStyle = 'rgba(250, 204, 21, 0.45)';
+    ctx.fill(path);
+    ctx.strokeStyle = COLOURS.newVertex;
+    ctx.lineWidth = 1.5 * px;
+    ctx.stroke(path);
+    screen();
   }
 }
 

@@ -1,6 +1,8 @@
 #!/usr/bin/env node
-// A tiny static file server for the web page: it serves the repository root, so the page at
-// /web/ imports the very module the npm package publishes (/wasm/index.js, /wasm/dist/ruppert.wasm).
+// A tiny static file server for the web page. It serves only what the page needs: the web/ folder
+// and the files the npm package publishes (package.json's "files": /wasm/index.js,
+// /wasm/dist/ruppert.wasm, ...), so the page imports the very module users install. Nothing else of
+// the repository (no .git, no node_modules, no package.json, no dotfiles anywhere) is served.
 //
 //   node web/serve.mjs            # PORT from the environment, else 8080, else any free port
 //
@@ -11,7 +13,7 @@
 // ({ available, files }), so the page can offer them as presets. Without the folder the list is
 // empty (a 200 answer, so the page logs no failed request).
 import { createServer } from 'node:http';
-import { createReadStream, existsSync } from 'node:fs';
+import { createReadStream, existsSync, readFileSync } from 'node:fs';
 import { readdir, stat } from 'node:fs/promises';
 import { basename, extname, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -19,6 +21,19 @@ import { fileURLToPath } from 'node:url';
 const root = resolve(fileURLToPath(new URL('..', import.meta.url)));
 const sharedData = resolve(process.env.RUPPERT_SHARED_DATA || resolve(root, '..', 'shared', 'data'));
 const SHARED_PREFIX = '/shared-data/';
+
+// The served part of the repository, as root-relative paths: folders end in '/'. package.json's
+// "files" is the one list of what the package publishes, so the page can load nothing a user of the
+// package would not have.
+const PUBLISHED = JSON.parse(readFileSync(resolve(root, 'package.json'), 'utf8')).files ?? [];
+const SERVED_PREFIXES = ['web/', ...PUBLISHED.filter((entry) => !entry.includes('*'))];
+
+/** Whether a root-relative path (no leading '/') is one the page may load. */
+function isServed(relative) {
+  if (relative.split('/').some((part) => part.startsWith('.'))) return false;  // dotfiles, '..'
+  return SERVED_PREFIXES.some((entry) =>
+    entry.endsWith('/') ? relative.startsWith(entry) : relative === entry || relative.startsWith(`${entry}/`));
+}
 
 /** The corpus's top-level .poly files, sorted; [] when the folder is absent. */
 async function sharedDataFiles() {
@@ -77,7 +92,7 @@ function send(response, status, text) {
   response.end(text);
 }
 
-/** Maps a URL path to a file under root, or null when it would leave root. */
+/** Maps a URL path to a served file under root, or null when it would leave root or is not served. */
 function resolvePath(urlPath) {
   let decoded;
   try {
@@ -88,8 +103,10 @@ function resolvePath(urlPath) {
   if (decoded.includes('\0')) return null;
   // resolve() collapses '..'; the prefix check then rejects anything that climbed out of root.
   const file = resolve(root, `.${decoded.startsWith('/') ? '' : '/'}${decoded}`);
-  if (file !== root && !file.startsWith(root + sep)) return null;
-  return file;
+  if (!file.startsWith(root + sep)) return null;
+  // A folder asked without its index.html (/web/) is checked as the folder itself.
+  const relative = file.slice(root.length + 1).split(sep).join('/');
+  return isServed(relative) || isServed(`${relative}/`) ? file : null;
 }
 
 async function handle(request, response) {
@@ -109,7 +126,7 @@ async function handle(request, response) {
   }
   let file = resolvePath(url.pathname);
   if (file === null) {
-    send(response, 403, 'forbidden\n');
+    send(response, 404, 'not found\n');
     return;
   }
   let info;

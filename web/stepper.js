@@ -1,17 +1,37 @@
-// Step-by-step mode: play, pause, step and scrub through mesh.events (recorded with
-// options.trace). The mesh itself is the final one; the renderer dims it and highlights the
-// vertices inserted up to the current event and that event's geometry.
+// Step-by-step mode: play, pause, step and scrub through the refinement recorded in mesh.events
+// (options.trace). Position k (0..events.count) is the mesh after k Steiner insertions, the k-th
+// event being the one that made it; position 0 is the constrained Delaunay triangulation before
+// refinement. StepReplay (step-replay.js) provides each position's mesh.
 
 const KIND_NAMES = ['segment split', 'circumcenter', 'off-center', 'rejected circumcenter'];
 
 const fmt = (v) => (Math.abs(v) >= 1e4 || (Math.abs(v) < 1e-3 && v !== 0) ? v.toExponential(3) : Number(v.toFixed(4)).toString());
 
-/** One line describing event e. */
-export function describeEvent(events, e) {
+/** The smallest angle, in degrees, of the triangle of vertices i, j, k of points. */
+function smallestAngle(points, i, j, k) {
+  const corner = (a, b, c) => {
+    const ux = points[2 * b] - points[2 * a]; const uy = points[2 * b + 1] - points[2 * a + 1];
+    const vx = points[2 * c] - points[2 * a]; const vy = points[2 * c + 1] - points[2 * a + 1];
+    return Math.atan2(Math.abs(ux * vy - uy * vx), ux * vx + uy * vy);
+  };
+  return Math.min(corner(i, j, k), corner(j, k, i), corner(k, i, j)) * 180 / Math.PI;
+}
+
+/**
+ * One line describing event e. With `context` ({ points: the final mesh's, minAngle }), a
+ * triangle's smallest angle is given against the bound.
+ */
+export function describeEvent(events, e, context = null) {
   const kind = events.kind[e];
   const where = `(${fmt(events.xy[2 * e])}, ${fmt(events.xy[2 * e + 1])})`;
   const vertex = events.vertex[e];
-  const triangle = `(${events.triangle[3 * e]}, ${events.triangle[3 * e + 1]}, ${events.triangle[3 * e + 2]})`;
+  const [i, j, k] = [events.triangle[3 * e], events.triangle[3 * e + 1], events.triangle[3 * e + 2]];
+  let triangle = `(${i}, ${j}, ${k})`;
+  if (context?.points && i >= 0 && events.kind[e] !== 0) {
+    const angle = smallestAngle(context.points, i, j, k);
+    const bound = context.minAngle ?? 0;
+    triangle += ` (smallest angle ${angle.toFixed(2)}°${angle < bound ? ` < ${bound}°` : ''})`;
+  }
   switch (kind) {
     case 0: {
       const by = events.by[e];
@@ -43,32 +63,38 @@ export class Stepper {
     el.first.addEventListener('click', () => this.go(0));
     el.back.addEventListener('click', () => this.step(-1));
     el.forward.addEventListener('click', () => this.step(1));
-    el.last.addEventListener('click', () => this.go(this.count - 1));
+    el.last.addEventListener('click', () => this.go(this.count));
     el.play.addEventListener('click', () => this.toggle());
     el.scrub.addEventListener('input', () => { this.pause(); this.go(Number(el.scrub.value)); });
     el.speed.addEventListener('change', () => { if (this.playing) { this.pause(); this.play(); } });
   }
 
+  /** The number of insertions: positions run from 0 (none) to count (the final mesh). */
   get count() { return this.events ? this.events.count : 0; }
   get playing() { return this.timer !== null; }
 
   /** New events (a new mesh): keep the position if it still exists. */
-  setEvents(events) {
+  /** @param {object|null} events @param {object|null} context { points, minAngle } for the texts */
+  setEvents(events, context = null) {
     this.events = events ?? null;
+    this.context = context;
     const count = this.count;
-    this.el.scrub.max = String(Math.max(0, count - 1));
+    this.el.scrub.max = String(count);
     this.el.scrub.disabled = count === 0;
     if (count === 0) this.pause();
-    this.go(Math.min(this.index, Math.max(0, count - 1)), false);
+    // A new mesh of the same drawing keeps the position; a first one starts at the end.
+    this.go(events ? Math.min(this.index, count) : 0);
   }
 
   go(index, notify = true) {
     const count = this.count;
-    this.index = Math.max(0, Math.min(index, Math.max(0, count - 1)));
+    this.index = Math.max(0, Math.min(index, count));
     this.el.scrub.value = String(this.index);
     this.el.info.textContent = count === 0
       ? 'No refinement events: the input already meets the bounds.'
-      : `Event ${this.index + 1} of ${count}: ${describeEvent(this.events, this.index)}`;
+      : `Step ${this.index} of ${count}: ${this.index === 0
+        ? 'the constrained Delaunay triangulation of the input, before refinement.'
+        : describeEvent(this.events, this.index - 1, this.context)}`;
     if (notify) this.onChange(this.index);
   }
 
@@ -84,10 +110,10 @@ export class Stepper {
 
   play() {
     if (this.count === 0) return;
-    if (this.index >= this.count - 1) this.go(0);
+    if (this.index >= this.count) this.go(0);
     const rate = Number(this.el.speed.value) || 8;
     this.timer = setInterval(() => {
-      if (this.index >= this.count - 1) {
+      if (this.index >= this.count) {
         this.pause();
         return;
       }

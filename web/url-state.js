@@ -75,3 +75,29 @@ export function decodeDrawing(hash) {
   };
   return { points, segments, holes, regions, options };
 }
+
+// What the page shows, beside the drawing: '&step=K' (step mode at step K), '&color=MODE' (the
+// triangle colouring), '&view=CX,CY,SCALE' (the view's centre and CSS pixels per unit). Each is
+// optional; a link without them opens with the drawing fitted, coloured by angle, not stepping.
+const COLOR_MODES = ['angle', 'region', 'none'];
+
+/** The hash suffix for the page state { step: number | null, color, view: { x, y, scale } | null }. */
+export function encodePageState({ step = null, color = 'angle', view = null }) {
+  let text = '';
+  if (Number.isInteger(step) && step >= 0) text += `&step=${step}`;
+  if (color !== 'angle' && COLOR_MODES.includes(color)) text += `&color=${color}`;
+  if (view) text += `&view=${[view.x, view.y, view.scale].map((v) => Number(v.toPrecision(8))).join(',')}`;
+  return text;
+}
+
+/** The page state in a location hash; absent or unreadable parts are null. */
+export function decodePageState(hash) {
+  const params = new URLSearchParams(hash.replace(/^#/, ''));
+  const stepText = params.get('step');
+  const step = stepText !== null && /^\d+$/.test(stepText) ? Number(stepText) : null;
+  const color = COLOR_MODES.includes(params.get('color')) ? params.get('color') : null;
+  const numbers = (params.get('view') ?? '').split(',').map(Number);
+  const view = numbers.length === 3 && numbers.every(Number.isFinite) && numbers[2] > 0
+    ? { x: numbers[0], y: numbers[1], scale: numbers[2] } : null;
+  return { step, color, view };
+}

@@ -171,10 +171,17 @@ void classifyTriangles(MeshState& m) {
     emptiedBy = eatHoles(m, state);
   }
   if (emptiedBy >= 0) {
+    // Two different mistakes, told apart by whether the segments enclose anything at all: a
+    // hole seed inside the only closed boundary (the domain is that boundary's inside, and the
+    // hole takes all of it), or segments that close nothing, so the hull was meshed and the hole
+    // flooded it.
     const auto& h = m.input.holes;
-    throw Error(ErrorCode::EmptyDomain, "holes[" + std::to_string(emptiedBy) + "] at " +
-                                            at(m, h[2 * emptiedBy], h[2 * emptiedBy + 1]) +
-                                            " removes the whole domain: the boundary around it is not closed");
+    throw Error(ErrorCode::EmptyDomain,
+                "holes[" + std::to_string(emptiedBy) + "] at " + at(m, h[2 * emptiedBy], h[2 * emptiedBy + 1]) +
+                    " removes the whole domain: " +
+                    (nothingEnclosed ? std::string("the segments enclose no region, so the hole's region is the whole convex hull")
+                                     : std::string("it lies in the only region the segments enclose; a hole needs an outer "
+                                                   "boundary around its own")));
   }
   const std::uint32_t slots = t.slotCount();
   const Plc& plc = *m.plc;

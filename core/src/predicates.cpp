@@ -183,8 +183,12 @@ Expansion<A + B> operator+(const Expansion<A>& e, const Expansion<B>& f) {
 
 template <int A>
 Expansion<A> operator-(const Expansion<A>& e) {
-  Expansion<A> h = e;  // negation is exact and keeps the ordering
-  for (int i = 0; i < h.n; ++i) h.c[i] = -h.c[i];
+  // Negation is exact and keeps the ordering. Only the n components in use are copied: copying the
+  // whole capacity (up to 4 KB) was a memcpy per call, which WebAssembly hands to JavaScript above
+  // 512 bytes.
+  Expansion<A> h;
+  h.n = e.n;
+  for (int i = 0; i < e.n; ++i) h.c[i] = -e.c[i];
   return h;
 }
 
@@ -200,8 +204,9 @@ Expansion<2 * A * B> operator*(const Expansion<A>& e, const Expansion<B>& f) {
   Expansion<2 * A * B> result;
   double other[2 * A * B];
   double scaled[2 * A];
-  double* acc = result.c;
-  double* next = other;
+  // Started so that the last partial sum lands in result.c (f.n steps, one swap each): no copy.
+  double* acc = f.n % 2 == 0 ? result.c : other;
+  double* next = f.n % 2 == 0 ? other : result.c;
   int accLen = 0;
   for (int j = 0; j < f.n; ++j) {
     const int scaledLen = scaleExpansion(e.c, e.n, f.c[j], scaled);

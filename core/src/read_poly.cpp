@@ -388,8 +388,14 @@ Plc parsePoly(const std::string& text, const std::string& name) {
   return polyFromText(text, name, [&name]() -> Plc {
     throw Error(ErrorCode::ParseError,
                 name + ":1: the .poly declares 0 points, so its points are in a .node file of the same name; "
-                       "read it with readFile");
+                       "pass that file's text too (JavaScript: parsePoly(polyText, { node: nodeText }); "
+                       "C++: parsePolyWithNode, or readFile, which reads both files)");
   });
+}
+
+Plc parsePolyWithNode(const std::string& polyText, const std::string& nodeText, const std::string& polyName,
+                      const std::string& nodeName) {
+  return polyFromText(polyText, polyName, [&]() { return nodeFromText(nodeText, nodeName); });
 }
 
 Plc readNode(std::istream& in, const std::string& name) { return parseNode(slurp(in, name), name); }

@@ -1,6 +1,9 @@
 #!/usr/bin/env node
 // Benchmark of the WebAssembly build: input families x sizes, one warm-up, median of several runs.
 //   node tests/bench/bench-wasm.mjs [--runs N] [--json]
+// Last, 10^5 random points given once and each given twice (copies after the originals), at 0 and
+// 30 degrees, the two alternating: median times, the ratio twice / once, and whether the meshes
+// have the same triangles (compared by corner coordinates).
 // Needs wasm/dist (npm run build:wasm). Uses ../shared/data fixtures when present (says so if not).
 import { existsSync, readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -70,9 +73,47 @@ for (const c of cases) {
   });
 }
 
+// Steiner vertices are numbered after the input points: triangles are compared by their corners.
+function sameTriangles(a, b) {
+  if (a.triangles.length !== b.triangles.length) return false;
+  for (let i = 0; i < a.triangles.length; i++) {
+    const u = a.triangles[i], v = b.triangles[i];
+    if (a.points[2 * u] !== b.points[2 * v] || a.points[2 * u + 1] !== b.points[2 * v + 1]) return false;
+  }
+  return true;
+}
+
+const duplicates = [];
+{
+  const once = scattered(100000);
+  const twice = { points: new Float64Array(2 * once.points.length) };
+  twice.points.set(once.points);
+  twice.points.set(once.points, once.points.length);
+  for (const minAngle of [0, 30]) {
+    const time = (plc) => {
+      const t0 = performance.now();
+      const mesh = mesher.triangulate(plc, { minAngle });
+      return { ms: performance.now() - t0, mesh };
+    };
+    time(once), time(twice);  // warm-up
+    const onceMs = [], twiceMs = [];
+    let a, b;
+    for (let i = 0; i < runs; i++) {
+      ({ ms: onceMs[i], mesh: a } = time(once));
+      ({ ms: twiceMs[i], mesh: b } = time(twice));
+    }
+    duplicates.push({
+      minAngle, triangles: a.triangles.length / 3, onceMs: +median(onceMs).toFixed(1), twiceMs: +median(twiceMs).toFixed(1),
+      ratio: +(median(twiceMs) / median(onceMs)).toFixed(2), notices: b.notices.length, sameTriangles: sameTriangles(a, b),
+    });
+  }
+}
+
 if (asJson) {
-  console.log(JSON.stringify({ node: process.version, runs, rows }, null, 2));
+  console.log(JSON.stringify({ node: process.version, runs, rows, duplicates }, null, 2));
 } else {
   console.log(`node ${process.version}, median of ${runs} runs after one warm-up`);
   console.table(rows);
+  console.log('10^5 random points given once and each given twice (alternating runs):');
+  console.table(duplicates);
 }

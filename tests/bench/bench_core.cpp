@@ -11,7 +11,12 @@
 //   plc_generators.h's chordStar, seeds 2-5) at 30 and 33 degrees, one run each: vertices, whether
 //   refinement completed under the automatic Steiner budget, and time.
 //
-// Usage: ruppert_bench [--max-points N] [--big] [--chords]   (N default 1000000; --big adds 10^7)
+//   --duplicates: 10^5 uniform random points given once, and the same points each given twice (the
+//   copies after the originals), at 0 and 30 degrees: best of 3 each (the two alternating, after a
+//   warm-up), the ratio twice / once, and whether both meshes have the same triangles.
+//
+// Usage: ruppert_bench [--max-points N] [--big] [--chords] [--duplicates]
+//        (N default 1000000; --big adds 10^7)
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -84,11 +89,45 @@ void chordStars() {
     }
 }
 
+// Every point given twice must cost about what the sort of twice the points costs: no work per
+// duplicate that dominates (it once cost ~26 us each, printing every merged point's coordinates).
+void duplicatedPoints() {
+  const ruppert::Plc once = uniformPoints(100000, false, 7);
+  ruppert::Plc twice = once;
+  twice.points.insert(twice.points.end(), once.points.begin(), once.points.end());
+  std::printf("\n10^5 random points given once and each given twice, best of 3 (alternating) after a warm-up\n");
+  std::printf("| min angle | triangles | once ms | twice ms | twice / once | notices | same triangles |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
+  for (double angle : {0.0, 30.0}) {
+    ruppert::Options o;
+    o.minAngle = angle;
+    auto timed = [&](const ruppert::Plc& plc, double& best, ruppert::Mesh& mesh) {
+      const auto start = std::chrono::steady_clock::now();
+      mesh = ruppert::triangulate(plc, o);
+      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      if (best < 0 || ms < best) best = ms;
+    };
+    double bestOnce = -1, bestTwice = -1, ignored = -1;
+    ruppert::Mesh a, b;
+    timed(once, ignored, a), timed(twice, ignored, b);  // warm-up
+    for (int run = 0; run < 3; ++run) timed(once, bestOnce, a), timed(twice, bestTwice, b);
+    // Steiner vertices are numbered after the input points, so triangles are compared by corners.
+    auto corners = [](const ruppert::Mesh& mesh) {
+      std::vector<double> xy;
+      for (std::uint32_t v : mesh.triangles) xy.push_back(mesh.points[2 * v]), xy.push_back(mesh.points[2 * v + 1]);
+      return xy;
+    };
+    std::printf("| %.0f | %zu | %.1f | %.1f | %.2f | %zu | %s |\n", angle, a.triangles.size() / 3, bestOnce, bestTwice,
+                bestTwice / bestOnce, b.notices.size(), corners(a) == corners(b) ? "yes" : "NO");
+    std::fflush(stdout);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::size_t maxPoints = 1000000;
-  bool big = false, chords = false;
+  bool big = false, chords = false, duplicates = false;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--max-points") && i + 1 < argc) {
       maxPoints = std::strtoull(argv[++i], nullptr, 10);
@@ -96,13 +135,19 @@ int main(int argc, char** argv) {
       big = true;
     } else if (!std::strcmp(argv[i], "--chords")) {
       chords = true;
+    } else if (!std::strcmp(argv[i], "--duplicates")) {
+      duplicates = true;
     } else {
-      std::fprintf(stderr, "usage: %s [--max-points N] [--big] [--chords]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--max-points N] [--big] [--chords] [--duplicates]\n", argv[0]);
       return 2;
     }
   }
   if (chords) {
     chordStars();
+    return 0;
+  }
+  if (duplicates) {
+    duplicatedPoints();
     return 0;
   }
 

@@ -1,6 +1,9 @@
 // Drawing with the mouse and keyboard, meshing in the worker, parameters, undo, error display.
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
+import { init } from '../../wasm/index.js';
+import { toMeshOptions, toPlc } from '../../web/drawing.js';
+import { decodeDrawing } from '../../web/url-state.js';
 import {
   SCREENSHOTS, canvasFingerprint, clickCanvas, launch, moveOnCanvas, openPage, readStats, settle,
 } from './harness.mjs';
@@ -119,15 +122,29 @@ test('undo and redo with Ctrl+Z / Ctrl+Y', async () => {
 test('select, drag and delete a vertex; zoom with the wheel', async () => {
   await page.keyboard.press('v');
   const before = await readStats(page);
-  const hashBefore = await page.evaluate(() => location.hash);
+  const hashBefore = await page.evaluate(() => /(?:^#|&)(d=[^&]*)/.exec(location.hash)?.[1]);
   const box = await page.locator('#canvas').boundingBox();
   await page.mouse.move(box.x + 520, box.y + 520);
   await page.mouse.down();
-  await page.mouse.move(box.x + 580, box.y + 560, { steps: 5 });
+  // The mesh follows the vertex while it moves: meshes arrive before the button is released.
+  const meshesBefore = await page.evaluate(() => Number(document.body.dataset.meshCount ?? 0));
+  for (let i = 1; i <= 12; i++) {
+    await page.mouse.move(box.x + 520 + 5 * i, box.y + 520 + 3 * i);
+    await page.waitForTimeout(40);
+  }
+  const meshesDuring = await page.evaluate(() => Number(document.body.dataset.meshCount ?? 0));
+  assert.ok(meshesDuring - meshesBefore >= 2, `${meshesDuring - meshesBefore} meshes during the drag`);
   await page.mouse.up();
   assert.equal(await settle(page), 'done');
-  assert.notEqual(await page.evaluate(() => location.hash), hashBefore, 'the drag moved a vertex');
+  assert.notEqual(await page.evaluate(() => /(?:^#|&)(d=[^&]*)/.exec(location.hash)?.[1]), hashBefore, 'the drag moved a vertex');
   assert.notDeepEqual(await readStats(page), before);
+  // The last mesh is of the last position: the drawing in the link, meshed by the package here,
+  // gives the same counts.
+  const dragged = await readStats(page);
+  const drawing = decodeDrawing(await page.evaluate(() => location.hash));
+  const expected = (await init()).triangulate(toPlc(drawing), toMeshOptions(drawing)).stats;
+  assert.equal(dragged.triangles, expected.triangles, 'the last position was meshed last');
+  assert.equal(dragged.vertices, expected.vertices, 'the last position was meshed last');
 
   // Delete the hole seed (the hole fills), then an inner vertex (its two segments go with it).
   await clickCanvas(page, ...HOLE);
@@ -143,14 +160,14 @@ test('select, drag and delete a vertex; zoom with the wheel', async () => {
   const opened = await readStats(page);
   assert.ok(opened.triangles > 0);
   assert.notDeepEqual(opened, filled);
-  const hash = await page.evaluate(() => location.hash);
+  const hash = await page.evaluate(() => /(?:^#|&)(d=[^&]*)/.exec(location.hash)?.[1]);
 
   const picture = await canvasFingerprint(page);
   await page.mouse.move(box.x + 300, box.y + 300);
   await page.mouse.wheel(0, -400);
   await page.waitForTimeout(100);
   assert.notEqual(await canvasFingerprint(page), picture, 'the wheel zoomed');
-  assert.equal(await page.evaluate(() => location.hash), hash, 'zooming does not change the drawing');
+  assert.equal(await page.evaluate(() => /(?:^#|&)(d=[^&]*)/.exec(location.hash)?.[1]), hash, 'zooming does not change the drawing');
 
   // Pan: middle-button drag, and Space + left drag (over a vertex: it must not move).
   for (const pan of ['middle', 'space']) {
@@ -163,7 +180,7 @@ test('select, drag and delete a vertex; zoom with the wheel', async () => {
     if (pan === 'space') await page.keyboard.up('Space');
     await page.waitForTimeout(100);
     assert.notEqual(await canvasFingerprint(page), before, `${pan} drag panned`);
-    assert.equal(await page.evaluate(() => location.hash), hash, `${pan} drag left the drawing alone`);
+    assert.equal(await page.evaluate(() => /(?:^#|&)(d=[^&]*)/.exec(location.hash)?.[1]), hash, `${pan} drag left the drawing alone`);
   }
   await page.keyboard.press('f');
 });
@@ -201,6 +218,8 @@ test('a long meshing job shows progress and can be cancelled', async () => {
   assert.equal(await settle(page), 'cancelled');
   assert.match(await page.locator('#status').textContent(), /cancelled/i);
   assert.equal(await page.locator('#cancel').isHidden(), true);
+  // The mesh still on screen is the older one: the panel must not call it complete.
+  assert.match(await page.locator('#stat-complete').textContent(), /cancelled/);
 
   // A fresh worker meshes the next request.
   await page.fill('#max-area', '');

@@ -1,7 +1,12 @@
 // Embedding: ?embed=1 and the postMessage protocol, through web/embed-example.html.
 import assert from 'node:assert/strict';
+import { createServer } from 'node:http';
 import { after, before, test } from 'node:test';
-import { SCREENSHOTS, launch, openPage } from './harness.mjs';
+import { init } from '../../wasm/index.js';
+import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/drawing.js';
+import { presetDrawing } from '../../web/presets.js';
+import { encodeDrawing } from '../../web/url-state.js';
+import { SCREENSHOTS, launch, openPage, settle } from './harness.mjs';
 
 let harness;
 let page;
@@ -69,6 +74,122 @@ test('a malformed .poly gets a ruppert:error reply', async () => {
   const reply = (await waitForReplies(before + 1)).at(-1);
   assert.equal(reply.kind, 'error');
   assert.match(reply.text, /PARSE_ERROR/);
+});
+
+test('the embed is read-only unless &edit=1', async () => {
+  for (const [query, editable] of [['embed=1', false], ['embed=1&edit=1', true]]) {
+    const { page: framed, errors: own } = await openPage(harness.context, `${harness.baseUrl}/web/index.html?${query}`);
+    assert.equal(await settle(framed), 'done');
+    const hash = await framed.evaluate(() => location.hash.replace(/&view=[^&]*/, ''));
+    const box = await framed.locator('#canvas').boundingBox();
+    await framed.mouse.click(box.x + box.width * 0.37, box.y + box.height * 0.41);
+    await framed.keyboard.press('Delete');
+    await framed.waitForTimeout(200);
+    const after = await framed.evaluate(() => location.hash.replace(/&view=[^&]*/, ''));
+    if (editable) assert.notEqual(after, hash, `${query}: a click adds a vertex`);
+    else assert.equal(after, hash, `${query}: a click leaves the drawing alone`);
+    assert.deepEqual(own, []);
+    await framed.close();
+  }
+});
+
+test('the embed shows the step controls, the legend and a link to the full page with the same state', async () => {
+  const { page: framed, errors: own } = await openPage(harness.context, `${harness.baseUrl}/web/index.html?embed=1`);
+  assert.equal(await settle(framed), 'done');
+  assert.equal(await framed.locator('#legend').isVisible(), true);
+  assert.equal(await framed.locator('#step-mode').isVisible(), true);
+  await framed.check('#step-mode');
+  assert.equal(await settle(framed), 'done');
+  assert.equal(await framed.locator('#step-forward').isVisible(), true);
+  await framed.click('#step-forward');
+  await framed.click('#step-forward');
+  await framed.waitForFunction(() => document.body.dataset.stepShown === '2');
+  await framed.waitForFunction(() => /&step=2/.test(document.getElementById('open-full').href));
+  const link = await framed.getAttribute('#open-full', 'href');
+  assert.doesNotMatch(link, /embed=1/);
+  // The link opens the full page at the same step.
+  const { page: full, errors: fullErrors } = await openPage(harness.context, new URL(link, framed.url()).href);
+  assert.equal(await settle(full), 'done');
+  await full.waitForFunction(() => document.body.dataset.stepShown === '2');
+  assert.match(await full.locator('#step-info').textContent(), /^Step 2 of \d+/);
+  assert.equal(await full.locator('#topbar').isVisible(), true);
+  await framed.screenshot({ path: `${SCREENSHOTS}embed-stepping.png` });
+  assert.deepEqual([...own, ...fullErrors], []);
+  await full.close();
+  await framed.close();
+});
+
+test('the link keeps the step, the colouring and the view', async () => {
+  const drawing = { ...presetDrawing('comb'), options: { ...DEFAULT_OPTIONS } };
+  const url = `${harness.baseUrl}/web/#${encodeDrawing(drawing)}&step=7&color=region&view=1.5,0.5,80`;
+  const { page: opened, errors: own } = await openPage(harness.context, url);
+  assert.equal(await settle(opened), 'done');
+  await opened.waitForFunction(() => document.body.dataset.stepShown === '7');
+  assert.match(await opened.locator('#step-info').textContent(), /^Step 7 of \d+/);
+  assert.equal(await opened.locator('#color-mode').inputValue(), 'region');
+  await opened.waitForTimeout(400);
+  const hash = await opened.evaluate(() => location.hash);
+  assert.match(hash, /&step=7/);
+  assert.match(hash, /&color=region/);
+  assert.match(hash, /&view=1\.5,0\.5,80/);
+  assert.deepEqual(own, []);
+  await opened.close();
+});
+
+test('a host page on another origin loads a drawing with an id and steps through it', async () => {
+  // The host is served by a second server (another port: another origin); the frame by the page's.
+  const frameUrl = `${harness.baseUrl}/web/index.html?embed=1`;
+  const frameOrigin = new URL(frameUrl).origin;
+  const host = `<!doctype html><meta charset="utf-8"><title>host</title>
+    <iframe id="f" src="${frameUrl}" width="640" height="480"></iframe>
+    <script>
+      window.replies = [];
+      const f = document.getElementById('f');
+      window.send = (message) => f.contentWindow.postMessage(message, ${JSON.stringify(frameOrigin)});
+      addEventListener('message', (e) => { if (e.source === f.contentWindow) window.replies.push(e.data); });
+    </script>`;
+  const server = createServer((request, response) => {
+    response.writeHead(200, { 'content-type': 'text/html; charset=utf-8' });
+    response.end(host);
+  });
+  await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
+  const hostUrl = `http://127.0.0.1:${server.address().port}/`;
+  assert.notEqual(new URL(hostUrl).origin, frameOrigin);
+  const { page: hostPage, errors: own } = await openPage(harness.context, hostUrl);
+  try {
+    await hostPage.waitForFunction(() => window.replies.some((r) => r.type === 'ruppert:meshed'), null, { timeout: 20_000 });
+    const poly = '4 2 0 0\n0 0 0\n1 6 0\n2 6 1\n3 0 1\n4 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n0\n';
+    await hostPage.evaluate((p) => window.send({ type: 'ruppert:load', id: 'lesson-1', poly: p, options: { minAngle: 30, placement: 'offcenter' } }), poly);
+    const meshed = await hostPage.waitForFunction(
+      () => window.replies.find((r) => r.type === 'ruppert:meshed' && r.id === 'lesson-1'), null, { timeout: 20_000 });
+    const stats = (await meshed.jsonValue()).stats;
+    const plc = { points: [0, 0, 6, 0, 6, 1, 0, 1], segments: [0, 1, 1, 2, 2, 3, 3, 0] };
+    const mesher = await init();
+    assert.equal(stats.triangles, mesher.triangulate(plc, { minAngle: 30 }).stats.triangles);
+    for (const index of [3, 0, 1]) {
+      await hostPage.evaluate((i) => window.send({ type: 'ruppert:step', index: i }), index);
+      const stepped = await (await hostPage.waitForFunction(
+        (i) => window.replies.find((r) => r.type === 'ruppert:stepped' && r.index === i), index, { timeout: 20_000 })).jsonValue();
+      const expected = mesher.triangulate(plc, { minAngle: 30, maxSteiner: index }).stats;
+      assert.equal(stepped.vertices, expected.vertices, `step ${index}`);
+      assert.equal(stepped.triangles, expected.triangles, `step ${index}`);
+      assert.equal(stepped.vertices, 4 + index);
+      assert.ok(stepped.total >= 3);
+      if (index > 0) assert.match(stepped.event, /vertex \d+/);
+      else assert.equal(stepped.event, null);
+    }
+    // A bad option is answered with an error carrying the id.
+    await hostPage.evaluate((p) => window.send({ type: 'ruppert:load', id: 9, poly: p, options: { minAngel: 30 } }), poly);
+    const error = await (await hostPage.waitForFunction(
+      () => window.replies.find((r) => r.type === 'ruppert:error' && r.id === 9), null, { timeout: 20_000 })).jsonValue();
+    assert.equal(error.code, 'INVALID_OPTION');
+    assert.match(error.message, /minAngel/);
+    assert.deepEqual(own, []);
+  } finally {
+    await hostPage.close();
+    server.closeAllConnections?.();
+    await new Promise((resolve) => server.close(resolve));
+  }
 });
 
 test('no console errors', () => {

@@ -76,7 +76,7 @@ test('keyboard only: tools, zoom, step mode, and a visible focus ring', async ()
   await page.keyboard.press('s');
   assert.equal(await page.isChecked('#step-mode'), true);
   assert.equal(await settle(page), 'done');
-  assert.match(await page.locator('#step-info').textContent(), /^Event 1 of \d+|No refinement events/);
+  assert.match(await page.locator('#step-info').textContent(), /^Step 0 of \d+: .*before refinement|No refinement events/);
   await page.keyboard.press('s');
   assert.equal(await page.isChecked('#step-mode'), false);
   await page.keyboard.press('g');
@@ -98,4 +98,20 @@ test('the server sends the right types and refuses paths outside the repository'
     assert.doesNotMatch(await response.text(), /root:/);
   }
   assert.equal((await get('/no-such-file.js')).status, 404);
+});
+
+test('the server serves only the page and the published package files', async () => {
+  const get = (path) => fetch(`${harness.baseUrl}${path}`);
+  for (const path of ['/.git/config', '/.git/HEAD', '/.gitignore', '/.ci/run', '/package.json', '/package-lock.json',
+    '/node_modules/playwright-core/package.json', '/README.md', '/core/src/refine.cpp', '/wasm/bindings.cpp',
+    '/tests/browser/harness.mjs', '/web/.hidden', '/wasm/']) {
+    const response = await get(path);
+    assert.equal(response.status, 404, `${path} answered ${response.status}`);
+    await response.arrayBuffer();
+  }
+  for (const path of ['/web/', '/web/index.html', '/web/main.js', '/wasm/index.js', '/wasm/dist/ruppert.mjs']) {
+    const response = await get(path);
+    assert.equal(response.status, 200, `${path} answered ${response.status}`);
+    await response.arrayBuffer();
+  }
 });

@@ -56,7 +56,7 @@ test('the two controls are labelled selects with the defaults', async () => {
 
 test('the comb preset tells how to compare the algorithms, and loads with CDT', async () => {
   const option = page.locator('#preset option[value="comb"]');
-  assert.match(await option.textContent(), /box/);
+  assert.match(await option.textContent(), /Fig\. 6\.16/);
   assert.match(await option.getAttribute('title'), /bounding box/);
   await page.selectOption('#preset', 'comb');
   const stats = await assertValidMesh(page, 'comb, CDT');

@@ -137,6 +137,47 @@ TEST_CASE("duplicate points are merged with a notice", "[repair]") {
   }
 }
 
+// Every point given twice (the copies after all originals, in reverse order, and the boundary's
+// segments drawn between copies): the same mesh as the points given once, refinement included, and
+// one notice per copy, in input order, naming the copy and its original.
+TEST_CASE("points given twice mesh as given once, with a notice per copy", "[repair]") {
+  const Plc once = randomPointsInSquare(11, 3000).plc;
+  const std::uint32_t n = static_cast<std::uint32_t>(once.points.size() / 2);
+  Plc twice = once;
+  for (std::uint32_t i = n; i-- > 0;) addPoint(twice, once.points[2 * i], once.points[2 * i + 1]);
+  const auto copyOf = [n](std::uint32_t i) { return 2 * n - 1 - i; };
+  for (std::uint32_t& v : twice.segments) v = copyOf(v);
+  for (double angle : {0.0, 30.0}) {
+    ruppert::Options o;
+    o.minAngle = angle;
+    const Mesh a = ruppert::triangulate(once, o), b = ruppert::triangulate(twice, o);
+    REQUIRE_VALID(b);
+    // Steiner vertices are numbered after the input points: compare corners, not indices.
+    const auto corners = [](const Mesh& m, const std::vector<std::uint32_t>& ids) {
+      std::vector<double> xy;
+      for (std::uint32_t v : ids) xy.push_back(m.points[2 * v]), xy.push_back(m.points[2 * v + 1]);
+      return xy;
+    };
+    CHECK(a.triangles.size() == b.triangles.size());
+    CHECK(corners(a, a.triangles) == corners(b, b.triangles));
+    CHECK(corners(a, a.segments) == corners(b, b.segments));
+    CHECK(a.segmentIds == b.segmentIds);
+    REQUIRE(countNotices(b, NoticeKind::DuplicatePoint) == n);
+    std::uint32_t k = 0;
+    for (const auto& notice : b.notices) {
+      if (notice.kind != NoticeKind::DuplicatePoint) continue;
+      const std::uint32_t copy = n + k++, original = copyOf(copy);
+      REQUIRE(notice.a == copy);
+      REQUIRE(notice.b == original);
+      REQUIRE(notice.x == once.points[2 * original]);
+      REQUIRE(notice.y == once.points[2 * original + 1]);
+      REQUIRE(mentionsNumber(notice.message, std::to_string(copy)));
+      REQUIRE(mentionsNumber(notice.message, std::to_string(original)));
+      REQUIRE(b.vertexKinds[copy] == std::uint8_t(VertexKind::Unused));
+    }
+  }
+}
+
 TEST_CASE("zero-length segments are dropped with a notice", "[repair]") {
   Plc plc = square();
   plc.segments.insert(plc.segments.end(), {1, 1});  // segment 4
@@ -377,6 +418,26 @@ TEST_CASE("hole seeds outside the domain or on a segment", "[repair]") {
     const auto e = expectError(plc);
     CHECK(e.code() == ErrorCode::EmptyDomain);
     CHECK(mentionsWord(e.what(), "holes[0]"));
+    CHECK(std::string(e.what()).find("only region the segments enclose") != std::string::npos);
+  }
+  SECTION("inside the only closed polygon: the message says so, not that the boundary is open") {
+    Plc plc = square(1);
+    plc.holes = {0.5, 0.5};
+    const auto e = expectError(plc);
+    CHECK(e.code() == ErrorCode::EmptyDomain);
+    INFO(e.what());
+    CHECK(std::string(e.what()).find("only region the segments enclose") != std::string::npos);
+    CHECK(std::string(e.what()).find("not closed") == std::string::npos);
+  }
+  SECTION("among segments that enclose nothing: the hull is the hole's region") {
+    Plc plc;
+    plc.points = {0, 0, 10, 0, 10, 10, 0, 10};
+    plc.segments = {0, 1, 1, 2};
+    plc.holes = {5, 5};
+    const auto e = expectError(plc);
+    CHECK(e.code() == ErrorCode::EmptyDomain);
+    INFO(e.what());
+    CHECK(std::string(e.what()).find("enclose no region") != std::string::npos);
   }
 }
 

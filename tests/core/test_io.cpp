@@ -194,6 +194,23 @@ TEST_CASE("readFile takes the points of a .poly declaring 0 points from the .nod
   CHECK(p.holes.empty());
 }
 
+TEST_CASE("parsePolyWithNode takes the points of a .poly declaring 0 points from the .node text", "[io]") {
+  const std::string poly = "# points live in the .node\n0 2 0 1\n2 0\n1 1 2\n2 2 3\n0\n";
+  const std::string nodeText = "3 2 0 1\n1 0 0 5\n2 2 0 6\n3 0 2 7\n";
+  const ruppert::Plc p = ruppert::parsePolyWithNode(poly, nodeText, "in.poly", "in.node");
+  CHECK(p.indexBase == 1);
+  CHECK(p.points == std::vector<double>{0, 0, 2, 0, 0, 2});
+  CHECK(p.pointMarkers == std::vector<std::int32_t>{5, 6, 7});
+  CHECK(p.segments == std::vector<std::uint32_t>{0, 1, 1, 2});
+  // The .node's own errors name the .node; a segment past its points names the .poly.
+  CHECK_THROWS_WITH(ruppert::parsePolyWithNode(poly, "3 2 0 1\n1 0 0\n", "in.poly", "in.node"),
+                    Catch::Matchers::Contains("in.node:"));
+  CHECK_THROWS_WITH(ruppert::parsePolyWithNode(poly, "1 2 0 0\n1 0 0\n", "in.poly", "in.node"),
+                    Catch::Matchers::Contains("in.poly:"));
+  // Without the .node text the message says what to pass.
+  CHECK_THROWS_WITH(ruppert::parsePoly(poly, "in.poly"), Catch::Matchers::Contains("parsePoly(polyText, { node: nodeText })"));
+}
+
 TEST_CASE("readFile dispatches on the extension and reports unreadable files", "[io]") {
   CHECK(ruppert::readFile(kFixtures + "split-points.node").points.size() == 8);
   CHECK(ruppert::readFile(kFixtures + "square-with-hole.json").points.size() == 16);

@@ -275,6 +275,16 @@ test('onProgress reports and can stop refinement early', async () => {
   assert.deepEqual(validateMesh(mesh, { input: square }), []);
 });
 
+test('maxSteiner: 0 inserts nothing, maxSteiner: k exactly k vertices', async () => {
+  const mesher = await init();
+  for (const k of [0, 1, 5]) {
+    const mesh = mesher.triangulate(square, { minAngle: 30, maxArea: 0.001, maxSteiner: k });
+    assert.equal(mesh.points.length / 2, 4 + k, `budget ${k}`);
+    assert.equal(mesh.complete, false);
+    assert.equal(mesh.reasons[0].kind, 'STEINER_BUDGET');
+  }
+});
+
 test('trace records every insertion as typed arrays', async () => {
   const mesher = await init();
   const mesh = mesher.triangulate(square, { minAngle: 30, maxArea: 0.01, trace: true });
@@ -286,12 +296,35 @@ test('trace records every insertion as typed arrays', async () => {
   assert.equal(mesher.triangulate(square, { minAngle: 30, maxArea: 0.01 }).events, undefined);
 });
 
+// Notices and reasons come back through the heap (wasm/heap-call.js), not as embind objects.
+test('points given twice: one DUPLICATE_POINT notice per copy, in input order, and the same mesh', async () => {
+  const mesher = await init();
+  const n = 500;
+  const points = new Float64Array(4 * n);
+  for (let i = 0; i < 2 * n; i++) points[i] = ((i * 7919) % 1009) / 1009 + i / 1e6;
+  points.set(points.subarray(0, 2 * n), 2 * n);
+  const once = mesher.triangulate({ points: points.subarray(0, 2 * n) }, { minAngle: 0 });
+  const twice = mesher.triangulate({ points }, { minAngle: 0 });
+  assert.deepEqual(twice.triangles, once.triangles);
+  assert.equal(twice.notices.length, n);
+  twice.notices.forEach((notice, k) => {
+    assert.deepEqual({ ...notice, message: undefined },
+      { kind: 'DUPLICATE_POINT', a: n + k, b: k, x: points[2 * k], y: points[2 * k + 1], message: undefined });
+    assert.equal(notice.message, `points[${n + k}] duplicates points[${k}]; merged`);
+  });
+  const limited = mesher.triangulate({ points }, { minAngle: 30, maxArea: 1e-4, maxSteiner: 5 });
+  assert.ok(limited.reasons.some((r) => r.kind === 'STEINER_BUDGET' && r.count > 0 && r.message.length > 0),
+    JSON.stringify(limited.reasons));
+});
+
 test('the heap does not grow over 10,000 calls (successes and every failure path)', async () => {
   const mesher = await init();
   const tiny = { points: [0, 0, 1, 0, 1, 1, 0, 1, 0.3, 0.6], segments: square.segments, holes: [], regions: [] };
   const round = (i) => {
-    switch (i % 5) {
+    switch (i % 6) {
       case 0: return mesher.triangulate(tiny, { minAngle: 0 });
+      // Notices (a duplicate, nothing enclosed) and a reason (the Steiner budget), read from the heap.
+      case 5: return mesher.triangulate({ points: [...tiny.points, 1, 1] }, { minAngle: 30, maxArea: 0.01, maxSteiner: 3 });
       case 1: try { mesher.triangulate({ points: [0, 0, 1, 1, 2, 2] }, { minAngle: 0 }); } catch { /* C++ throw */ } return null;
       case 2: try { mesher.parsePoly('3 2 0 0\n1 0 0\n'); } catch { /* parse error */ } return null;
       case 3: try { mesher.triangulate(tiny, { minAngle: 0, sizeFunction: () => { throw new Error('x'); } }); } catch { /* callback */ } return null;

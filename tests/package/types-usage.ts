@@ -29,13 +29,15 @@ async function example(): Promise<number> {
   const splits = mesh.events ? mesh.events.kind.filter((k) => k === EventKind.SEGMENT_SPLIT).length : 0;
   const text: string = toPoly(mesh, plc) + toSVG(mesh) + mesher.toNode(mesh) + mesher.toEle(mesh);
   const parsed = parsePoly(text);
+  const split = parsePoly('0 2 0 0\n1 0\n0 0 1\n0\n', { name: 'a.poly', node: '2 2 0 0\n0 0 0\n1 1 1\n', nodeName: 'a.node' });
+  void split.segments;
   const firstX: number = parsed.points[0];
   const reasons: string[] = mesh.reasons.map((r) => `${r.kind}: ${r.message}`);
   return triangles.length + boundary + interior + splits + firstX + reasons.length + mesh.stats.minAngle;
 }
 
 async function worker(): Promise<Mesh> {
-  const meshWorker = createMeshWorker();
+  const meshWorker = createMeshWorker({ workerUrl: new URL('https://example.org/worker.js'), wasmUrl: '/ruppert.wasm' });
   const controller = new AbortController();
   try {
     return await meshWorker.triangulate({ points: [0, 0, 1, 0, 0, 1] }, { minAngle: 20 },
@@ -59,6 +61,10 @@ async function misuse(mesher: Mesher): Promise<void> {
   mesher.triangulate({ segments: [0, 1] });
   // @ts-expect-error the worker cannot take a function
   createMeshWorker().triangulate({ points: [] }, { sizeFunction: () => 1 });
+  // @ts-expect-error a function cannot be sent to the worker
+  createMeshWorker({ locateFile: (file: string) => file });
+  // @ts-expect-error parsePoly's options have no 'nodes'
+  parsePoly('', { nodes: '' });
   // @ts-expect-error mesh.triangles is not writable as a plain array
   const t: number[] = (await init()).triangulate({ points: [] }).triangles;
   void t;

@@ -257,6 +257,10 @@ Plc readFile(const std::string& path);
 Plc parsePoly(const std::string& text, const std::string& name = "<poly>");
 Plc parseNode(const std::string& text, const std::string& name = "<node>");
 Plc parseJson(const std::string& text, const std::string& name = "<json>");
+// Triangle's .poly that declares 0 points, with the text of its .node file, which holds them (as
+// readFile does for files; the .node text is used only when the .poly declares 0 points).
+Plc parsePolyWithNode(const std::string& polyText, const std::string& nodeText,
+                      const std::string& polyName = "<poly>", const std::string& nodeName = "<node>");
 
 // Writers print coordinates with 17 significant digits (they read back bit-exact) and indices in
 // mesh.indexBase.

@@ -1,0 +1,80 @@
+// The chapter's figures as presets (each names its figure in a caption), and the page's small
+// promises: the slider's warning past 34 degrees, the preset box after a file is opened.
+import assert from 'node:assert/strict';
+import { after, before, test } from 'node:test';
+import { PRESETS } from '../../web/presets.js';
+import { SCREENSHOTS, launch, openPage, readStats, settle } from './harness.mjs';
+
+let harness;
+let page;
+let errors;
+
+before(async () => {
+  harness = await launch();
+  ({ page, errors } = await openPage(harness.context, `${harness.baseUrl}/web/`));
+  assert.equal(await settle(page), 'done');
+});
+
+after(async () => {
+  await harness?.close();
+});
+
+test('the first sight is a figure of the chapter that refines visibly', async () => {
+  const stats = await readStats(page);
+  assert.ok(stats.triangles >= 50, `${stats.triangles} triangles`);
+  assert.match(await page.locator('#preset-caption').textContent(), /^Figure 6\.9:/);
+});
+
+test('each figure preset names its figure, applies its options and meshes completely', async () => {
+  const figures = PRESETS.filter((p) => p.caption);
+  assert.ok(figures.length >= 9, `${figures.length} figure presets`);
+  for (const preset of figures) {
+    await page.selectOption('#preset', preset.id);
+    assert.equal(await settle(page), 'done', preset.id);
+    assert.match(preset.name, /^Figs?\. 6\.\d+/, preset.id);
+    const caption = await page.locator('#preset-caption').textContent();
+    assert.match(caption, /^Figures? 6\.\d+/, `${preset.id}: ${caption}`);
+    assert.equal(await page.locator('#preset-caption').isVisible(), true);
+    if (preset.options?.minAngle !== undefined) {
+      assert.equal(Number(await page.inputValue('#min-angle')), preset.options.minAngle, preset.id);
+    }
+    if (preset.options?.variant) assert.equal(await page.inputValue('#variant'), preset.options.variant, preset.id);
+    if (preset.steps) assert.equal(await page.isChecked('#step-mode'), true, `${preset.id} opens in step mode`);
+    const stats = await readStats(page);
+    assert.equal(stats.complete, 'yes', preset.id);
+    await page.screenshot({ path: `${SCREENSHOTS}figure-${preset.id}.png` });
+  }
+  await page.uncheck('#step-mode');
+  await settle(page);
+});
+
+test('the slider warns past 34 degrees', async () => {
+  await page.fill('#min-angle', '33');
+  await page.press('#min-angle', 'Enter');
+  await settle(page);
+  assert.equal(await page.locator('#min-angle-warning').isHidden(), true);
+  await page.fill('#min-angle', '36');
+  await page.press('#min-angle', 'Enter');
+  await settle(page);
+  assert.equal(await page.locator('#min-angle-warning').isVisible(), true);
+  assert.equal(await page.getAttribute('#min-angle-range', 'list'), 'angle-marks');
+  const marks = await page.locator('#angle-marks option').evaluateAll((o) => o.map((x) => Number(x.value)));
+  assert.ok(marks.includes(20.7) && marks.includes(34), marks.join(', '));
+  await page.fill('#min-angle', '30');
+  await page.press('#min-angle', 'Enter');
+  await settle(page);
+});
+
+test('opening a file clears the preset box and its caption', async () => {
+  await page.selectOption('#preset', 'comb');
+  await settle(page);
+  const poly = '4 2 0 0\n0 0 0\n1 3 0\n2 3 2\n3 0 2\n4 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n0\n';
+  await page.setInputFiles('#file-input', { name: 'rectangle.poly', mimeType: 'text/plain', buffer: Buffer.from(poly) });
+  assert.equal(await settle(page), 'done');
+  assert.equal(await page.inputValue('#preset'), '');
+  assert.equal(await page.locator('#preset-caption').isHidden(), true);
+});
+
+test('no console errors', () => {
+  assert.deepEqual(errors, []);
+});
