@@ -74,13 +74,56 @@ class SegmentInserter {
     const std::uint32_t a0 = rep[plc.segments[2 * old]], b0 = rep[plc.segments[2 * old + 1]];
     const std::uint32_t a1 = rep[plc.segments[2 * id]], b1 = rep[plc.segments[2 * id + 1]];
     const bool same = (a0 == a1 && b0 == b1) || (a0 == b1 && b0 == a1);
-    for (const Notice& n : m_.notices)
-      if ((n.kind == NoticeKind::DuplicateSegment || n.kind == NoticeKind::SegmentsOverlap) && n.a == id && n.b == old)
-        return;
-    Notice n{same ? NoticeKind::DuplicateSegment : NoticeKind::SegmentsOverlap, id, old, 0, 0, ""};
-    n.message = same ? segName(id) + " duplicates " + segName(old) + "; merged"
-                     : segName(id) + " overlaps " + segName(old) + " along a collinear piece; they share it";
-    m_.notices.push_back(std::move(n));
+    if (same) {
+      for (const Notice& n : m_.notices)
+        if (n.kind == NoticeKind::DuplicateSegment && n.a == id && n.b == old) return;
+      Notice n{NoticeKind::DuplicateSegment, id, old, 0, 0, segName(id) + " duplicates " + segName(old) + "; merged"};
+      m_.notices.push_back(std::move(n));
+      return;
+    }
+    reportShared(id, old, t_.origin(h), t_.dest(h));
+  }
+
+  // Two segments share the edge u-w: collinear ones along a common piece, segments at a tiny angle
+  // where one's vertex lies within rounding of the other (kOnPiece, kSnap). One notice per pair,
+  // naming the whole stretch they share along the first segment (its extent grows with each edge).
+  struct Shared {
+    std::size_t notice;
+    std::uint32_t lo, hi;  // the shared stretch's ends, ordered along segment `first`
+  };
+  std::vector<Shared> shared_;
+
+  void reportShared(std::int32_t id, std::int32_t old, std::uint32_t u, std::uint32_t w) {
+    const Plc& plc = *m_.plc;
+    const auto& rep = m_.input.representative;
+    const std::int32_t first = std::min(id, old), second = std::max(id, old);
+    const double* s0 = t_.pt(rep[plc.segments[2 * first]]);
+    const double* s1 = t_.pt(rep[plc.segments[2 * first + 1]]);
+    auto along = [&](std::uint32_t v) { return (t_.xy[2 * v] - s0[0]) * (s1[0] - s0[0]) + (t_.xy[2 * v + 1] - s0[1]) * (s1[1] - s0[1]); };
+    if (along(w) < along(u)) std::swap(u, w);
+    Shared* entry = nullptr;
+    for (Shared& e : shared_)
+      if (m_.notices[e.notice].a == first && m_.notices[e.notice].b == second) entry = &e;
+    if (!entry) {
+      Notice n{NoticeKind::SegmentsOverlap, first, second, 0, 0, ""};
+      m_.notices.push_back(std::move(n));
+      shared_.push_back({m_.notices.size() - 1, u, w});
+      entry = &shared_.back();
+    }
+    if (along(u) < along(entry->lo)) entry->lo = u;
+    if (along(w) > along(entry->hi)) entry->hi = w;
+    const double* t0 = t_.pt(rep[plc.segments[2 * second]]);
+    const double* t1 = t_.pt(rep[plc.segments[2 * second + 1]]);
+    const bool collinear = orient2d(s0, s1, t0) == 0 && orient2d(s0, s1, t1) == 0;
+    Notice& n = m_.notices[entry->notice];
+    n.x = m_.input.toUser(t_.xy[2 * entry->lo]), n.y = m_.input.toUser(t_.xy[2 * entry->lo + 1]);
+    const std::string stretch = "between (" + formatNumber(n.x) + ", " + formatNumber(n.y) + ") and (" +
+                                formatNumber(m_.input.toUser(t_.xy[2 * entry->hi])) + ", " +
+                                formatNumber(m_.input.toUser(t_.xy[2 * entry->hi + 1])) + ")";
+    n.message = collinear ? segName(first) + " and " + segName(second) + " overlap along a collinear piece " + stretch +
+                                "; they share it"
+                          : segName(first) + " and " + segName(second) + " meet at a tiny angle and lie within rounding of " +
+                                "each other " + stretch + "; they share that stretch";
   }
 
   void vertexOnSegment(std::uint32_t w, std::int32_t id) {
@@ -380,6 +423,10 @@ void insertHull(MeshState& m) {
   }
   SegmentInserter inserter(m);
   for (std::size_t k = 0; k < hull.size(); ++k) inserter.insert(hull[k], hull[(k + 1) % hull.size()], kHullEdge);
+  // After the segments (no region enclosed), hull edges a few ulps from nearly collinear segments
+  // can cross their chains; those repairs need the same last Lawson pass as insertSegments' (issue
+  // 19: a careless PLC whose points all lay within rounding of one line kept a non-Delaunay edge).
+  if (inserter.repairs() > 0) m.tri.legalizeAll();
 }
 
 void insertSegments(MeshState& m) {

@@ -229,6 +229,53 @@ GeneratedPlc crossingClusters(std::uint64_t seed, double decades) {
   return g;
 }
 
+GeneratedPlc nearOverlaps(std::uint64_t seed) {
+  Draw draw(seed);
+  GeneratedPlc g;
+  auto point = [&](double x, double y) {
+    g.plc.points.insert(g.plc.points.end(), {x, y});
+    return std::uint32_t(g.plc.points.size() / 2 - 1);
+  };
+  auto segment = [&](std::uint32_t a, std::uint32_t b) { g.plc.segments.insert(g.plc.segments.end(), {a, b}); };
+  auto hair = [&](int from, int to) { return std::ldexp(draw.unit() < 0.5 ? 1.0 : -1.0, -from - int(draw.below(std::uint64_t(to - from + 1)))); };
+  const double sx = draw.unit() < 0.5 ? 0 : roundToGrid(draw.unit() * 4 - 2);
+  const double sy = draw.unit() < 0.5 ? 0 : roundToGrid(draw.unit() * 4 - 2);
+  const std::uint32_t corner = point(-1 + sx, -1 + sy);
+  point(1 + sx, -1 + sy), point(1 + sx, 1 + sy), point(-1 + sx, 1 + sy);
+  for (std::uint32_t k = 0; k < 4; ++k) segment(corner + k, corner + (k + 1) % 4);
+  for (std::uint64_t b = 0, bundles = 1 + draw.below(3); b < bundles; ++b) {
+    const std::uint64_t where = draw.below(4);  // inside, inside, a corner, the right edge
+    double ax = roundToGrid(draw.unit() * 1.6 - 0.8) + sx, ay = roundToGrid(draw.unit() * 1.6 - 0.8) + sy;
+    if (where == 2) ax = sx + (draw.unit() < 0.5 ? -1 : 1), ay = sy + (draw.unit() < 0.5 ? -1 : 1);
+    if (where == 3) ax = sx + 1;
+    const std::uint32_t apex = point(ax, ay);
+    const double base = draw.unit() * 2 * kPi, len = 0.2 + draw.unit() * 1.5;
+    const bool fan = draw.unit() < 0.5;
+    std::uint32_t firstEnd = 0;
+    for (std::uint64_t k = 0, n = 2 + draw.below(4); k < n; ++k) {
+      const double angle = k == 0 ? base : base + (draw.unit() < 0.5 ? 1 : -1) * std::pow(10.0, -3 - 9 * draw.unit());
+      const double l = draw.unit() < 0.3 ? len : len * (0.5 + draw.unit());
+      // From the apex, or from a point a hair beside it; to the far end, a point a hair beside the
+      // first segment's far end, or beside it on the line.
+      const std::uint32_t from = fan || k == 0 ? apex : point(ax + hair(20, 45), ay + hair(20, 45));
+      std::uint32_t to = point(ax + l * std::cos(angle), ay + l * std::sin(angle));
+      if (k == 0) firstEnd = to;
+      if (k > 0 && draw.unit() < 0.3)
+        to = point(g.plc.points[2 * firstEnd] + hair(20, 45), g.plc.points[2 * firstEnd + 1] + hair(20, 45));
+      segment(from, to);
+    }
+    const double mx = ax + 0.5 * len * std::cos(base), my = ay + 0.5 * len * std::sin(base);
+    for (std::uint64_t k = 0, n = draw.below(4); k < n; ++k) {  // segments across the bundle
+      const double across = base + kPi / 2 + (draw.unit() - 0.5) * 2.5, reach = 0.05 + draw.unit() * 0.5;
+      const double t = (draw.unit() - 0.5) * len;
+      const double cx = mx + t * std::cos(base), cy = my + t * std::sin(base);
+      segment(point(cx - reach * std::cos(across), cy - reach * std::sin(across)),
+              point(cx + reach * std::cos(across), cy + reach * std::sin(across)));
+    }
+  }
+  return g;
+}
+
 GeneratedPlc randomGridSegments(std::uint64_t seed, std::size_t n, std::uint32_t size) {
   Draw draw(seed);
   GeneratedPlc g;

@@ -59,6 +59,14 @@ GeneratedPlc chordStar(std::uint64_t seed, std::size_t n);
 // hundred ulps apart (area = 0, not computed).
 GeneratedPlc crossingClusters(std::uint64_t seed, double decades);
 
+// The square [-1, 1]^2, shifted by up to 2, and one to three bundles of 2 to 5 segments that nearly
+// overlap: a pair or fan from one apex (inside the square, at a corner or on its right edge) at
+// angles of 1e-3 to 1e-12 rad from the first segment, or from apexes a hair (2^-20 to 2^-45) apart;
+// some end at near-duplicate points, some end on the square's boundary, and 0 to 3 other segments
+// cross each bundle. Segments meeting at tiny angles, not crossing ones, are the point here
+// (area = 0, not computed).
+GeneratedPlc nearOverlaps(std::uint64_t seed);
+
 // An nx-by-ny grid of points spaced `step` apart with the grid's boundary as segments between
 // neighbouring boundary points (so every boundary side is a chain of collinear points), plus, when
 // `crossLines` is set, the middle row and column as chains of segments. Every unit cell's corners are

@@ -632,15 +632,42 @@ void checkSegmentCoverage(const Scaled& s, const EdgeMaps& maps, const ValidateO
 
     // No complete chain: acceptable only where the missing pieces lie outside the meshed domain (the
     // segment runs through a hole or outside the domain and its subsegments were removed with it).
-    // Consecutive vertices along the segment must be joined by a carrier, so a chain that steps back
-    // (a subsegment passing beside a vertex of the segment) leaves a gap.
-    std::vector<std::pair<double, std::uint32_t>> stations{{0.0, a}, {1.0, b}};
-    for (const auto& entry : graph) stations.emplace_back(param(entry.first), entry.first);
+    // Stations are the vertices of the segment's own subsegments and those exactly on it. A carrier
+    // passing beside a station (one strictly between its ends along the segment) covers nothing, so a
+    // chain that steps back past a vertex of its segment leaves a gap; the other carriers cover
+    // their stretch. A segment meeting this one at a tiny angle (issue 19) has vertices within the
+    // tolerance that are on its own chain, not this one's: they are not stations, and its carriers
+    // may pass beside this one's stations, which this one's own chain then covers.
+    std::unordered_set<std::uint32_t> own;
+    for (std::uint32_t k : subsegmentsOf[seg]) own.insert(m.segments[2 * k]), own.insert(m.segments[2 * k + 1]);
+    std::vector<double> stations{param(a), param(b)};  // param(b) may round off 1
+    for (const auto& entry : graph)
+      if (own.count(entry.first) || orient2d(s.p(a), s.p(b), s.p(entry.first)) == 0)
+        stations.push_back(param(entry.first));
     std::sort(stations.begin(), stations.end());
-    stations.erase(std::unique(stations.begin(), stations.end()), stations.end());
-    for (std::size_t k = 0; k + 1 < stations.size(); ++k) {
-      const std::uint32_t u = stations[k].second, w = stations[k + 1].second;
-      if (carrierEdges.count(undirectedKey(u, w)) || maps.subsegments.count(undirectedKey(u, w))) continue;
+    struct Cover {
+      double lo, hi;
+      std::uint32_t from, to;  // the vertices at lo and hi
+    };
+    std::vector<Cover> covers;
+    for (std::uint64_t e : carrierEdges) {
+      std::uint32_t u = std::uint32_t(e >> 32), w = std::uint32_t(e);
+      if (param(w) < param(u)) std::swap(u, w);
+      const auto inside = std::upper_bound(stations.begin(), stations.end(), param(u));
+      if (inside != stations.end() && *inside < param(w)) continue;  // passes beside a station
+      covers.push_back({param(u), param(w), u, w});
+    }
+    std::sort(covers.begin(), covers.end(), [](const Cover& x, const Cover& y) { return x.lo < y.lo; });
+    covers.push_back({param(b), param(b), b, b});  // the far end closes the last stretch
+    std::uint32_t reached = a;
+    double reachedParam = param(a);
+    for (const Cover& c : covers) {
+      if (c.lo <= reachedParam) {
+        if (c.hi > reachedParam) reached = c.to, reachedParam = c.hi;
+        continue;
+      }
+      const std::uint32_t u = reached, w = c.from;
+      reached = c.to, reachedParam = c.hi;
       // A stretch no longer than the tolerance is rounding: within a cluster that small, the order of
       // vertices along the segment means little.
       if (std::hypot(s.p(w)[0] - s.p(u)[0], s.p(w)[1] - s.p(u)[1]) <= tol) continue;

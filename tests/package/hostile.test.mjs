@@ -8,7 +8,8 @@ import { existsSync, readFileSync } from 'node:fs';
 import { extname, join } from 'node:path';
 import { test } from 'node:test';
 import { init, MeshError, parseJson, parseNode, parsePoly } from 'ruppert';
-import { validateMesh, triangleAngles } from './validate-mesh.mjs';
+import { problemsOf } from './judge-mesh.mjs';
+import { validateMesh } from './validate-mesh.mjs';
 
 const dir = process.env.RUPPERT_HOSTILE;
 const haveCatalogue = dir !== undefined && existsSync(join(dir, 'expectations.txt'));
@@ -28,41 +29,6 @@ const modes = [
   { name: 'min angle 30', options: { minAngle: 30, maxSteiner: 20000 } },
   { name: 'min angle 40', options: { minAngle: 40, maxSteiner: 20000 } },
 ];
-
-// The same mesh scaled by a power of two (exact) so that its largest coordinate is near 1: the
-// validator's plain-double predicates would overflow on 1e300 or underflow on 1e-300 coordinates.
-function scaled(mesh, plc) {
-  let largest = 0;
-  for (const v of mesh.points) largest = Math.max(largest, Math.abs(v));
-  const exponent = largest > 0 ? -Math.ceil(Math.log2(largest)) : 0;
-  // In two steps: for subnormal extents 2^exponent itself overflows.
-  const half = 2 ** Math.trunc(exponent / 2), rest = 2 ** (exponent - Math.trunc(exponent / 2));
-  const scale = (array) => Float64Array.from(array, (v) => v * half * rest);
-  return { mesh: { ...mesh, points: scale(mesh.points) }, input: { ...plc, points: scale(plc.points) } };
-}
-
-// Inputs the core repaired (duplicates, overlaps, crossings) have segments that no chain of
-// subsegments with that id covers one to one, so the per-segment cover check applies only to
-// inputs the core took as they were.
-const repairKinds = new Set(['DUPLICATE_SEGMENT', 'ZERO_LENGTH_SEGMENT', 'VERTEX_ON_SEGMENT', 'SEGMENTS_OVERLAP', 'SEGMENTS_CROSS']);
-
-function problemsOf(mesh, plc, options) {
-  const { mesh: m, input } = scaled(mesh, plc);
-  const repaired = mesh.notices.some((n) => repairKinds.has(n.kind));
-  const problems = validateMesh(m, repaired ? {} : { input });
-  // Angles: a complete mesh meets the bound unless the core names triangles it exempts (small input
-  // angles, seditious edges: section 6.6), which this validator does not re-derive.
-  const exempting = mesh.reasons.some((r) => r.kind === 'SMALL_INPUT_ANGLE' || r.kind === 'SEDITIOUS_EDGE');
-  if (mesh.complete && options.minAngle > 0 && !exempting) {
-    const t = m.triangles;
-    for (let k = 0; k < t.length / 3; k++) {
-      const smallest = Math.min(...triangleAngles(m.points, t[3 * k], t[3 * k + 1], t[3 * k + 2]));
-      if (smallest < options.minAngle - 1e-6) problems.push(`complete, but triangle ${k} has angle ${smallest}`);
-    }
-  }
-  if (!mesh.complete && mesh.reasons.length === 0) problems.push('incomplete without a reason');
-  return problems;
-}
 
 test('every file of the hostile catalogue has the expected outcome through the package', { skip: !haveCatalogue && `catalogue not found (${dir})` }, async () => {
   const mesher = await init();

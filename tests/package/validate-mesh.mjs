@@ -5,33 +5,20 @@
 //   * orientation: every triangle is counter-clockwise with non-zero area;
 //   * topology: neighbours are symmetric and share the edge, no edge has three triangles, every
 //     boundary edge is a subsegment;
-//   * constraints: every subsegment is a triangle edge; each input segment is covered exactly
-//     by the subsegments carrying its id (same total length, all on the segment's line);
-//   * constrained Delaunay: across every edge that is not a subsegment, the opposite vertex is
-//     not inside the circumcircle (a relative tolerance absorbs rounding of the doubles);
+//   * constraints: every subsegment is a triangle edge and lies on its input segment's line; every
+//     input segment is a chain of subsegments from end to end except where it runs outside the
+//     domain, repaired inputs included (validate-chains.mjs); on inputs the core did not repair,
+//     the subsegments carrying a segment's id add up to no more than its length;
+//   * orientation and constrained Delaunay with exact signs (exact-predicates.mjs): across every
+//     edge that is not a subsegment, the opposite vertex is not strictly inside the circumcircle;
 //   * bounds, when asked: minimum angle, maximum area.
 // Returns a list of problems (empty when valid) so a failing test shows what broke.
 
-const EPS = 1e-12;
+import { incircle, orient } from './exact-predicates.mjs';
+import { chainProblems, segmentTolerance } from './validate-chains.mjs';
 
-function orient(ax, ay, bx, by, cx, cy) {
-  const l = (bx - ax) * (cy - ay);
-  const r = (by - ay) * (cx - ax);
-  return { det: l - r, bound: EPS * (Math.abs(l) + Math.abs(r)) };
-}
-
-// > 0 when d is inside the circle through a, b, c (counter-clockwise).
-function incircle(ax, ay, bx, by, cx, cy, dx, dy) {
-  const adx = ax - dx, ady = ay - dy, bdx = bx - dx, bdy = by - dy, cdx = cx - dx, cdy = cy - dy;
-  const alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy, clift = cdx * cdx + cdy * cdy;
-  const t1 = alift * (bdx * cdy - bdy * cdx);
-  const t2 = blift * (cdx * ady - cdy * adx);
-  const t3 = clift * (adx * bdy - ady * bdx);
-  const permanent = alift * (Math.abs(bdx * cdy) + Math.abs(bdy * cdx)) +
-    blift * (Math.abs(cdx * ady) + Math.abs(cdy * adx)) +
-    clift * (Math.abs(adx * bdy) + Math.abs(ady * bdx));
-  return { det: t1 + t2 + t3, bound: 1e-10 * permanent };
-}
+const repairKinds = new Set(['DUPLICATE_SEGMENT', 'ZERO_LENGTH_SEGMENT', 'VERTEX_ON_SEGMENT', 'SEGMENTS_OVERLAP',
+  'SEGMENTS_CROSS', 'DUPLICATE_POINT']);
 
 export function triangleAngles(p, a, b, c) {
   const len2 = (i, j) => (p[2 * i] - p[2 * j]) ** 2 + (p[2 * i + 1] - p[2 * j + 1]) ** 2;
@@ -76,8 +63,8 @@ export function validateMesh(mesh, checks = {}) {
   // Orientation.
   for (let k = 0; k < nt; k++) {
     const a = t[3 * k], b = t[3 * k + 1], c = t[3 * k + 2];
-    const { det, bound } = orient(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1], p[2 * c], p[2 * c + 1]);
-    if (!(det > 0) && !(det > -bound && bound > 0)) report(`triangle ${k} (${a}, ${b}, ${c}) is not counter-clockwise (det ${det})`);
+    const o = orient(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1], p[2 * c], p[2 * c + 1]);
+    if (!(o > 0)) report(`triangle ${k} (${a}, ${b}, ${c}) is ${o === 0 ? 'degenerate' : 'clockwise'}`);
   }
 
   // Edges: each at most twice, neighbours symmetric.
@@ -123,8 +110,7 @@ export function validateMesh(mesh, checks = {}) {
       let d = -1;
       for (let m = 0; m < 3; m++) if (t[3 * n + m] !== u && t[3 * n + m] !== v) d = t[3 * n + m];
       const a = t[3 * k], b = t[3 * k + 1], c = t[3 * k + 2];
-      const { det, bound } = incircle(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1], p[2 * c], p[2 * c + 1], p[2 * d], p[2 * d + 1]);
-      if (det > bound) report(`edge (${u}, ${v}) is not locally Delaunay: vertex ${d} inside the circumcircle of triangle ${k}`);
+      if (incircle(p[2 * a], p[2 * a + 1], p[2 * b], p[2 * b + 1], p[2 * c], p[2 * c + 1], p[2 * d], p[2 * d + 1]) > 0) report(`edge (${u}, ${v}) is not locally Delaunay: vertex ${d} inside the circumcircle of triangle ${k}`);
     }
   }
 
@@ -139,18 +125,23 @@ export function validateMesh(mesh, checks = {}) {
       const a = s[2 * i], b = s[2 * i + 1];
       covered[id] += Math.hypot(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]);
       const ia = is[2 * id], ib = is[2 * id + 1];
+      const [ax, ay, bx, by] = [ip[2 * ia], ip[2 * ia + 1], ip[2 * ib], ip[2 * ib + 1]];
+      const length = Math.hypot(bx - ax, by - ay);
+      const tol = segmentTolerance(length, Math.max(Math.abs(ax), Math.abs(ay), Math.abs(bx), Math.abs(by)));
       for (const w of [a, b]) {
-        const { det, bound } = orient(ip[2 * ia], ip[2 * ia + 1], ip[2 * ib], ip[2 * ib + 1], p[2 * w], p[2 * w + 1]);
-        if (Math.abs(det) > Math.max(bound, 1e-9 * ((ip[2 * ib] - ip[2 * ia]) ** 2 + (ip[2 * ib + 1] - ip[2 * ia + 1]) ** 2))) {
+        if (Math.abs((p[2 * w] - ax) * (by - ay) - (p[2 * w + 1] - ay) * (bx - ax)) / length > tol) {
           report(`subsegment ${i} vertex ${w} is off input segment ${id}`);
         }
       }
     }
-    for (let id = 0; id < covered.length; id++) {
+    for (const problem of chainProblems(mesh, checks.input, maxProblems)) report(problem);
+    // Where the core repaired nothing, one segment's subsegments cannot add up to more than it.
+    const repaired = (mesh.notices ?? []).some((n) => repairKinds.has(n.kind));
+    for (let id = 0; id < covered.length && !repaired; id++) {
       const a = is[2 * id], b = is[2 * id + 1];
       const length = Math.hypot(ip[2 * b] - ip[2 * a], ip[2 * b + 1] - ip[2 * a + 1]);
-      if (Math.abs(covered[id] - length) > 1e-9 * length) {
-        report(`input segment ${id}: subsegments cover ${covered[id]} of length ${length}`);
+      if (covered[id] - length > 1e-9 * length) {
+        report(`input segment ${id}: subsegments add up to ${covered[id]}, more than its length ${length}`);
       }
     }
   }

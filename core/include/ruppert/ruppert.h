@@ -149,14 +149,27 @@ enum class VertexKind : std::uint8_t {
   Unused = 5,        // an input point no triangle uses: a merged duplicate, or outside the domain
 };
 
-// What the input repair did; the mesh is valid, but the caller should know.
+// What the input repair did; the mesh is valid, but the caller should know. The rules:
+//   * Duplicate points are merged; zero-length and duplicate segments are dropped.
+//   * A point lying exactly on a segment's interior splits it there (VertexOnSegment).
+//   * Two segments that cross are both split at their crossing, a new Intersection vertex rounded
+//     to the nearest doubles (SegmentsCross); collinear segments share their common piece.
+//   * Segments that meet at a tiny angle or nearly overlap (sharing an endpoint, or ending a hair
+//     apart) stay two constrained chains all the way, however small the angle: the sliver between
+//     them is meshed, and refinement leaves the triangles it cannot improve there as SmallInputAngle
+//     or SeditiousEdge reasons. They are merged only within rounding: a vertex counts as on a piece
+//     of a segment within 2^-48 (about 16 ulps) of the larger of the coordinates' magnitude and the
+//     shorter segment's length, and a crossing within 2^-40 of the largest coordinate magnitude of
+//     such a vertex is that vertex. Where this makes two segments share subsegments, a SegmentsOverlap notice names both
+//     segments and the stretch between the shared subsegments' extreme vertices.
 enum class NoticeKind : std::uint8_t {
   DuplicatePoint,      // a = duplicate point index, b = the point it was merged into
   ZeroLengthSegment,   // a = segment index (dropped)
   DuplicateSegment,    // a = segment index, b = the earlier identical segment (dropped)
   VertexOnSegment,     // a = segment index, b = point index lying in its interior (split there)
   SegmentsCross,       // a, b = the two segment indices; x, y = the crossing point (both split)
-  SegmentsOverlap,     // a, b = the two segment indices sharing a collinear piece
+  SegmentsOverlap,     // a < b = the two segment indices sharing subsegments (a collinear piece, or a
+                       // stretch within rounding of each other); x, y = one end of the shared stretch
   HoleOutsideDomain,   // a = hole index: it lies outside the domain and removes nothing
   RegionOutsideDomain, // a = region index
   NothingEnclosed,     // the segments enclose no region: the convex hull was meshed instead
