@@ -21,13 +21,14 @@
 #include "refine.h"
 
 #include <algorithm>
-#include <cfloat>
 #include <cmath>
-#include <iterator>
-#include <limits>
 #include <string>
 
+#include "bad_triangle_queue.h"
+#include "placement.h"
 #include "predicates.h"
+#include "refine_geometry.h"
+#include "refine_setup.h"
 #include "triangle_shape.h"
 
 namespace ruppert::detail {
@@ -41,34 +42,11 @@ bool refinementRequested(const MeshState& m) {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-// No vertex is placed closer than this to another (internal units: coordinates lie within (-2, 2),
-// where it is over 10^4 ulps): subsegments shorter than 3 floors and triangles whose shortest edge is
-// under 2 floors are not split, and a split point this close to a vertex is refused.
-constexpr double kLengthFloor = 0x1p-38;
-constexpr double kPetalReach = 4;  // see Refiner::petalMayHelp
-// Bad-triangle priority classes: four per power of two of the squared shortest edge, from 2^-80 (below
-// the length floor) to 2^4 (above the scaled input's extent), and one last class for size alone.
-constexpr int kLowestExponent = -80;
-constexpr int kBuckets = 4 * (4 - kLowestExponent) + 1;
-constexpr int kAngleClasses = 64;  // queued triangles counted by smallest angle, for progress
 // Segments meeting below this angle can make seditious edges. Prop. 6.14 proves termination with
 // 60 degrees; §6.6 advises a smaller angle in practice (fewer triangles left skinny), which threatens
 // termination only well below 20 degrees, and the Steiner budget bounds the work regardless. 45
 // degrees lets earcut_earcut.poly reach 30 degrees where 60 left a 26.96-degree triangle.
 constexpr double kSeditiousAngle = kPi / 4;
-
-struct BadTriangle {
-  std::uint32_t slot, a, b, c;
-  std::uint8_t angleClass;  // sin^2 of the smallest angle in kAngleClasses steps
-};
-
-// Plain sqrt(x^2 + y^2) rather than hypot (several times slower, and a library call in WebAssembly):
-// internal coordinates lie within (-2, 2), so no square overflows, and every length this file
-// compares or divides by is at least the length floor (2^-38), whose square is far above underflow.
-double length(double x, double y) { return std::sqrt(x * x + y * y); }
-double dist(const double* p, const double* q) { return length(p[0] - q[0], p[1] - q[1]); }
-double sq(const double* p, const double* q) { return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]); }
 
 // A cavity already computed by Triangulation::cavity, handed to the insertion so it is not searched
 // twice (both null: none).
@@ -77,21 +55,59 @@ struct CavityRef {
   const std::vector<std::uint32_t>* boundary = nullptr;
 };
 
+// A subsegment remembered by its endpoints, with a half-edge that was the edge when queued.
+struct EdgeRef {
+  std::uint32_t a, b, hint;
+};
+
+double angleBound(const Options& o) { return o.minAngle * kPi / 180.0; }
+
+// Lens apex angle 180 - 2 theta, never below the disk's 90 degrees: cos(180 - 2 theta) = -cos(2 theta).
+double lensCos2For(const Options& o) {
+  const double theta = angleBound(o);
+  if (o.encroachment == Encroachment::DiametralLens && theta < kPi / 4) return std::cos(2 * theta) * std::cos(2 * theta);
+  return 0;
+}
+
 class Refiner {
+  // Per-triangle region data carried from a cavity slot to the new triangle that replaces it.
+  struct Inherited {
+    double attribute, maxArea;
+    std::uint8_t inDomain;
+  };
+
+  MeshState& m_;
+  Triangulation& t_;
+  const Options& o_;
+  RefineOutcome out_;
+  const double theta_;      // the angle bound, radians
+  const double sin2Theta_;  // sin^2 of it, lowered by a relative 1e-12 against rounding
+  const MeshAccess mesh_;   // read-only queries for placements (and the walk)
+  PetalPlacement petal_;
+  std::uint64_t budget_ = 0, inserted_ = 0;
+  bool cancelled_ = false, budgetHit_ = false;
+  std::uint64_t floorHits_ = 0;  // insertions refused at the precision limit
+  std::vector<EdgeRef> encroached_;
+  BadTriangleQueue bad_;
+  std::vector<std::uint8_t> corner_;  // per vertex: acute input corner (concentric shells apply)
+  std::vector<std::uint32_t> newTris_, parents_, flipped_, mendStack_;
+  std::vector<Inherited> inherit_;
+  std::vector<std::uint32_t> cavityTris_, cavityBoundary_, splitTris_, splitBoundary_;
+  std::vector<EdgeRef> rejectPairs_;
+
  public:
-  explicit Refiner(MeshState& m) : m_(m), t_(m.tri), o_(*m.options) {
-    theta_ = o_.minAngle * kPi / 180.0;
-    sin2Theta_ = std::sin(theta_) * std::sin(theta_) * (1 - 1e-12);
-    // Lens apex angle 180 - 2 theta, never below the disk's 90 degrees: cos(180 - 2 theta) = -cos(2 theta).
-    if (o_.encroachment == Encroachment::DiametralLens && theta_ < kPi / 4)
-      lensCos2_ = std::cos(2 * theta_) * std::cos(2 * theta_);
-    buckets_.resize(kBuckets);
-    if (o_.placement == Placement::Petal && theta_ > 0) preparePetal();
-  }
+  explicit Refiner(MeshState& m)
+      : m_(m),
+        t_(m.tri),
+        o_(*m.options),
+        theta_(angleBound(o_)),
+        sin2Theta_(std::sin(theta_) * std::sin(theta_) * (1 - 1e-12)),
+        mesh_(m.tri, m.input, sin2Theta_, lensCos2For(o_)),
+        petal_(o_.placement == Placement::Petal ? theta_ : 0) {}
 
   RefineOutcome run() {
-    markCorners();
-    setBudget();
+    corner_ = acuteCorners(m_);
+    budget_ = steinerBudget(m_);
     // Initial queues: every subsegment and every triangle (linear in the mesh size, §6.3).
     for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
       if (!t_.alive(s)) continue;
@@ -110,8 +126,8 @@ class Refiner {
       }
       if (stop) break;
       BadTriangle bt;
-      if (!popNext(bt)) break;
-      if (!current(bt)) continue;  // stale entry: the triangle is gone
+      if (!bad_.pop(bt)) break;
+      if (!isCurrent(t_, bt)) continue;  // stale entry: the triangle is gone
       splitTriangle(bt);
       stop = outOfBudget();
     }
@@ -120,118 +136,17 @@ class Refiner {
   }
 
  private:
-  MeshState& m_;
-  Triangulation& t_;
-  const Options& o_;
-  RefineOutcome out_;
-  double theta_ = 0;  // radians
-  double sin2Theta_ = 0;
-  double lensCos2_ = 0;  // 0: closed diametral disk
-  std::uint64_t budget_ = 0, inserted_ = 0;
-  bool cancelled_ = false, budgetHit_ = false;
-  std::uint64_t floorHits_ = 0;
-  struct EdgeRef {
-    std::uint32_t a, b, hint;  // endpoints and a half-edge that was the edge when queued
-  };
-  std::vector<EdgeRef> encroached_;
-  std::vector<std::vector<BadTriangle>> buckets_;
-  int lowestBucket_ = kBuckets;
-  std::uint64_t queuedByAngle_[kAngleClasses] = {};
-  std::uint64_t queued_ = 0, compactAt_ = 1u << 20;  // entries in buckets_; when to drop stale ones
-  std::vector<std::uint8_t> corner_;  // per vertex: acute input corner (concentric shells apply)
-  std::vector<std::uint32_t> newTris_, parents_, flipped_, mendStack_;
-  struct Inherited {
-    double attribute, maxArea;
-    std::uint8_t inDomain;
-  };
-  std::vector<Inherited> inherit_;
-
-  // ---- set-up --------------------------------------------------------------------------------
-  void markCorners() {
-    // A corner is acute when two constrained edges at an input or intersection vertex are less than
-    // 90 degrees apart, i.e. their directions have a positive dot product (any such pair makes two
-    // neighbours in angular order that close too). The directions are gathered per vertex in one
-    // flat array (counting sort by vertex), without trigonometry.
-    const std::uint32_t n = t_.vertexCount();
-    corner_.assign(n, 0);
-    auto counted = [&](std::uint32_t v) {
-      return m_.kind[v] == VertexKind::Input || m_.kind[v] == VertexKind::Intersection;
-    };
-    std::vector<std::uint32_t> start(n + 1, 0);
-    auto forEachEnd = [&](auto&& visit) {
-      for (std::uint32_t h = 0; h < t_.tv.size(); ++h) {
-        if (!t_.alive(h / 3) || t_.con[h] == kFree) continue;
-        if (t_.twin[h] != kNone && t_.twin[h] < h) continue;  // each edge once
-        const std::uint32_t a = t_.origin(h), b = t_.dest(h);
-        if (counted(a)) visit(a, b);
-        if (counted(b)) visit(b, a);
-      }
-    };
-    forEachEnd([&](std::uint32_t v, std::uint32_t) { ++start[v + 1]; });
-    for (std::uint32_t v = 0; v < n; ++v) start[v + 1] += start[v];
-    std::vector<double> dir(2 * std::size_t(start[n]));
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    forEachEnd([&](std::uint32_t v, std::uint32_t w) {
-      const std::uint32_t k = fill[v]++;
-      const double dx = t_.xy[2 * w] - t_.xy[2 * v], dy = t_.xy[2 * w + 1] - t_.xy[2 * v + 1];
-      const double len = length(dx, dy);
-      dir[2 * k] = dx / len, dir[2 * k + 1] = dy / len;
-    });
-    for (std::uint32_t v = 0; v < n; ++v)
-      for (std::uint32_t i = start[v]; i < start[v + 1] && !corner_[v]; ++i)
-        for (std::uint32_t j = i + 1; j < start[v + 1]; ++j)
-          // cos(gap) > sin(1e-12): the gap is below 90 degrees by more than rounding.
-          if (dir[2 * i] * dir[2 * j] + dir[2 * i + 1] * dir[2 * j + 1] > 1e-12) {
-            corner_[v] = 1;
-            break;
-          }
-  }
-
-  void setBudget() {
-    if (o_.maxSteiner != kAutoSteinerBudget) {
-      budget_ = o_.maxSteiner;
-      return;
-    }
-    // Generous for any reasonable input, yet small enough that a runaway at an unreachable angle
-    // stops within seconds: ten thousand, plus 200 per input vertex (of the 61 shared PLCs, the
-    // complete meshes at 33 and 35 degrees use at most 40 Steiner vertices per input vertex once
-    // past the first ten thousand), plus 100 per crossing of two segments (stars of 80 to 300 chords
-    // through a disk's centre, 3,160 to 44,850 crossings at small angles, use 30-63 Steiner vertices
-    // per crossing at 30 and 33 degrees; 40 per crossing stopped several of them incomplete), plus
-    // eight per unit of area bound (area A with triangles of area a needs about A / (2 a) vertices).
-    const auto crossings = std::count(m_.kind.begin(), m_.kind.end(), VertexKind::Intersection);
-    double estimate = 1e4 + 200.0 * m_.inputCount + 100.0 * static_cast<double>(crossings);
-    for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
-      if (!t_.alive(s) || m_.maxArea[s] <= 0) continue;
-      estimate += 8 * qualityAt(s).area / m_.maxArea[s];
-    }
-    if (o_.sizeFunction) estimate += 1e8;
-    budget_ = static_cast<std::uint64_t>(std::min(estimate, 4e9));
-  }
-
   // ---- tests ---------------------------------------------------------------------------------
-  // v encroaches (a, b) iff the angle avb is at least 90 degrees (closed diametral disk) or, with
-  // lenses, at least 180 - 2 theta degrees when that is larger: cos(avb) <= lensCos_, i.e.
-  // dot <= 0 and dot^2 >= lensCos_^2 |va|^2 |vb|^2.
-  bool encroaches(const double* v, const double* a, const double* b) const {
-    const double ax = a[0] - v[0], ay = a[1] - v[1], bx = b[0] - v[0], by = b[1] - v[1];
-    const double dot = ax * bx + ay * by;
-    if (dot > 0) return false;
-    return lensCos2_ == 0 || dot * dot >= lensCos2_ * (ax * ax + ay * ay) * (bx * bx + by * by);
-  }
   // O(1) test of Exercise 1: the subsegment h is encroached iff an apex on either side sees it at
   // 90 degrees or more.
   bool isEncroached(std::uint32_t h) const {
-    const double* a = t_.pt(t_.origin(h));
-    const double* b = t_.pt(t_.dest(h));
-    if (encroaches(t_.pt(t_.apex(h)), a, b)) return true;
+    if (mesh_.encroachesEdge(t_.pt(t_.apex(h)), h)) return true;
     const std::uint32_t g = t_.twin[h];
-    return g != kNone && encroaches(t_.pt(t_.apex(g)), a, b);
+    return g != kNone && mesh_.encroachesEdge(t_.pt(t_.apex(g)), h);
   }
   void checkSubsegment(std::uint32_t h) {
     if (t_.con[h] == kFree) return;
-    if (encroaches(t_.pt(t_.apex(h)), t_.pt(t_.origin(h)), t_.pt(t_.dest(h))))
-      encroached_.push_back({t_.origin(h), t_.dest(h), h});
+    if (mesh_.encroachesEdge(t_.pt(t_.apex(h)), h)) encroached_.push_back({t_.origin(h), t_.dest(h), h});
   }
 
   // The half-edge for a queued edge: the remembered one if it still is that edge, else a search.
@@ -281,74 +196,17 @@ class Refiner {
     const bool large = bound > 0 && q.area > bound;
     const bool skinny = isSkinny(q);
     if (!skinny && !large) return;
-    // Order: skinny triangles with the shortest shortest-edge first, too-large but shapely ones last.
-    // Fixing the smallest features first lets the mesh grade outwards from them; splitting the
-    // skinniest first (measured on the 61 shared PLCs) spreads small triangles far from any feature:
-    // 1.33x Triangle's count at 33 degrees against 0.99x with this order.
-    int k = kBuckets - 1;
-    if (skinny) {
-      const double l2 = std::min({sq(p1, p2), sq(p2, p0), sq(p0, p1)});
-      int e = 0;
-      const double mantissa = std::frexp(l2, &e);  // l2 = mantissa * 2^e, mantissa in [0.5, 1)
-      // Four classes per power of two (of the squared length): cuts at 2^-0.75, 2^-0.5, 2^-0.25.
-      const int quarter = (mantissa >= 0.5946035575013605) + (mantissa >= 0.7071067811865476) +
-                          (mantissa >= 0.8408964152537145);
-      k = std::clamp(4 * (e - kLowestExponent) + quarter, 0, kBuckets - 2);
-    }
-    const auto angleClass = static_cast<std::uint8_t>(
-        std::min<double>(kAngleClasses - 1, q.sin2MinAngle / 0.75 * (kAngleClasses - 1)));
-    buckets_[k].push_back({s, t_.tv[3 * s], t_.tv[3 * s + 1], t_.tv[3 * s + 2], angleClass});
-    ++queuedByAngle_[angleClass];
-    lowestBucket_ = std::min(lowestBucket_, k);
-    if (++queued_ > compactAt_) dropStaleEntries();
+    const double shortest2 = skinny ? std::min({sq(p1, p2), sq(p2, p0), sq(p0, p1)}) : 0;
+    bad_.push(t_, s, skinny, shortest2, q.sin2MinAngle);
   }
 
-  // Whether a queued entry still describes the triangle in its slot.
-  bool current(const BadTriangle& e) const {
-    return t_.alive(e.slot) && t_.tv[3 * e.slot] == e.a && t_.tv[3 * e.slot + 1] == e.b && t_.tv[3 * e.slot + 2] == e.c;
-  }
-
-  // Where refinement runs away, each step can rebuild a fan of thousands of needles, and the entries
-  // of the ones it replaced stay queued: 70 million entries for 4 million triangles (300 chords
-  // crossing in a star at 30 degrees, before off-centers aimed past the bound). Dropping the stale
-  // ones (popNext would skip them anyway; the order of the rest is kept, so meshes do not change)
-  // keeps memory proportional to the mesh.
-  void dropStaleEntries() {
-    queued_ = 0;
-    for (auto& b : buckets_) {
-      b.erase(std::remove_if(b.begin(), b.end(),
-                             [&](const BadTriangle& e) {
-                               if (current(e)) return false;
-                               --queuedByAngle_[e.angleClass];
-                               return true;
-                             }),
-              b.end());
-      queued_ += b.size();
-    }
-    compactAt_ = 2 * std::max<std::uint64_t>(queued_, t_.slotCount()) + (1u << 16);
-  }
-
-  bool popNext(BadTriangle& out) {
-    while (lowestBucket_ < kBuckets) {
-      auto& b = buckets_[lowestBucket_];
-      if (!b.empty()) {
-        out = b.back();
-        b.pop_back();
-        --queued_;
-        --queuedByAngle_[out.angleClass];
-        return true;
-      }
-      ++lowestBucket_;
-    }
+  // Checked before every insertion, so that a budget of k inserts at most k vertices (0: none).
+  // The loop also stops once k are in (outOfBudget), so any k > 0 gives the first k insertions of
+  // the unbounded run.
+  bool mayInsert() {
+    if (inserted_ < budget_) return true;
+    budgetHit_ = true;
     return false;
-  }
-
-  // The smallest angle among queued triangles (entries whose triangle has changed since included),
-  // to within 60 / (kAngleClasses - 1) degrees; for progress reports only.
-  double worstQueuedAngle() const {
-    for (int c = 0; c < kAngleClasses; ++c)
-      if (queuedByAngle_[c]) return std::asin(std::sqrt(0.75 * c / (kAngleClasses - 1))) * 180 / kPi;
-    return o_.minAngle;
   }
 
   bool outOfBudget() {
@@ -360,7 +218,7 @@ class Refiner {
       Progress p;
       p.insertedVertices = inserted_;
       p.triangles = t_.slotCount() - t_.freeSlots.size();
-      p.worstAngle = worstQueuedAngle();
+      p.worstAngle = bad_.worstQueuedAngle(o_.minAngle);
       if (!o_.onProgress(p)) {
         cancelled_ = true;
         return true;
@@ -395,17 +253,8 @@ class Refiner {
       z[0] = t_.xy[2 * a0], z[1] = t_.xy[2 * a0 + 1];
     } else if (a1 == b0 || a1 == b1) {
       z[0] = t_.xy[2 * a1], z[1] = t_.xy[2 * a1 + 1];
-    } else {
-      const double* p = t_.pt(a0);
-      const double* q = t_.pt(b0);
-      const double ax = t_.xy[2 * a1] - p[0], ay = t_.xy[2 * a1 + 1] - p[1];
-      const double bx = t_.xy[2 * b1] - q[0], by = t_.xy[2 * b1 + 1] - q[1];
-      const double den = ax * by - ay * bx;
-      if (den == 0) return false;
-      const double ta = ((q[0] - p[0]) * by - (q[1] - p[1]) * bx) / den;
-      const double tb = ((q[0] - p[0]) * ay - (q[1] - p[1]) * ax) / den;
-      if (!(ta >= 0 && ta <= 1 && tb >= 0 && tb <= 1)) return false;  // the segments do not meet
-      z[0] = p[0] + ta * ax, z[1] = p[1] + ta * ay;
+    } else if (!segmentsMeet(t_.pt(a0), t_.pt(a1), t_.pt(b0), t_.pt(b1), z)) {
+      return false;
     }
     const double ux = t_.xy[2 * u] - z[0], uy = t_.xy[2 * u + 1] - z[1];
     const double wx = t_.xy[2 * w] - z[0], wy = t_.xy[2 * w + 1] - z[1];
@@ -428,20 +277,7 @@ class Refiner {
                                     : t_.insertVertex(v, loc, &newTris_, &parents_);
     if (!filled && !t_.insertVertexByFlips(v, loc, &newTris_, &parents_)) return false;
     ++inserted_;
-    const bool box = !m_.inDomain.empty();
-    if (m_.attribute.size() < t_.slotCount()) {
-      m_.attribute.resize(t_.slotCount(), 0);
-      m_.maxArea.resize(t_.slotCount(), 0);
-      if (box) m_.inDomain.resize(t_.slotCount(), 0);
-    }
-    // Two passes: a new triangle may reuse the slot of another new triangle's parent.
-    inherit_.resize(newTris_.size());
-    for (std::size_t k = 0; k < newTris_.size(); ++k)
-      inherit_[k] = {m_.attribute[parents_[k]], m_.maxArea[parents_[k]], box ? m_.inDomain[parents_[k]] : std::uint8_t(1)};
-    for (std::size_t k = 0; k < newTris_.size(); ++k) {
-      m_.attribute[newTris_[k]] = inherit_[k].attribute, m_.maxArea[newTris_[k]] = inherit_[k].maxArea;
-      if (box) m_.inDomain[newTris_[k]] = inherit_[k].inDomain;
-    }
+    inheritRegionData();
     if (onSubsegment) mendDelaunay();
     for (std::uint32_t s : newTris_) {
       checkTriangle(s);
@@ -459,6 +295,24 @@ class Refiner {
       }
     }
     return true;
+  }
+
+  // The new triangles take their parents' region data. Two passes: a new triangle may reuse the
+  // slot of another new triangle's parent.
+  void inheritRegionData() {
+    const bool box = !m_.inDomain.empty();
+    if (m_.attribute.size() < t_.slotCount()) {
+      m_.attribute.resize(t_.slotCount(), 0);
+      m_.maxArea.resize(t_.slotCount(), 0);
+      if (box) m_.inDomain.resize(t_.slotCount(), 0);
+    }
+    inherit_.resize(newTris_.size());
+    for (std::size_t k = 0; k < newTris_.size(); ++k)
+      inherit_[k] = {m_.attribute[parents_[k]], m_.maxArea[parents_[k]], box ? m_.inDomain[parents_[k]] : std::uint8_t(1)};
+    for (std::size_t k = 0; k < newTris_.size(); ++k) {
+      m_.attribute[newTris_[k]] = inherit_[k].attribute, m_.maxArea[newTris_[k]] = inherit_[k].maxArea;
+      if (box) m_.inDomain[newTris_[k]] = inherit_[k].inDomain;
+    }
   }
 
   // A subsegment's split point is rounded, so it lies a hair off the subsegment's line. Bowyer-Watson
@@ -482,18 +336,10 @@ class Refiner {
                    flipped_.end());
   }
 
-  // Split subsegment h (§6.2, §6.6). `by` = the encroaching vertex if known, for the trace.
-  // Returns false if it cannot be split (precision floor).
-  bool splitSubsegment(std::uint32_t h, const BadTriangle* bt, const double* rejected) {
-    const std::uint32_t a = t_.origin(h), b = t_.dest(h);
-    // Copies: adding a vertex below may reallocate the coordinate array.
-    const double pa[2] = {t_.xy[2 * a], t_.xy[2 * a + 1]};
-    const double pb[2] = {t_.xy[2 * b], t_.xy[2 * b + 1]};
+  // Where subsegment h from pa to pb is split (§6.2, §6.6), into xy; false if no point can be kept.
+  bool subsegmentSplitPoint(std::uint32_t h, const double* pa, const double* pb, std::uint32_t a, std::uint32_t b,
+                            double xy[2]) const {
     const double len = dist(pa, pb);
-    if (len < 3 * kLengthFloor) {
-      ++floorHits_;
-      return false;
-    }
     // Concentric shells: measured from an acute corner, the piece next to it gets a power-of-two
     // length in (len/3, 2len/3], so equal pieces on neighbouring segments do not encroach each other.
     double f = 0.5;
@@ -512,16 +358,24 @@ class Refiner {
       for (int step = 0;; ++step) {
         const double p[2] = {x, y};
         if (orient2d(pa, pb, p) >= 0) break;
-        if (step == 4) {
-          ++floorHits_;
-          return false;
-        }
+        if (step == 4) return false;
         x = std::nextafter(x, towardsX > 0 ? HUGE_VAL : towardsX < 0 ? -HUGE_VAL : x);
         y = std::nextafter(y, towardsY > 0 ? HUGE_VAL : towardsY < 0 ? -HUGE_VAL : y);
       }
     }
-    const double split[2] = {x, y};
-    if (!representable(split)) {
+    xy[0] = x, xy[1] = y;
+    return mesh_.representable(xy);
+  }
+
+  // Split subsegment h (§6.2, §6.6). `bt` and `rejected`: the triangle whose point was rejected
+  // and that point, if that is why, for the trace. False if it cannot be split (precision floor).
+  bool splitSubsegment(std::uint32_t h, const BadTriangle* bt, const double* rejected) {
+    const std::uint32_t a = t_.origin(h), b = t_.dest(h);
+    // Copies: adding a vertex below may reallocate the coordinate array.
+    const double pa[2] = {t_.xy[2 * a], t_.xy[2 * a + 1]};
+    const double pb[2] = {t_.xy[2 * b], t_.xy[2 * b + 1]};
+    double split[2];
+    if (dist(pa, pb) < 3 * kLengthFloor || !subsegmentSplitPoint(h, pa, pb, a, b, split)) {
       ++floorHits_;
       return false;
     }
@@ -534,11 +388,13 @@ class Refiner {
     // angle, a shell split at the same distance from their common vertex on the other segment, closer
     // than doubles can keep apart (found by fuzzing). Refuse those, as the length floor does.
     t_.cavity(split, loc, splitTris_, splitBoundary_);
-    if (tooCloseToCavity(split, splitBoundary_)) {
+    if (mesh_.tooCloseToCavity(split, splitBoundary_)) {
       ++floorHits_;
       return false;
     }
+    if (!mayInsert()) return false;
     const std::int32_t segment = t_.con[h] >= 0 ? t_.con[h] : -1;
+    const double x = split[0], y = split[1];
     const std::uint32_t v = m_.addVertex(x, y, VertexKind::SegmentSplit, segment);
     corner_.push_back(0);
     if ((x == pa[0] && y == pa[1]) || (x == pb[0] && y == pb[1]) || !insertAt(v, loc, {&splitTris_, &splitBoundary_})) {
@@ -557,38 +413,31 @@ class Refiner {
     return true;
   }
 
-  // Straight walk from the centroid of triangle s towards p. Stops at the first subsegment in the
-  // way (blocked = its half-edge), else returns p's location.
-  Location walk(std::uint32_t s, const double* p, std::uint32_t& blocked) const {
-    blocked = kNone;
-    const double* q0 = t_.pt(t_.tv[3 * s]);
-    const double* q1 = t_.pt(t_.tv[3 * s + 1]);
-    const double* q2 = t_.pt(t_.tv[3 * s + 2]);
-    const double o[2] = {(q0[0] + q1[0] + q2[0]) / 3, (q0[1] + q1[1] + q2[1]) / 3};
-    std::uint32_t t = s;
-    for (std::uint32_t step = 0; step < 100000; ++step) {
-      std::uint32_t exit = kNone, fallback = kNone;
-      double ori[3];
-      for (std::uint32_t i = 0; i < 3; ++i) {
-        const std::uint32_t h = 3 * t + i;
-        ori[i] = orient2d(t_.pt(t_.origin(h)), t_.pt(t_.dest(h)), p);
-        if (ori[i] < 0) {
-          if (fallback == kNone) fallback = h;
-          const double su = orient2d(o, p, t_.pt(t_.origin(h))), sv = orient2d(o, p, t_.pt(t_.dest(h)));
-          if (exit == kNone && ((su >= 0 && sv <= 0) || (su <= 0 && sv >= 0))) exit = h;
-        }
-      }
-      if (exit == kNone) exit = fallback;
-      if (exit == kNone) {
-        return t_.locationInside(t, ori);
-      }
-      if (t_.con[exit] != kFree || t_.twin[exit] == kNone) {
-        blocked = exit;
-        return Location{};
-      }
-      t = t_.twin[exit] / 3;
+  // The first choice of point for a bad triangle: its circumcenter, or for a skinny one (unless
+  // Placement::Circumcenter) the off-center when that is nearer. False: no point to trust.
+  bool firstChoice(const double* const* p, const TriangleShape& sh, bool skinny, double target[2],
+                   VertexKind& kind) const {
+    double cc[2];
+    if (!circumcenter(p, cc)) return false;
+    target[0] = cc[0], target[1] = cc[1];
+    kind = VertexKind::Interior;
+    if (skinny && o_.placement != Placement::Circumcenter) {
+      const int e = sh.shortestEdge;
+      if (offCenter(p[(e + 1) % 3], p[(e + 2) % 3], sh.shortest, cc, theta_, target)) kind = VertexKind::OffCenter;
     }
-    return Location{};
+    return mesh_.representable(target);
+  }
+
+  // A better point than the first choice from the configured placement, if it has one (placement.h).
+  bool improvePlacement(const SkinnyTriangle& st, double target[2], Location& loc) {
+    switch (o_.placement) {
+      case Placement::Petal:
+        // Only where no area bound applies: with one, the bound sets the size and the search buys
+        // little (unit square, max area 1e-6: 794.6 k vertices with it, 794.7 k without, at 4x the time).
+        return !(maxAreaAt(st.slot) > 0) && petal_.propose(mesh_, st, target, loc);
+      default:
+        return false;
+    }
   }
 
   void splitTriangle(const BadTriangle& bt) {
@@ -601,96 +450,68 @@ class Refiner {
       const double bound = maxAreaAt(s);
       if (!(bound > 0 && q.area > bound)) return;  // left alone on purpose; counted in finish()
     }
-    if (sh.shortest < 2 * kLengthFloor) {
+    double target[2];
+    VertexKind kind;
+    if (sh.shortest < 2 * kLengthFloor || !firstChoice(p, sh, skinny, target, kind)) {
       ++floorHits_;
       return;
     }
-    // Circumcenter, relative to p[0] for accuracy.
-    const double bx = p[1][0] - p[0][0], by = p[1][1] - p[0][1];
-    const double cx = p[2][0] - p[0][0], cy = p[2][1] - p[0][1];
-    const double d = 2 * (bx * cy - by * cx);
-    if (!(d > 0)) {
-      ++floorHits_;
-      return;
+    Location loc;
+    if (!locateOrReject(bt, target, loc)) return;
+    CavityRef known{&cavityTris_, &cavityBoundary_};
+    const SkinnyTriangle st{s, p, sh, target, &cavityBoundary_};
+    double better[2];
+    Location betterLoc;
+    if (skinny && improvePlacement(st, better, betterLoc)) {
+      // A proposed point has a cavity of its own: insertAt computes it.
+      target[0] = better[0], target[1] = better[1], loc = betterLoc;
+      kind = VertexKind::OffCenter, known = {};
     }
-    const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
-    double cc[2] = {p[0][0] + (cy * b2 - by * c2) / d, p[0][1] + (bx * c2 - cx * b2) / d};
-    double target[2] = {cc[0], cc[1]};
-    VertexKind kind = VertexKind::Interior;
-    if (skinny && o_.placement != Placement::Circumcenter) {
-      // Off-center: on the bisector of the shortest edge, where the isosceles triangle on that edge
-      // has apex angle exactly theta (so it just meets the bound).
-      const int e = sh.shortestEdge;
-      const double* u = p[(e + 1) % 3];
-      const double* w = p[(e + 2) % 3];
-      const double mx = (u[0] + w[0]) / 2, my = (u[1] + w[1]) / 2;
-      const double toC = length(cc[0] - mx, cc[1] - my);
-      // The new vertex is rounded to doubles, up to an ulp of its coordinates from where it is aimed;
-      // seen from an edge of length l that turns the apex angle by up to ulp / l radians, so a
-      // triangle built to meet the bound exactly can miss it, and its circumcenter then adds a vertex
-      // no farther away than l: no gain in size, and at small scales a runaway (300 chords crossing at
-      // 30 degrees: half of one's insertions split triangles 1e-9 to 1e-6 degrees short of 30). Aim
-      // past the bound by several times that turn: 4e-12 rad for l = 1e-3, 1e-3 rad at the length floor.
-      const double reach = std::max({std::fabs(u[0]), std::fabs(u[1]), std::fabs(w[0]), std::fabs(w[1])});
-      const double margin = 16 * std::numeric_limits<double>::epsilon() * reach / sh.shortest;
-      const double hOff = (sh.shortest / 2) / std::tan((theta_ + margin) / 2);
-      if (hOff < toC && toC > 0) {
-        target[0] = mx + (cc[0] - mx) * (hOff / toC);
-        target[1] = my + (cc[1] - my) * (hOff / toC);
-        kind = VertexKind::OffCenter;
-      }
-    }
-    if (!representable(target)) {
-      ++floorHits_;
-      return;
-    }
+    insertSteiner(bt, target, loc, kind, known);
+  }
+
+  // Locate target for bad triangle bt. Where it lies beyond or on a subsegment, or encroaches one on
+  // its cavity's boundary (§6.2, §6.3), it is rejected and those subsegments are split instead;
+  // false then, and false at the precision limit. True: loc and cavityTris_ / cavityBoundary_ hold
+  // its location and cavity.
+  bool locateOrReject(const BadTriangle& bt, const double* target, Location& loc) {
     std::uint32_t blocked;
-    Location loc = walk(s, target, blocked);
+    loc = mesh_.walk(bt.slot, target, blocked);
     if (blocked != kNone) {
       // The new vertex would lie beyond a subsegment: that subsegment is encroached (Prop. 6.2).
       reject(bt, blocked, target);
-      return;
+      return false;
     }
     if (loc.kind == Location::Lost || loc.kind == Location::OnVertex) {
       ++floorHits_;
-      return;
+      return false;
     }
     if (loc.kind == Location::OnEdge && t_.con[loc.edge] != kFree) {
       reject(bt, loc.edge, target);
-      return;
+      return false;
     }
-    // Reject if the new vertex would encroach a subsegment on its cavity's boundary (§6.2, §6.3).
     t_.cavity(target, loc, cavityTris_, cavityBoundary_);
-    if (tooCloseToCavity(target, cavityBoundary_)) {
+    if (mesh_.tooCloseToCavity(target, cavityBoundary_)) {
       ++floorHits_;
-      return;
+      return false;
     }
-    bool rejectedAny = false;
-    for (std::uint32_t h : cavityBoundary_) {
-      if (t_.con[h] == kFree) continue;
-      if (encroaches(target, t_.pt(t_.origin(h)), t_.pt(t_.dest(h)))) {
-        rejectPairs_.push_back({t_.origin(h), t_.dest(h), h});
-        rejectedAny = true;
-      }
+    for (std::uint32_t h : cavityBoundary_)
+      if (t_.con[h] != kFree && mesh_.encroachesEdge(target, h)) rejectPairs_.push_back({t_.origin(h), t_.dest(h), h});
+    if (rejectPairs_.empty()) return true;
+    ++out_.rejected;
+    bool splitSome = false;
+    for (const EdgeRef& e : rejectPairs_) {
+      const std::uint32_t h = edgeOf(e);
+      if (h != kNone && t_.con[h] != kFree) splitSome = splitSubsegment(h, &bt, target) || splitSome;
     }
-    if (rejectedAny) {
-      ++out_.rejected;
-      bool splitSome = false;
-      for (const EdgeRef& e : rejectPairs_) {
-        const std::uint32_t h = edgeOf(e);
-        if (h != kNone && t_.con[h] != kFree) splitSome = splitSubsegment(h, &bt, target) || splitSome;
-      }
-      rejectPairs_.clear();
-      if (splitSome) requeue(bt);
-      return;
-    }
-    // Only where no area bound applies: with one, the bound sets the size and the search buys little
-    // (unit square, max area 1e-6: 794.6 k vertices with it, 794.7 k without, at 4x the time).
-    // A petal point has a cavity of its own: insertAt computes it.
-    CavityRef known{&cavityTris_, &cavityBoundary_};
-    if (skinny && o_.placement == Placement::Petal && !(maxAreaAt(s) > 0) && petalMayHelp(target, sh.shortest) &&
-        betterPlacement(s, sh, p, target, loc))
-      kind = VertexKind::OffCenter, known = {};
+    rejectPairs_.clear();
+    if (splitSome) requeue(bt);
+    return false;
+  }
+
+  void insertSteiner(const BadTriangle& bt, const double* target, const Location& loc, VertexKind kind,
+                     const CavityRef& known) {
+    if (!mayInsert()) return;
     const std::uint32_t v = m_.addVertex(target[0], target[1], kind, -1);
     corner_.push_back(0);
     if (!insertAt(v, loc, known)) {
@@ -706,112 +527,6 @@ class Refiner {
     }
   }
 
-  // Candidate points for betterPlacement, for a shortest edge from (-1/2, 0) to (1/2, 0) with the
-  // triangle above it (scaled and rotated onto the real edge when used), sorted by `bound`, their
-  // distance to the nearer endpoint (which no real placement's insertion radius can exceed).
-  struct PetalPoint {
-    double along, across, bound;
-  };
-  std::vector<PetalPoint> petal_;
-  void preparePetal() {
-    static constexpr double kFractions[] = {0, 0.125, -0.125, 0.25, -0.25, 0.375, -0.375, 0.5, -0.5, 0.75, -0.75, 1, -1};
-    for (double extra = 0; extra < 0.35; extra += 0.1) {
-      const double alpha = theta_ + extra;
-      const double phiMax = kPi - alpha - 2 * theta_;
-      if (phiMax < 0) break;
-      const double radius = 1 / (2 * std::sin(alpha)), centre = 0.5 / std::tan(alpha);
-      for (double f : kFractions) {
-        const double along = radius * std::sin(f * phiMax), across = centre + radius * std::cos(f * phiMax);
-        petal_.push_back({along, across, std::hypot(std::fabs(along) - 0.5, across)});
-      }
-    }
-    std::sort(petal_.begin(), petal_.end(), [](const PetalPoint& a, const PetalPoint& b) { return a.bound > b.bound; });
-  }
-
-  // Whether a vertex of the cavity boundary lies within the length floor of x (the nearest existing
-  // vertex to a new one is always on the boundary of its cavity).
-  bool tooCloseToCavity(const double* x, const std::vector<std::uint32_t>& boundary) const {
-    for (std::uint32_t h : boundary)
-      if (sq(x, t_.pt(t_.origin(h))) < kLengthFloor * kLengthFloor) return true;
-    return false;
-  }
-
-  // Smallest sin^2 angle among the triangles that inserting x creates, given x's cavity boundary.
-  double newMinSin2(const double* x, const std::vector<std::uint32_t>& boundary) const {
-    double worst = 1;
-    for (std::uint32_t h : boundary)
-      worst = std::min(worst, qualityOf(t_.pt(t_.origin(h)), t_.pt(t_.dest(h)), x).sin2MinAngle);
-    return worst;
-  }
-
-  // Whether searching the petal can pay: the default point makes a skinny triangle (with cavityBoundary_
-  // as its cavity), and every such triangle stands on a cavity edge less than kPetalReach times the
-  // shortest edge. A longer edge makes a flat triangle with the default point; the petal's points all
-  // lie within about one shortest edge of it, so they make the same flat triangle. Measured on the
-  // shared PLCs at 33 degrees: of 89,541 searches 9,955 found a point; where such an edge was over 8
-  // times the shortest, 2 of 31,000; over 4 times, 300 of 55,000. With 4, the geo-mean triangle ratio
-  // to Triangle moves from 0.882 to 0.887 at 30 degrees and 0.859 to 0.861 at 33, and petal costs
-  // about 2x the off-centers' time instead of 4-7x (cdt_sweden.poly at 33: 94 -> 32 ms, 15 ms).
-  bool petalMayHelp(const double* target, double shortest) const {
-    bool skinny = false;
-    for (std::uint32_t h : cavityBoundary_) {
-      const double* a = t_.pt(t_.origin(h));
-      const double* b = t_.pt(t_.dest(h));
-      if (qualityOf(a, b, target).sin2MinAngle >= sin2Theta_) continue;
-      if (dist(a, b) > kPetalReach * shortest) return false;
-      skinny = true;
-    }
-    return skinny;
-  }
-
-  // Locally better Steiner points, in the spirit of Erten and Üngör's: when the off-center (or the
-  // circumcenter) would itself create a skinny triangle, look in the shortest edge's petal for a
-  // point whose new triangles all meet the bound, and take the one farthest from its neighbours.
-  // The petal of edge uw: points x with angle uxw >= theta and both base angles >= theta. Candidates
-  // lie on the arcs where angle uxw = alpha for alpha = theta .. theta + 0.3 rad: on such an arc,
-  // at central angle phi from its top, the base angles are (pi - alpha - phi) / 2 and
-  // (pi - alpha + phi) / 2, so |phi| <= pi - alpha - 2 theta keeps both >= theta.
-  // Measured on the 61 shared PLCs (geo-mean triangle count against Triangle's, off-centers -> petal):
-  // 0.973 -> 0.887 at 30 degrees, 0.987 -> 0.861 at 33, at about twice the refinement time without an
-  // area bound (most searches that petalMayHelp lets through still find no such point).
-  // Returns true (and sets target, loc) if a candidate was found.
-  bool betterPlacement(std::uint32_t s, const TriangleShape& sh, const double* const* p, double* target, Location& loc) {
-    const int e = sh.shortestEdge;
-    const double* u = p[(e + 1) % 3];
-    const double* w = p[(e + 2) % 3];
-    const double len = sh.shortest;
-    const double dx = (w[0] - u[0]) / len, dy = (w[1] - u[1]) / len;
-    const double nx = -dy, ny = dx;  // towards the triangle's side of u->w (counter-clockwise)
-    const double mx = (u[0] + w[0]) / 2, my = (u[1] + w[1]) / 2;
-    double bestRadius = 0, best[2] = {0, 0};
-    Location bestLoc;
-    for (const PetalPoint& c : petal_) {
-      if (c.bound * len <= bestRadius) break;
-      const double x[2] = {mx + len * (c.along * dx + c.across * nx), my + len * (c.along * dy + c.across * ny)};
-      if (!representable(x)) continue;
-      std::uint32_t blocked;
-      const Location l = walk(s, x, blocked);
-      if (blocked != kNone || l.kind != Location::InTriangle) continue;
-      t_.cavity(x, l, candidateTris_, candidateBoundary_);
-      // x must destroy the skinny triangle (lie in its circumcircle), and make nothing skinny.
-      if (std::find(candidateTris_.begin(), candidateTris_.end(), s) == candidateTris_.end() ||
-          newMinSin2(x, candidateBoundary_) < sin2Theta_)
-        continue;
-      bool encroaching = false;
-      double nearest = HUGE_VAL;
-      for (std::uint32_t h : candidateBoundary_) {
-        nearest = std::min(nearest, dist(x, t_.pt(t_.origin(h))));
-        if (t_.con[h] != kFree && encroaches(x, t_.pt(t_.origin(h)), t_.pt(t_.dest(h)))) encroaching = true;
-      }
-      if (encroaching || nearest <= bestRadius) continue;
-      bestRadius = nearest, best[0] = x[0], best[1] = x[1], bestLoc = l;
-    }
-    if (bestRadius == 0) return false;
-    target[0] = best[0], target[1] = best[1];
-    loc = bestLoc;
-    return true;
-  }
-
   void reject(const BadTriangle& bt, std::uint32_t h, const double* target) {
     ++out_.rejected;
     if (splitSubsegment(h, &bt, target)) requeue(bt);
@@ -819,45 +534,35 @@ class Refiner {
 
   // The triangle survives a rejection unless the split destroyed it; keep it queued (§6.3).
   void requeue(const BadTriangle& bt) {
-    if (t_.alive(bt.slot) && t_.tv[3 * bt.slot] == bt.a && t_.tv[3 * bt.slot + 1] == bt.b &&
-        t_.tv[3 * bt.slot + 2] == bt.c)
-      checkTriangle(bt.slot);
-  }
-
-  std::vector<std::uint32_t> cavityTris_, cavityBoundary_, candidateTris_, candidateBoundary_, splitTris_,
-      splitBoundary_;
-  std::vector<EdgeRef> rejectPairs_;
-
-  // Whether a new vertex at p can be kept exactly. A coordinate can fall below the exact predicates'
-  // range without any input doing so (found by fuzzing): splits of a hull edge from (0, 0) to
-  // (1.5, 3e-39) have y coordinates under 2^-128. And on inputs near the subnormal range, the output's
-  // user units cannot hold a new vertex's coordinates (fuzzing again: with coordinates near 1e-312 the
-  // mesh returned had clockwise triangles though the internal one was valid). Such a vertex is
-  // refused like one under the length floor.
-  bool representable(const double* p) const {
-    for (int k = 0; k < 2; ++k)
-      if (!isSafeCoordinate(p[k]) || (p[k] != 0 && !(std::fabs(m_.input.toUser(p[k])) >= DBL_MIN))) return false;
-    return true;
+    if (isCurrent(t_, bt)) checkTriangle(bt.slot);
   }
 
   // ---- result ------------------------------------------------------------------------------------
-  void finish() {
+  struct Unmet {
     std::uint64_t nestled = 0, sedition = 0, otherSkinny = 0, large = 0;
+  };
+  Unmet countUnmet() const {
+    Unmet u;
     for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
       if (!t_.alive(s)) continue;
       const TriangleQuality q = qualityAt(s);
       const double bound = maxAreaAt(s);
-      if (bound > 0 && q.area > bound * (1 + 1e-9)) ++large;
+      if (bound > 0 && q.area > bound * (1 + 1e-9)) ++u.large;
       if (!isSkinny(q)) continue;
       const TriangleShape sh = shapeOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
-      if (nestledInInputAngle(s, sh)) ++nestled;
-      else if (seditious(s, sh)) ++sedition;
-      else ++otherSkinny;
+      if (nestledInInputAngle(s, sh)) ++u.nestled;
+      else if (seditious(s, sh)) ++u.sedition;
+      else ++u.otherSkinny;
     }
+    return u;
+  }
+
+  void finish() {
+    const Unmet u = countUnmet();
     auto add = [&](ReasonKind k, std::uint64_t n, const std::string& msg) {
       out_.reasons.push_back(Reason{k, n, msg});
     };
-    const std::uint64_t unmet = otherSkinny + large;
+    const std::uint64_t unmet = u.otherSkinny + u.large;
     if (cancelled_)
       add(ReasonKind::Cancelled, unmet, "refinement was cancelled; " + std::to_string(unmet) +
                                             " triangle(s) do not meet the bounds");
@@ -871,11 +576,11 @@ class Refiner {
               " insertion(s) were refused because the new vertex would be closer than double precision can "
               "resolve, or its coordinates would leave what exact arithmetic or the output's numbers can hold, "
               "or its cavity would wrap around a vertex where the domain touches itself");
-    if (nestled)
-      add(ReasonKind::SmallInputAngle, nestled, std::to_string(nestled) +
+    if (u.nestled)
+      add(ReasonKind::SmallInputAngle, u.nestled, std::to_string(u.nestled) +
           " triangle(s) sit in input angles smaller than the bound; no vertex can fix them (section 6.6)");
-    if (sedition)
-      add(ReasonKind::SeditiousEdge, sedition, std::to_string(sedition) +
+    if (u.sedition)
+      add(ReasonKind::SeditiousEdge, u.sedition, std::to_string(u.sedition) +
           " triangle(s) have a seditious shortest edge between segments meeting at under 45 degrees; "
           "left alone so refinement terminates (section 6.6)");
   }

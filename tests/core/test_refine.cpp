@@ -177,6 +177,41 @@ TEST_CASE("a tiny Steiner budget ends refinement with complete = false and the r
   CHECK(mesh.stats.vertices <= 4 + 50);
 }
 
+// The budget is checked before each insertion: maxSteiner = k inserts exactly k vertices where more
+// are needed (k = 0 gives the unrefined mesh), and the first k of the unbounded run's insertions.
+TEST_CASE("a Steiner budget of k inserts exactly k vertices (0: none)", "[refine]") {
+  Plc plc;
+  plc.points = {0, 0, 1, 0, 1, 1, 0, 1};
+  plc.segments = {0, 1, 1, 2, 2, 3, 3, 0};
+  Options o;
+  o.minAngle = 30;
+  o.maxArea = 1e-3;
+  o.trace = true;
+  const Mesh full = ruppert::triangulate(plc, o);
+  REQUIRE(full.events.size() > 10);
+  for (std::uint64_t k : {0, 1, 2, 7}) {
+    INFO("budget " << k);
+    o.maxSteiner = k;
+    const Mesh mesh = ruppert::triangulate(plc, o);
+    CHECK(mesh.points.size() / 2 == 4 + k);
+    REQUIRE(mesh.events.size() == k);
+    for (std::size_t i = 0; i < k; ++i) {
+      CHECK(mesh.events[i].x == full.events[i].x);
+      CHECK(mesh.events[i].y == full.events[i].y);
+    }
+    CHECK_FALSE(mesh.complete);
+    REQUIRE_FALSE(mesh.reasons.empty());
+    CHECK(mesh.reasons[0].kind == ruppert::ReasonKind::SteinerBudget);
+  }
+  // Nothing to do: a budget of 0 is not reached, and the mesh is complete.
+  o.maxArea = 0;
+  o.minAngle = 20;
+  o.maxSteiner = 0;
+  const Mesh square = ruppert::triangulate(plc, o);
+  CHECK(square.complete);
+  CHECK(square.points.size() == 8);
+}
+
 TEST_CASE("small-angle fans terminate at any requested angle", "[refine]") {
   for (double fan : {1.0, 3.0, 5.0, 10.0}) {
     // Segments from the origin at `fan` degrees apart, closed by a polyline far away.

@@ -275,6 +275,16 @@ test('onProgress reports and can stop refinement early', async () => {
   assert.deepEqual(validateMesh(mesh, { input: square }), []);
 });
 
+test('maxSteiner: 0 inserts nothing, maxSteiner: k exactly k vertices', async () => {
+  const mesher = await init();
+  for (const k of [0, 1, 5]) {
+    const mesh = mesher.triangulate(square, { minAngle: 30, maxArea: 0.001, maxSteiner: k });
+    assert.equal(mesh.points.length / 2, 4 + k, `budget ${k}`);
+    assert.equal(mesh.complete, false);
+    assert.equal(mesh.reasons[0].kind, 'STEINER_BUDGET');
+  }
+});
+
 test('trace records every insertion as typed arrays', async () => {
   const mesher = await init();
   const mesh = mesher.triangulate(square, { minAngle: 30, maxArea: 0.01, trace: true });

@@ -1,0 +1,71 @@
+#include "bad_triangle_queue.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ruppert::detail {
+
+BadTriangleQueue::BadTriangleQueue() : buckets_(kBuckets) {}
+
+int BadTriangleQueue::classOf(double shortest2) {
+  int e = 0;
+  const double mantissa = std::frexp(shortest2, &e);  // shortest2 = mantissa * 2^e, mantissa in [0.5, 1)
+  // Four classes per power of two (of the squared length): cuts at 2^-0.75, 2^-0.5, 2^-0.25.
+  const int quarter = (mantissa >= 0.5946035575013605) + (mantissa >= 0.7071067811865476) +
+                      (mantissa >= 0.8408964152537145);
+  return std::clamp(4 * (e - kLowestExponent) + quarter, 0, kBuckets - 2);
+}
+
+void BadTriangleQueue::push(const Triangulation& t, std::uint32_t s, bool skinny, double shortest2,
+                            double sin2MinAngle) {
+  const int k = skinny ? classOf(shortest2) : kBuckets - 1;
+  const auto angleClass =
+      static_cast<std::uint8_t>(std::min<double>(kAngleClasses - 1, sin2MinAngle / 0.75 * (kAngleClasses - 1)));
+  buckets_[k].push_back({s, t.tv[3 * s], t.tv[3 * s + 1], t.tv[3 * s + 2], angleClass});
+  ++queuedByAngle_[angleClass];
+  lowestBucket_ = std::min(lowestBucket_, k);
+  if (++queued_ > compactAt_) dropStaleEntries(t);
+}
+
+// Where refinement runs away, each step can rebuild a fan of thousands of needles, and the entries
+// of the ones it replaced stay queued: 70 million entries for 4 million triangles (300 chords
+// crossing in a star at 30 degrees, before off-centers aimed past the bound). Dropping the stale
+// ones (pop would hand them out to be skipped anyway; the order of the rest is kept, so meshes do
+// not change) keeps memory proportional to the mesh.
+void BadTriangleQueue::dropStaleEntries(const Triangulation& t) {
+  queued_ = 0;
+  for (auto& b : buckets_) {
+    b.erase(std::remove_if(b.begin(), b.end(),
+                           [&](const BadTriangle& e) {
+                             if (isCurrent(t, e)) return false;
+                             --queuedByAngle_[e.angleClass];
+                             return true;
+                           }),
+            b.end());
+    queued_ += b.size();
+  }
+  compactAt_ = 2 * std::max<std::uint64_t>(queued_, t.slotCount()) + (1u << 16);
+}
+
+bool BadTriangleQueue::pop(BadTriangle& out) {
+  while (lowestBucket_ < kBuckets) {
+    auto& b = buckets_[lowestBucket_];
+    if (!b.empty()) {
+      out = b.back();
+      b.pop_back();
+      --queued_;
+      --queuedByAngle_[out.angleClass];
+      return true;
+    }
+    ++lowestBucket_;
+  }
+  return false;
+}
+
+double BadTriangleQueue::worstQueuedAngle(double fallback) const {
+  for (int c = 0; c < kAngleClasses; ++c)
+    if (queuedByAngle_[c]) return std::asin(std::sqrt(0.75 * c / (kAngleClasses - 1))) * 180 / 3.14159265358979323846;
+  return fallback;
+}
+
+}  // namespace ruppert::detail

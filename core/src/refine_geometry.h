@@ -1,0 +1,82 @@
+// Point geometry that refinement and its placements share: lengths, the encroachment test, the
+// circumcenter and the off-center of a triangle. Free functions of coordinates only.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ruppert::detail {
+
+inline constexpr double kPi = 3.14159265358979323846;
+
+// Plain sqrt(x^2 + y^2) rather than hypot (several times slower, and a library call in WebAssembly):
+// internal coordinates lie within (-2, 2), so no square overflows, and every length refinement
+// compares or divides by is at least its length floor (2^-38), whose square is far above underflow.
+inline double length(double x, double y) { return std::sqrt(x * x + y * y); }
+inline double dist(const double* p, const double* q) { return length(p[0] - q[0], p[1] - q[1]); }
+inline double sq(const double* p, const double* q) {
+  return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]);
+}
+
+// v encroaches (a, b) iff the angle avb is at least 90 degrees (closed diametral disk) or, with
+// lenses, at least 180 - 2 theta degrees when that is larger: cos(avb) <= lensCos, i.e.
+// dot <= 0 and dot^2 >= lensCos2 |va|^2 |vb|^2 (lensCos2 = 0: the disk).
+inline bool encroaches(const double* v, const double* a, const double* b, double lensCos2) {
+  const double ax = a[0] - v[0], ay = a[1] - v[1], bx = b[0] - v[0], by = b[1] - v[1];
+  const double dot = ax * bx + ay * by;
+  if (dot > 0) return false;
+  return lensCos2 == 0 || dot * dot >= lensCos2 * (ax * ax + ay * ay) * (bx * bx + by * by);
+}
+
+// Circumcenter of the counter-clockwise triangle p, computed relative to p[0] for accuracy. False
+// when the triangle is not strictly counter-clockwise in doubles (no circumcenter to trust).
+inline bool circumcenter(const double* const* p, double cc[2]) {
+  const double bx = p[1][0] - p[0][0], by = p[1][1] - p[0][1];
+  const double cx = p[2][0] - p[0][0], cy = p[2][1] - p[0][1];
+  const double d = 2 * (bx * cy - by * cx);
+  if (!(d > 0)) return false;
+  const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  cc[0] = p[0][0] + (cy * b2 - by * c2) / d, cc[1] = p[0][1] + (bx * c2 - cx * b2) / d;
+  return true;
+}
+
+// Off-center (Üngör, §6.8) of a triangle whose shortest edge u-w has length `shortest` and whose
+// circumcenter is cc: on the edge's bisector, where the isosceles triangle on u-w has apex angle
+// theta (so it just meets the bound). False, leaving out alone, when that point is not nearer than
+// the circumcenter (the circumcenter is then the placement).
+//
+// The new vertex is rounded to doubles, up to an ulp of its coordinates from where it is aimed; seen
+// from an edge of length l that turns the apex angle by up to ulp / l radians, so a triangle built
+// to meet the bound exactly can miss it, and its circumcenter then adds a vertex no farther away
+// than l: no gain in size, and at small scales a runaway (300 chords crossing at 30 degrees: half of
+// one's insertions split triangles 1e-9 to 1e-6 degrees short of 30). Aim past the bound by several
+// times that turn: 4e-12 rad for l = 1e-3, 1e-3 rad at the length floor.
+inline bool offCenter(const double* u, const double* w, double shortest, const double* cc, double theta,
+                      double out[2]) {
+  const double mx = (u[0] + w[0]) / 2, my = (u[1] + w[1]) / 2;
+  const double toC = length(cc[0] - mx, cc[1] - my);
+  const double reach = std::max({std::fabs(u[0]), std::fabs(u[1]), std::fabs(w[0]), std::fabs(w[1])});
+  const double margin = 16 * std::numeric_limits<double>::epsilon() * reach / shortest;
+  const double hOff = (shortest / 2) / std::tan((theta + margin) / 2);
+  if (!(hOff < toC && toC > 0)) return false;
+  out[0] = mx + (cc[0] - mx) * (hOff / toC);
+  out[1] = my + (cc[1] - my) * (hOff / toC);
+  return true;
+}
+
+// Where segments p0-p1 and q0-q1 meet (parameters within [0, 1] on both), into z; false if they
+// are parallel in doubles or do not meet.
+inline bool segmentsMeet(const double* p0, const double* p1, const double* q0, const double* q1, double z[2]) {
+  const double ax = p1[0] - p0[0], ay = p1[1] - p0[1];
+  const double bx = q1[0] - q0[0], by = q1[1] - q0[1];
+  const double den = ax * by - ay * bx;
+  if (den == 0) return false;
+  const double ta = ((q0[0] - p0[0]) * by - (q0[1] - p0[1]) * bx) / den;
+  const double tb = ((q0[0] - p0[0]) * ay - (q0[1] - p0[1]) * ax) / den;
+  if (!(ta >= 0 && ta <= 1 && tb >= 0 && tb <= 1)) return false;
+  z[0] = p0[0] + ta * ax, z[1] = p0[1] + ta * ay;
+  return true;
+}
+
+}  // namespace ruppert::detail

@@ -1,0 +1,18 @@
+// What refinement computes once before it starts.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "mesh_state.h"
+
+namespace ruppert::detail {
+
+// Per vertex: 1 at an acute input corner, an input or intersection vertex where two constrained
+// edges meet at less than 90 degrees (concentric-shell splitting applies there, §6.6).
+std::vector<std::uint8_t> acuteCorners(const MeshState& m);
+
+// The Steiner budget: Options::maxSteiner, or the automatic one for kAutoSteinerBudget.
+std::uint64_t steinerBudget(const MeshState& m);
+
+}  // namespace ruppert::detail
