@@ -32,6 +32,7 @@ struct OptimalPointQuery {
   const CavityEdge* edges = nullptr;
   std::size_t edgeCount = 0;
   double maxApex = 0;  // radians: the apex angle at which x starts to encroach a constrained edge
+  bool petal = true;   // whether the triangle (p, q, x) counts too (else p-q only places the seeds)
 };
 
 struct OptimalPoint {

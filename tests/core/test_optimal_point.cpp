@@ -145,7 +145,7 @@ TEST_CASE("optimal point: the answer meets 40 degrees where the grid says it can
   const double p[2] = {0, 0}, q[2] = {1, 0};
   const auto edges = edgesOf(square);
   const OptimalPoint r = optimalSteinerPoint(queryOf(edges, p, q, kPi / 2), nullptr, 0);
-  CHECK(r.minAngle == Approx(45 * kDeg).margin(1e-5));
+  CHECK(r.minAngle == Approx(45 * kDeg).margin(1e-3));  // the search stops at steps of 1e-3 |pq|
   // A thin rectangle (height 0.3): the best of the grid stays below 40, and so does the answer.
   const std::vector<double> thin = {0, 0, 1, 0, 1, 0.3, 0, 0.3};
   const auto thinEdges = edgesOf(thin);
