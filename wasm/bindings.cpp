@@ -358,6 +358,7 @@ val parseCliArgs(val argsJs) {
     if (o.maxSteiner != ruppert::kAutoSteinerBudget) options.set("maxSteiner", static_cast<double>(o.maxSteiner));
     options.set("placement", std::string(o.placement == ruppert::Placement::Circumcenter ? "circumcenter"
                                          : o.placement == ruppert::Placement::Petal   ? "petal"
+                                         : o.placement == ruppert::Placement::Optimal ? "optimal"
                                                                                       : "offcenter"));
     options.set("encroachment", std::string(o.encroachment == ruppert::Encroachment::DiametralDisk ? "disk" : "lens"));
     options.set("variant", std::string(o.variant == ruppert::Variant::BoundingBox ? "box" : "cdt"));

@@ -61,7 +61,12 @@ export interface TriangulateOptions {
   trace?: boolean;
   /** Compute stats.lfsIntegral, the chapter's size measure (section 6.5). */
   sizeMeasure?: boolean;
-  placement?: 'offcenter' | 'circumcenter' | 'petal';
+  /**
+   * 'offcenter' (default); 'circumcenter'; 'petal' (fewest triangles); 'optimal': Erten and Üngör's
+   * locally optimal Steiner points and relocation of free vertices, for minAngle 35-40 (completes
+   * where off-centers run to the Steiner budget, not always: check complete).
+   */
+  placement?: 'offcenter' | 'circumcenter' | 'petal' | 'optimal';
   /** 'lens' (default): diametral lenses, fewer splits; 'disk': the closed diametral disk of the chapter. */
   encroachment?: 'lens' | 'disk';
   /** 'cdt': constrained Delaunay refinement; 'box': Ruppert's original, conforming, in a box. */

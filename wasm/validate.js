@@ -164,7 +164,7 @@ export function normalizePlc(plc) {
   return { points, segments, holes, regions, pointMarkers, segmentMarkers, indexBase };
 }
 
-const PLACEMENTS = { circumcenter: 0, offcenter: 1, petal: 2 };
+const PLACEMENTS = { circumcenter: 0, offcenter: 1, petal: 2, optimal: 3 };
 const ENCROACHMENTS = { disk: 0, lens: 1 };
 const VARIANTS = { cdt: 0, box: 1 };
 const OPTION_KEYS = ['minAngle', 'maxArea', 'maxSteiner', 'sizeFunction', 'onProgress', 'trace',

@@ -29,7 +29,7 @@ bool parseStrictCount(const std::string& text, std::uint64_t& value) {
 const char* usageLine() {
   return "usage: ruppert [--min-angle DEG] [--max-area A] [--max-steiner N] [-o BASE] "
          "[--format triangle|json|svg] [--quiet] [--stats] [--trace FILE] "
-         "[--placement offcenter|circumcenter|petal] [--encroachment lens|disk] [--variant cdt|box] [--convex-hull] [--auto-holes] "
+         "[--placement offcenter|circumcenter|petal|optimal] [--encroachment lens|disk] [--variant cdt|box] [--convex-hull] [--auto-holes] "
          "[--help] [--version] INPUT";
 }
 
@@ -46,9 +46,10 @@ std::string helpText() {
          "  -o BASE              write the mesh: BASE.node, BASE.ele, BASE.poly (triangle format),\n"
          "                       BASE.json (json) or BASE.svg (svg); without -o only the summary is printed\n"
          "  --format F           triangle (default), json or svg\n"
-         "  --placement P        offcenter (default), circumcenter, or petal (fewest triangles: a point\n"
+         "  --placement P        offcenter (default), circumcenter, petal (fewest triangles: a point\n"
          "                       of the shortest edge's petal where an off-center would make a skinny\n"
-         "                       triangle; slower when there is no --max-area)\n"
+         "                       triangle; slower when there is no --max-area), or optimal (the point\n"
+         "                       maximising the smallest new angle there: for 35-40 degrees)\n"
          "  --encroachment E     lens (default: diametral lenses) or disk (closed diametral disks)\n"
          "  --variant V          cdt (default: constrained, no triangles outside the domain) or box\n"
          "                       (Ruppert's original: conforming mesh of an enclosing box)\n"
@@ -139,7 +140,8 @@ CliArgs parseArgs(const std::vector<std::string>& args) {
       if (v == "offcenter") out.options.placement = Placement::OffCenter;
       else if (v == "circumcenter") out.options.placement = Placement::Circumcenter;
       else if (v == "petal") out.options.placement = Placement::Petal;
-      else throw UsageError("--placement: '" + v + "' is not one of offcenter, circumcenter, petal");
+      else if (v == "optimal") out.options.placement = Placement::Optimal;
+      else throw UsageError("--placement: '" + v + "' is not one of offcenter, circumcenter, petal, optimal");
     } else if (name == "--variant") {
       const std::string v = value();
       if (v == "cdt") out.options.variant = Variant::Constrained;

@@ -12,7 +12,9 @@
 //   §6.7  the CDT holds only the domain, so refinement never leaves it;
 //   §6.8  off-centers (Üngör): the new vertex sits on the shortest edge's bisector, no farther than
 //         where the triangle it forms with that edge just meets the bound; Placement::Petal goes on
-//         to search the shortest edge's petal for a point that makes no new skinny triangle.
+//         to search the shortest edge's petal for a point that makes no new skinny triangle;
+//         Placement::Optimal takes Erten and Üngör's locally optimal point, or moves a free vertex
+//         (optimal_placement.h).
 // Termination for any input: besides §6.6, a Steiner budget and a floor on subsegment length below
 // which doubles cannot place new points; hitting either ends refinement with complete = false.
 //
@@ -25,6 +27,7 @@
 #include <string>
 
 #include "bad_triangle_queue.h"
+#include "optimal_placement.h"
 #include "placement.h"
 #include "predicates.h"
 #include "refine_geometry.h"
@@ -84,6 +87,8 @@ class Refiner {
   const double sin2Theta_;  // sin^2 of it, lowered by a relative 1e-12 against rounding
   const MeshAccess mesh_;   // read-only queries for placements (and the walk)
   PetalPlacement petal_;
+  OptimalPlacement optimal_;
+  std::vector<std::uint8_t> relocations_;  // per vertex: how often it was moved (Placement::Optimal)
   std::uint64_t budget_ = 0, inserted_ = 0;
   bool cancelled_ = false, budgetHit_ = false;
   std::uint64_t floorHits_ = 0;  // insertions refused at the precision limit
@@ -103,7 +108,8 @@ class Refiner {
         theta_(angleBound(o_)),
         sin2Theta_(std::sin(theta_) * std::sin(theta_) * (1 - 1e-12)),
         mesh_(m.tri, m.input, sin2Theta_, lensCos2For(o_)),
-        petal_(o_.placement == Placement::Petal ? theta_ : 0) {}
+        petal_(o_.placement == Placement::Petal ? theta_ : 0),
+        optimal_(theta_) {}
 
   RefineOutcome run() {
     corner_ = acuteCorners(m_);
@@ -287,6 +293,13 @@ class Refiner {
       const std::uint32_t g = t_.twin[3 * s];
       if (g != kNone) checkSubsegment(g);
     }
+    recheckFlipped();
+    return true;
+  }
+
+  // Triangles changed by flips (in flipped_): queue them if bad, and their edges and the edges
+  // across them if encroached.
+  void recheckFlipped() {
     for (std::uint32_t s : flipped_) {
       checkTriangle(s);
       for (std::uint32_t i = 0; i < 3; ++i) {
@@ -294,7 +307,6 @@ class Refiner {
         if (t_.twin[3 * s + i] != kNone) checkSubsegment(t_.twin[3 * s + i]);
       }
     }
-    return true;
   }
 
   // The new triangles take their parents' region data. Two passes: a new triangle may reuse the
@@ -446,6 +458,9 @@ class Refiner {
     const TriangleShape sh = shapeOf(p[0], p[1], p[2]);
     const TriangleQuality q = qualityOf(p[0], p[1], p[2]);
     const bool skinny = isSkinny(q);
+    // A moved vertex (relocate) leaves its old triangles' entries current (same vertices) though
+    // their shape has changed: such a triangle may now meet the bounds.
+    if (!relocations_.empty() && !skinny && !(maxAreaAt(s) > 0 && q.area > maxAreaAt(s))) return;
     if (skinny && (nestledInInputAngle(s, sh) || seditious(s, sh))) {
       const double bound = maxAreaAt(s);
       if (!(bound > 0 && q.area > bound)) return;  // left alone on purpose; counted in finish()
@@ -456,6 +471,9 @@ class Refiner {
       ++floorHits_;
       return;
     }
+    // As for Petal, only where no area bound applies.
+    if (skinny && o_.placement == Placement::Optimal && !(maxAreaAt(s) > 0) && optimalOrRelocate(bt, p, sh, target))
+      return;
     Location loc;
     if (!locateOrReject(bt, target, loc)) return;
     CavityRef known{&cavityTris_, &cavityBoundary_};
@@ -468,6 +486,55 @@ class Refiner {
       kind = VertexKind::OffCenter, known = {};
     }
     insertSteiner(bt, target, loc, kind, known);
+  }
+
+  // Placement::Optimal (optimal_placement.h): insert the locally optimal point if one meets the bound,
+  // else move a free endpoint of the shortest edge. False: neither; the first choice goes ahead.
+  bool optimalOrRelocate(const BadTriangle& bt, const double* const* p, const TriangleShape& sh, const double* first) {
+    double cc[2], x[2];
+    if (!circumcenter(p, cc)) return false;
+    const SkinnyTriangle st{bt.slot, p, sh, first, nullptr};
+    Location loc;
+    switch (optimal_.propose(mesh_, st, cc, x, loc)) {
+      case OptimalPlacement::Result::Found:
+        insertSteiner(bt, x, loc, VertexKind::OffCenter, {});
+        return true;
+      case OptimalPlacement::Result::FirstFine:
+        return false;
+      case OptimalPlacement::Result::None:
+        break;
+    }
+    const std::uint32_t ends[2] = {t_.tv[3 * bt.slot + (sh.shortestEdge + 1) % 3], t_.tv[3 * bt.slot + (sh.shortestEdge + 2) % 3]};
+    for (std::uint32_t v : ends)
+      if (relocate(v)) return true;
+    return false;
+  }
+
+  // Erten and Üngör's relocation: move v, a vertex refinement placed off every segment, to where
+  // every triangle of its star meets the bound (OptimalPlacement::relocation), then restore the
+  // Delaunay property by flips and re-check what changed. Each vertex moves at most
+  // kMaxRelocations times and every move counts against the Steiner budget, so refinement still
+  // ends. Not with a trace: the replay knows only insertions.
+  static constexpr std::uint8_t kMaxRelocations = 4;
+  bool relocate(std::uint32_t v) {
+    if (o_.trace || v < m_.inputCount || (m_.kind[v] != VertexKind::Interior && m_.kind[v] != VertexKind::OffCenter))
+      return false;
+    if (relocations_.size() <= v) relocations_.resize(t_.vertexCount(), 0);
+    double x[2];
+    if (relocations_[v] >= kMaxRelocations || !mayInsert() || !optimal_.relocation(mesh_, v, x)) return false;
+    t_.xy[2 * v] = x[0], t_.xy[2 * v + 1] = x[1];
+    ++relocations_[v], ++inserted_;
+    // The star's edges, and those of the triangles beyond it, may no longer be locally Delaunay.
+    mendStack_.clear();
+    flipped_.clear();
+    for (std::uint32_t h : optimal_.star())
+      for (std::uint32_t k = 0; k < 3; ++k) mendStack_.push_back(3 * (h / 3) + k);
+    t_.legalize(mendStack_, &flipped_);
+    for (std::uint32_t h : optimal_.star()) flipped_.push_back(h / 3);
+    std::sort(flipped_.begin(), flipped_.end());
+    flipped_.erase(std::unique(flipped_.begin(), flipped_.end()), flipped_.end());
+    recheckFlipped();
+    return true;
   }
 
   // Locate target for bad triangle bt. Where it lies beyond or on a subsegment, or encroaches one on

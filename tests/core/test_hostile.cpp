@@ -55,11 +55,14 @@ struct Mode {
   const char* name;
   double minAngle;
   const char* cliArgs;
+  ruppert::Placement placement = ruppert::Placement::OffCenter;
 };
 const Mode kModes[] = {
     {"plain CDT", 0, "--min-angle 0"},
     {"min angle 30", 30, "--min-angle 30 --max-steiner 20000"},
     {"min angle 40", 40, "--min-angle 40 --max-steiner 20000"},
+    {"min angle 40, optimal points", 40, "--min-angle 40 --max-steiner 20000 --placement optimal",
+     ruppert::Placement::Optimal},
 };
 // At 40 degrees refinement often runs to this budget. Meshing 200,000 vertices takes well under a
 // second here, but validating some of those meshes does not: split-point-off-its-segment-broke-
@@ -74,6 +77,7 @@ std::string outcomeOf(const fs::path& path, const Mode& mode) {
     ruppert::Options o;
     o.minAngle = mode.minAngle;
     o.maxSteiner = kMaxSteiner;
+    o.placement = mode.placement;
     const ruppert::Mesh mesh = ruppert::triangulate(plc, o);
     const std::vector<std::string> problems = ruppert_fuzz::judgeMesh(mesh, plc, o);
     return problems.empty() ? "valid" : "invalid: " + ruppert_test::describeProblems(problems, 4);

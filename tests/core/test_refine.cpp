@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "plc_generators.h"
+#include "shape_families.h"
 #include "validator.h"
 
 using ruppert::Mesh;
@@ -425,8 +426,8 @@ TEST_CASE("new vertices stay within the exact predicates' range", "[refine]") {
   using ruppert::Placement;
   for (const auto& [file, area] : cases) {
     const Plc plc = ruppert::readFile(dir + file);
-    for (Placement placement : {Placement::OffCenter, Placement::Petal, Placement::Circumcenter})
-      for (double angle : {0.0, 20.0, 30.0, 33.0})
+    for (Placement placement : {Placement::OffCenter, Placement::Petal, Placement::Circumcenter, Placement::Optimal})
+      for (double angle : {0.0, 20.0, 30.0, 33.0, 40.0})
         for (double maxArea : {0.0, area}) {
           Options o;
           o.minAngle = angle;
@@ -437,4 +438,24 @@ TEST_CASE("new vertices stay within the exact predicates' range", "[refine]") {
                                     std::to_string(maxArea));
         }
   }
+}
+
+// Locally optimal points and relocation (Placement::Optimal) at 35-40 degrees: every mesh valid and,
+// when complete, every non-exempt angle at the bound, on one member of every shape family, with a
+// budget that keeps the misses short. Some members must complete at 38 degrees (off-centers complete
+// none of these at 38).
+TEST_CASE("optimal placement at 35, 38 and 40 degrees is valid on every shape family", "[refine][optimal]") {
+  int completeAt38 = 0;
+  for (const auto& family : ruppert_test::shapeFamilies()) {
+    const ruppert_test::GeneratedPlc g = ruppert_test::familyMember(family, 2);
+    for (double angle : {35.0, 38.0, 40.0}) {
+      Options o;
+      o.minAngle = angle;
+      o.placement = ruppert::Placement::Optimal;
+      o.maxSteiner = 6000;
+      const Mesh mesh = refineChecked(g.plc, o, std::string(family.name) + "-2");
+      if (angle == 38.0 && mesh.complete) ++completeAt38;
+    }
+  }
+  CHECK(completeAt38 >= 3);
 }

@@ -142,6 +142,20 @@ test("placement 'petal' gives valid meshes with fewer triangles than off-centers
   assert.ok(petal < offCenter, `petal ${petal} triangles, off-centers ${offCenter}`);
 });
 
+test("placement 'optimal' gives valid meshes that meet 38 degrees where off-centers do not", async () => {
+  const mesher = await init();
+  let optimal = 0;
+  let offCenter = 0;
+  for (let seed = 1; seed <= 6; seed++) {
+    const plc = starPolygon(seed, 30);
+    offCenter += mesher.triangulate(plc, { minAngle: 38, maxSteiner: 3000 }).complete ? 1 : 0;
+    const mesh = mesher.triangulate(plc, { minAngle: 38, placement: 'optimal', maxSteiner: 3000 });
+    assert.deepEqual(validateMesh(mesh, { input: plc }), [], `seed ${seed}`);
+    optimal += mesh.complete ? 1 : 0;
+  }
+  assert.ok(optimal > offCenter, `complete at 38 degrees: optimal ${optimal} of 6, off-centers ${offCenter}`);
+});
+
 test('parsePoly / toPoly / toSVG round trip through the C++ readers and writers', async () => {
   const mesher = await init();
   const text = '# a square\n4 2 0 1\n1 0 0 1\n2 1 0 1\n3 1 1 1\n4 0 1 1\n4 1\n1 1 2 5\n2 2 3 5\n3 3 4 5\n4 4 1 5\n0\n';

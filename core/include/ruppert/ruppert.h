@@ -95,6 +95,10 @@ enum class Placement : std::uint8_t {
                      // the shortest edge's petal that makes none and lies farthest from its
                      // neighbours (after Erten and Üngör): fewer triangles still, slower without an
                      // area bound (with one it is the same as OffCenter)
+  Optimal = 3,       // off-centers, but where one would itself make a skinny triangle, the point that
+                     // maximises the smallest angle of the triangles it makes (Erten and Üngör's
+                     // locally optimal Steiner point), if that angle meets the bound: for bounds of
+                     // 35-40 degrees, which off-centers rarely reach
 };
 
 // When a vertex v encroaches a subsegment ab (and so ab is split, or v rejected).

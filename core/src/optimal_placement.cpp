@@ -1,0 +1,115 @@
+#include "optimal_placement.h"
+
+#include <algorithm>
+
+#include "predicates.h"
+
+namespace ruppert::detail {
+
+void OptimalPlacement::edgesOf(const Triangulation& t, const std::vector<std::uint32_t>& boundary) {
+  edges_.clear();
+  for (std::uint32_t h : boundary) {
+    const double* a = t.pt(t.origin(h));
+    const double* b = t.pt(t.dest(h));
+    edges_.push_back({{a[0], a[1]}, {b[0], b[1]}, t.con[h] != kFree});
+  }
+}
+
+// Whether x can be inserted for skinny triangle s: in a triangle of the domain, destroying s (in
+// its circumcircle, so in its cavity), not within the length floor of a vertex, encroaching no
+// subsegment of its cavity. Its cavity is left in candidateTris_ / candidateBoundary_.
+bool OptimalPlacement::fits(const MeshAccess& mesh, std::uint32_t s, const double* x, Location& loc) {
+  if (!mesh.representable(x)) return false;
+  std::uint32_t blocked;
+  loc = mesh.walk(s, x, blocked);
+  if (blocked != kNone || loc.kind != Location::InTriangle) return false;
+  mesh.tri.cavity(x, loc, candidateTris_, candidateBoundary_);
+  if (std::find(candidateTris_.begin(), candidateTris_.end(), s) == candidateTris_.end()) return false;
+  if (mesh.tooCloseToCavity(x, candidateBoundary_)) return false;
+  for (std::uint32_t h : candidateBoundary_)
+    if (mesh.tri.con[h] != kFree && mesh.encroachesEdge(x, h)) return false;
+  return true;
+}
+
+// The prediction needs the new vertex's cavity, which depends on the point: it starts from the first
+// choice's cavity (else, when that lies beyond a subsegment, the cavity of s's centroid), and each
+// point found is checked against its own cavity; where that cavity makes a skinny triangle after
+// all, the search runs again on it (three rounds at most).
+OptimalPlacement::Result OptimalPlacement::propose(const MeshAccess& mesh, const SkinnyTriangle& st, const double* cc,
+                                                   double target[2], Location& loc) {
+  const Triangulation& t = mesh.tri;
+  if (fits(mesh, st.slot, st.first, loc)) {
+    if (mesh.newMinSin2(st.first, candidateBoundary_) >= mesh.sin2Theta) return Result::FirstFine;
+  } else {
+    const double centroid[2] = {(st.p[0][0] + st.p[1][0] + st.p[2][0]) / 3, (st.p[0][1] + st.p[1][1] + st.p[2][1]) / 3};
+    Location inside;
+    inside.kind = Location::InTriangle, inside.tri = st.slot;
+    t.cavity(centroid, inside, candidateTris_, candidateBoundary_);
+  }
+  cavity_.swap(candidateBoundary_);
+  const int e = st.shape.shortestEdge;
+  OptimalPointQuery query;
+  query.p = st.p[(e + 1) % 3], query.q = st.p[(e + 2) % 3];
+  query.maxApex = mesh.lensCos2 == 0 ? kPi / 2 : kPi - 2 * theta_;
+  double seeds[6] = {st.first[0], st.first[1], cc[0], cc[1], 0, 0};
+  std::size_t seedCount = 2;
+  for (int round = 0; round < 3; ++round) {
+    edgesOf(t, cavity_);
+    query.edges = edges_.data(), query.edgeCount = edges_.size();
+    const OptimalPoint r = optimalSteinerPoint(query, seeds, seedCount);
+    Location l;
+    if (r.encroaches || !(r.minAngle > theta_) || !fits(mesh, st.slot, r.x, l)) return Result::None;
+    if (mesh.newMinSin2(r.x, candidateBoundary_) >= mesh.sin2Theta) {
+      target[0] = r.x[0], target[1] = r.x[1], loc = l;
+      return Result::Found;
+    }
+    seeds[4] = r.x[0], seeds[5] = r.x[1], seedCount = 3;
+    cavity_.swap(candidateBoundary_);
+  }
+  return Result::None;
+}
+
+// The triangles around v, by their edges opposite v (into star_), all of whose edges are free;
+// false where the fan is open (v on the mesh boundary) or longer than 64.
+bool OptimalPlacement::closedFreeFan(const Triangulation& t, std::uint32_t v) {
+  star_.clear();
+  const std::uint32_t start = t.vtri[v];
+  if (start == kNone || !t.alive(start)) return false;
+  std::uint32_t s = start;
+  do {
+    std::uint32_t i = 0;
+    while (i < 3 && t.tv[3 * s + i] != v) ++i;
+    if (i == 3 || star_.size() > 64) return false;
+    const std::uint32_t h = 3 * s + i;
+    if (t.con[h] != kFree || t.con[next3(h)] != kFree || t.con[prev3(h)] != kFree) return false;
+    star_.push_back(h);
+    // prev3(h) runs from v to origin(h); the triangle across it is the next one around v.
+    const std::uint32_t g = t.twin[prev3(h)];
+    if (g == kNone) return false;
+    s = g / 3;
+  } while (s != start);
+  return true;
+}
+
+// Moving v within the kernel of its star (the points left of every outer edge) keeps every triangle
+// counter-clockwise; the new position is checked exactly for that, and for the bound with the
+// queue's own test. (optimal_point.h's search without the petal term: v has no shortest edge to
+// stay near; the first outer edge only places the search's own seeds.)
+bool OptimalPlacement::relocation(const MeshAccess& mesh, std::uint32_t v, double x[2]) {
+  const Triangulation& t = mesh.tri;
+  if (!closedFreeFan(t, v)) return false;
+  edgesOf(t, star_);
+  double seeds[4] = {t.pt(v)[0], t.pt(v)[1], 0, 0};
+  for (const CavityEdge& c : edges_) seeds[2] += c.u[0] / edges_.size(), seeds[3] += c.u[1] / edges_.size();
+  OptimalPointQuery query;
+  query.p = edges_[0].u, query.q = edges_[0].v, query.petal = false;
+  query.edges = edges_.data(), query.edgeCount = edges_.size(), query.maxApex = kPi;
+  const OptimalPoint r = optimalSteinerPoint(query, seeds, 2);
+  if (!(r.minAngle > theta_) || !mesh.representable(r.x) || mesh.tooCloseToCavity(r.x, star_)) return false;
+  for (const CavityEdge& c : edges_)
+    if (!(orient2d(c.u, c.v, r.x) > 0) || qualityOf(c.u, c.v, r.x).sin2MinAngle < mesh.sin2Theta) return false;
+  x[0] = r.x[0], x[1] = r.x[1];
+  return true;
+}
+
+}  // namespace ruppert::detail
