@@ -181,6 +181,7 @@ const char* reasonKindName(ruppert::ReasonKind k) {
     case ruppert::ReasonKind::SteinerBudget: return "STEINER_BUDGET";
     case ruppert::ReasonKind::PrecisionFloor: return "PRECISION_FLOOR";
     case ruppert::ReasonKind::Cancelled: return "CANCELLED";
+    case ruppert::ReasonKind::AngleUnreachable: return "ANGLE_UNREACHABLE";
   }
   return "UNKNOWN";
 }
@@ -380,7 +381,7 @@ val writeMesh(val meshJs, val inputJs, std::string format) {
 // per object field.
 // ---------------------------------------------------------------------------------------------
 // Layout of outputTable(), read by wasm/heap-call.js: nine (address, length) pairs, then scalars.
-constexpr int kOutputTableSize = 2 * 9 + 18;
+constexpr int kOutputTableSize = 2 * 9 + 19;
 
 struct Staged {
   ruppert::Plc plc;
@@ -453,7 +454,7 @@ val triangulateStaged(val optionsJs) {
                      double(m.events.size()), double(st.vertices), double(st.triangles), st.minAngle, st.maxAngle,
                      double(st.inputVertices), double(st.segmentVertices), double(st.interiorVertices),
                      double(st.offCenterVertices), double(st.intersectionVertices), double(st.rejectedCircumcenters),
-                     st.lfsIntegral, st.trianglesPerLfsIntegral, st.milliseconds})
+                     st.lfsIntegral, st.trianglesPerLfsIntegral, st.milliseconds, st.reachedAngle})
       *t++ = v;
     return val::null();
   });

@@ -12,7 +12,7 @@ const ARRAYS = [
 ];
 const STATS_BEFORE_HISTOGRAM = ['vertices', 'triangles', 'minAngle', 'maxAngle'];
 const STATS_AFTER_HISTOGRAM = ['inputVertices', 'segmentVertices', 'interiorVertices', 'offCenterVertices',
-  'intersectionVertices', 'rejectedCircumcenters', 'lfsIntegral', 'trianglesPerLfsIntegral', 'milliseconds'];
+  'intersectionVertices', 'rejectedCircumcenters', 'lfsIntegral', 'trianglesPerLfsIntegral', 'milliseconds', 'reachedAngle'];
 const TABLE_SIZE = 2 * ARRAYS.length + 5 + STATS_BEFORE_HISTOGRAM.length + STATS_AFTER_HISTOGRAM.length;
 
 const INPUTS = [
