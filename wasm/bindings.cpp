@@ -204,6 +204,7 @@ const char* reasonKindName(ruppert::ReasonKind k) {
     case ruppert::ReasonKind::SteinerBudget: return "STEINER_BUDGET";
     case ruppert::ReasonKind::PrecisionFloor: return "PRECISION_FLOOR";
     case ruppert::ReasonKind::Cancelled: return "CANCELLED";
+    case ruppert::ReasonKind::AngleUnreachable: return "ANGLE_UNREACHABLE";
   }
   return "UNKNOWN";
 }
@@ -435,7 +436,7 @@ val writeMesh(val meshJs, val inputJs, std::string format) {
 // Layout of the output table, read by wasm/heap-call.js (ARRAYS, then the scalars): fifteen
 // (address, length) pairs, then scalars.
 constexpr int kOutputArrays = 15;
-constexpr int kOutputTableSize = 2 * kOutputArrays + 18;
+constexpr int kOutputTableSize = 2 * kOutputArrays + 19;
 constexpr int kInputArrays = 6;
 
 struct Staged {
@@ -481,7 +482,7 @@ void writeOutputTable(Staged& s) {
                    double(m.events.size()), double(st.vertices), double(st.triangles), st.minAngle, st.maxAngle,
                    double(st.inputVertices), double(st.segmentVertices), double(st.interiorVertices),
                    double(st.offCenterVertices), double(st.intersectionVertices), double(st.rejectedCircumcenters),
-                   st.lfsIntegral, st.trianglesPerLfsIntegral, st.milliseconds})
+                   st.lfsIntegral, st.trianglesPerLfsIntegral, st.milliseconds, st.reachedAngle})
     *t++ = v;
 }
 

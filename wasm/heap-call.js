@@ -18,7 +18,7 @@ const ARRAYS = [
 ];
 const STATS_BEFORE_HISTOGRAM = ['vertices', 'triangles', 'minAngle', 'maxAngle'];
 const STATS_AFTER_HISTOGRAM = ['inputVertices', 'segmentVertices', 'interiorVertices', 'offCenterVertices',
-  'intersectionVertices', 'rejectedCircumcenters', 'lfsIntegral', 'trianglesPerLfsIntegral', 'milliseconds'];
+  'intersectionVertices', 'rejectedCircumcenters', 'lfsIntegral', 'trianglesPerLfsIntegral', 'milliseconds', 'reachedAngle'];
 
 const INPUTS = [
   ['points', Float64Array], ['segments', Uint32Array], ['holes', Float64Array], ['regions', Float64Array],

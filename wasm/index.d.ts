@@ -49,7 +49,12 @@ export interface Progress {
 }
 
 export interface TriangulateOptions {
-  /** Minimum angle in degrees, in [0, 60]. Default 30. */
+  /**
+   * Minimum angle in degrees, in [0, 60]. Default 30. Above 34 it may be out of reach: then the
+   * result is the best mesh reached (complete: false, reason 'ANGLE_UNREACHABLE', the angle reached
+   * in stats.reachedAngle), never below 33 degrees outside the chapter's exemptions nor over four
+   * times the triangles of the 33-degree mesh, when 33 degrees completes.
+   */
   minAngle?: number;
   /** Global upper bound on triangle area; 0 or absent: none. */
   maxArea?: number;
@@ -79,7 +84,11 @@ export interface TriangulateOptions {
   onProgress?: (progress: Progress) => boolean | void;
 }
 
-export type ReasonKind = 'SMALL_INPUT_ANGLE' | 'SEDITIOUS_EDGE' | 'STEINER_BUDGET' | 'PRECISION_FLOOR' | 'CANCELLED';
+export type ReasonKind = 'SMALL_INPUT_ANGLE' | 'SEDITIOUS_EDGE' | 'STEINER_BUDGET' | 'PRECISION_FLOOR' | 'CANCELLED'
+  // minAngle above 34 degrees that refinement could not reach: the mesh is the best one reached
+  // (stats.reachedAngle): the 33-degree mesh, or better, from raising its bound a degree at a time
+  // while the mesh improved.
+  | 'ANGLE_UNREACHABLE';
 export type NoticeKind = 'DUPLICATE_POINT' | 'ZERO_LENGTH_SEGMENT' | 'DUPLICATE_SEGMENT' | 'VERTEX_ON_SEGMENT' |
   'SEGMENTS_CROSS' | 'SEGMENTS_OVERLAP' | 'HOLE_OUTSIDE_DOMAIN' | 'REGION_OUTSIDE_DOMAIN' | 'NOTHING_ENCLOSED';
 
@@ -104,6 +113,12 @@ export interface Stats {
   triangles: number;
   minAngle: number;
   maxAngle: number;
+  /**
+   * Degrees: the smallest angle over the triangles the angle bound applies to (those in small input
+   * angles and on seditious edges left out): >= minAngle when complete; with 'ANGLE_UNREACHABLE',
+   * the angle the returned mesh reached.
+   */
+  reachedAngle: number;
   /** 180 bins of 1 degree over all three angles of every triangle. */
   angleHistogram: Float64Array;
   inputVertices: number;

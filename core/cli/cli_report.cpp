@@ -34,6 +34,7 @@ const char* reasonLabel(ReasonKind kind) {
     case ReasonKind::SteinerBudget: return "Steiner budget reached";
     case ReasonKind::PrecisionFloor: return "precision floor";
     case ReasonKind::Cancelled: return "cancelled";
+    case ReasonKind::AngleUnreachable: return "angle out of reach";
   }
   return "unknown";
 }
@@ -70,7 +71,8 @@ void statsTo(TextOut& out, const Stats& s) {
       << ", circumcenters " << s.interiorVertices << ", off-centers " << s.offCenterVertices << ", intersections "
       << s.intersectionVertices << ")\n";
   out << "triangles: " << s.triangles << '\n';
-  out << "angles: min " << fixed(s.minAngle, 4) << ", max " << fixed(s.maxAngle, 4) << " degrees\n";
+  out << "angles: min " << fixed(s.minAngle, 4) << ", max " << fixed(s.maxAngle, 4) << " degrees (min "
+      << fixed(s.reachedAngle, 4) << " without the section 6.6 exemptions)\n";
   // 180 one-degree bins are too many for a terminal; ten-degree groups show the shape.
   out << "angle histogram (degrees: count):";
   bool any = false;

@@ -24,9 +24,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "bad_triangle_queue.h"
+#include "bound_push.h"
 #include "optimal_placement.h"
 #include "placement.h"
 #include "predicates.h"
@@ -63,11 +65,12 @@ struct EdgeRef {
   std::uint32_t a, b, hint;
 };
 
-double angleBound(const Options& o) { return o.minAngle * kPi / 180.0; }
+double radians(double degrees) { return degrees * kPi / 180.0; }
+// sin^2 of a bound, lowered by a relative 1e-12 against rounding.
+double sin2Bound(double theta) { return std::sin(theta) * std::sin(theta) * (1 - 1e-12); }
 
 // Lens apex angle 180 - 2 theta, never below the disk's 90 degrees: cos(180 - 2 theta) = -cos(2 theta).
-double lensCos2For(const Options& o) {
-  const double theta = angleBound(o);
+double lensCos2For(const Options& o, double theta) {
   if (o.encroachment == Encroachment::DiametralLens && theta < kPi / 4) return std::cos(2 * theta) * std::cos(2 * theta);
   return 0;
 }
@@ -83,12 +86,27 @@ class Refiner {
   Triangulation& t_;
   const Options& o_;
   RefineOutcome out_;
-  const double theta_;      // the angle bound, radians
-  const double sin2Theta_;  // sin^2 of it, lowered by a relative 1e-12 against rounding
-  const MeshAccess mesh_;   // read-only queries for placements (and the walk)
+  const RefinePlan plan_;
+  double stageDegrees_;     // the current stage's angle bound (the requested one unless staged)
+  double theta_;            // the same in radians
+  double sin2Theta_;        // sin2Bound(theta_)
+  const double sin2Requested_;
+  MeshAccess mesh_;         // read-only queries for placements (and the walk)
   PetalPlacement petal_;
   OptimalPlacement optimal_;
   std::vector<std::uint8_t> relocations_;  // per vertex: how often it was moved (Placement::Optimal)
+  PushTracker push_;              // staged runs only (plan_.track)
+  std::uint64_t nextScoreAt_ = 0; // when the push next scores the mesh
+  bool pushing_ = false;          // past the first stage
+  bool unreachable_ = false;      // the result is the best mesh of a push that stopped short
+  bool capHit_ = false;           // stopped at plan_.triangleCap
+  const char* pushStop_ = "";     // why the push stopped, for the reason's message
+  // The push's best mesh so far, with the trace length and rejection count it had.
+  struct Snapshot {
+    MeshState mesh;
+    std::size_t events = 0;
+    std::uint64_t rejected = 0;
+  } best_;
   std::uint64_t budget_ = 0, inserted_ = 0;
   bool cancelled_ = false, budgetHit_ = false;
   std::uint64_t floorHits_ = 0;  // insertions refused at the precision limit
@@ -101,19 +119,26 @@ class Refiner {
   std::vector<EdgeRef> rejectPairs_;
 
  public:
-  explicit Refiner(MeshState& m)
+  Refiner(MeshState& m, const RefinePlan& plan)
       : m_(m),
         t_(m.tri),
         o_(*m.options),
-        theta_(angleBound(o_)),
-        sin2Theta_(std::sin(theta_) * std::sin(theta_) * (1 - 1e-12)),
-        mesh_(m.tri, m.input, sin2Theta_, lensCos2For(o_)),
+        plan_(plan),
+        stageDegrees_(plan.first),
+        theta_(radians(plan.first)),
+        sin2Theta_(sin2Bound(theta_)),
+        sin2Requested_(sin2Bound(radians(plan.requested))),
+        mesh_(m.tri, m.input, sin2Theta_, lensCos2For(o_, theta_)),
         petal_(o_.placement == Placement::Petal ? theta_ : 0),
         optimal_(theta_) {}
 
+  // After run(): whether it stopped at plan_.triangleCap.
+  bool capHit() const { return capHit_; }
+
   RefineOutcome run() {
     corner_ = acuteCorners(m_);
-    budget_ = steinerBudget(m_);
+    const std::uint64_t budget = steinerBudget(m_);
+    budget_ = budget > plan_.used ? budget - plan_.used : 0;
     // Initial queues: every subsegment and every triangle (linear in the mesh size, §6.3).
     for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
       if (!t_.alive(s)) continue;
@@ -132,16 +157,110 @@ class Refiner {
       }
       if (stop) break;
       BadTriangle bt;
-      if (!bad_.pop(bt)) break;
+      if (!bad_.pop(bt)) {
+        if (nextStage()) continue;
+        break;
+      }
       if (!isCurrent(t_, bt)) continue;  // stale entry: the triangle is gone
       splitTriangle(bt);
-      stop = outOfBudget();
+      stop = outOfBudget() || overCap() || pushStopped();
     }
+    if (pushing_ && stop && !cancelled_) endPush();
     finish();
     return std::move(out_);
   }
 
  private:
+  // ---- stages (bound_push.h) -------------------------------------------------------------------
+  void setBound(double degrees) {
+    stageDegrees_ = degrees;
+    theta_ = radians(degrees);
+    sin2Theta_ = sin2Bound(theta_);
+    mesh_.sin2Theta = sin2Theta_;
+    mesh_.lensCos2 = lensCos2For(o_, theta_);
+    if (o_.placement == Placement::Petal) petal_ = PetalPlacement(theta_);
+    if (o_.placement == Placement::Optimal) optimal_ = OptimalPlacement(theta_);
+  }
+
+  // The queue is empty: if a stage below the requested bound just completed, raise the bound by a
+  // step and queue what the new bound makes bad. False when there is no next stage.
+  bool nextStage() {
+    if (!(stageDegrees_ < plan_.requested)) return false;
+    if (plan_.track) {
+      if (!pushing_) push_.setBase(liveTriangles());
+      observe();
+    }
+    pushing_ = true;
+    setBound(std::min(plan_.requested, stageDegrees_ + kStageStepDegrees));
+    push_.newStage(inserted_);
+    for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
+      if (!t_.alive(s)) continue;
+      checkTriangle(s);
+      for (std::uint32_t i = 0; i < 3; ++i) checkSubsegment(3 * s + i);
+    }
+    return true;
+  }
+
+  std::uint64_t liveTriangles() const { return t_.slotCount() - t_.freeSlots.size(); }
+
+  bool overCap() {
+    if (!plan_.triangleCap || liveTriangles() <= plan_.triangleCap) return false;
+    capHit_ = true;
+    pushStop_ = "the mesh reached four times the 33-degree mesh's triangles";
+    return true;
+  }
+
+  // Scores the mesh and, if it is the best so far, keeps a copy.
+  void observe() {
+    if (!push_.observe(score(), inserted_)) return;
+    best_.mesh = m_;
+    best_.events = out_.events.size(), best_.rejected = out_.rejected;
+  }
+
+  // During a push: scores the mesh every so often (every quarter of its size in insertions, so
+  // scores and copies cost a fraction of the refinement) and stops when a stage stops reducing its
+  // bad triangles.
+  bool pushStopped() {
+    if (!plan_.track || !pushing_ || inserted_ < nextScoreAt_) return false;
+    nextScoreAt_ = inserted_ + std::max<std::uint64_t>(2048, liveTriangles() / 4);
+    observe();
+    if (!push_.stalled(inserted_)) return false;
+    pushStop_ = "a stage stopped reducing its skinny triangles";
+    return true;
+  }
+
+  // The push stopped short of the requested bound: the result is its best mesh.
+  void endPush() {
+    if (!plan_.track) return;
+    if (budgetHit_) pushStop_ = "the Steiner budget was reached";
+    if (!capHit_) observe();  // a mesh over the cap is never the result
+    unreachable_ = true;
+    if (push_.bestStep() == inserted_) return;
+    m_ = std::move(best_.mesh);
+    out_.events.resize(best_.events);
+    out_.rejected = best_.rejected;
+  }
+
+  // The whole mesh against the requested bound and the current stage's.
+  MeshScore score() const {
+    MeshScore sc;
+    for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
+      if (!t_.alive(s)) continue;
+      ++sc.triangles;
+      const TriangleQuality q = qualityAt(s);
+      const double bound = maxAreaAt(s);
+      if (bound > 0 && q.area > bound * (1 + 1e-9)) ++sc.large;
+      if (q.sin2MinAngle < sin2Requested_) {
+        const TriangleShape sh = shapeOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
+        if (nestledInInputAngle(s, sh) || seditious(s, sh)) continue;
+        ++sc.belowRequested;
+        if (q.sin2MinAngle < sin2Theta_) ++sc.belowStage;
+      }
+      sc.minSin2 = std::min(sc.minSin2, q.sin2MinAngle);
+    }
+    return sc;
+  }
+
   // ---- tests ---------------------------------------------------------------------------------
   // O(1) test of Exercise 1: the subsegment h is encroached iff an apex on either side sees it at
   // 90 degrees or more.
@@ -607,6 +726,7 @@ class Refiner {
   // ---- result ------------------------------------------------------------------------------------
   struct Unmet {
     std::uint64_t nestled = 0, sedition = 0, otherSkinny = 0, large = 0;
+    double minSin2 = 1;  // over the triangles the bound applies to
   };
   Unmet countUnmet() const {
     Unmet u;
@@ -615,17 +735,31 @@ class Refiner {
       const TriangleQuality q = qualityAt(s);
       const double bound = maxAreaAt(s);
       if (bound > 0 && q.area > bound * (1 + 1e-9)) ++u.large;
-      if (!isSkinny(q)) continue;
+      if (!isSkinny(q)) {
+        u.minSin2 = std::min(u.minSin2, q.sin2MinAngle);
+        continue;
+      }
       const TriangleShape sh = shapeOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
       if (nestledInInputAngle(s, sh)) ++u.nestled;
       else if (seditious(s, sh)) ++u.sedition;
-      else ++u.otherSkinny;
+      else ++u.otherSkinny, u.minSin2 = std::min(u.minSin2, q.sin2MinAngle);
     }
     return u;
   }
 
+  std::string unreachableMessage(std::uint64_t unmet, double reached) const {
+    char angles[96];
+    std::snprintf(angles, sizeof angles, "%.6g degrees is out of reach; the smallest angle reached is %.2f", plan_.requested, reached);
+    return std::string("a minimum angle of ") + angles + " degrees (section 6.6's exemptions aside): refining to it directly did not complete within eight times the "
+           "triangles of the " + std::to_string(static_cast<int>(kReachableDegrees)) + "-degree mesh, and from that mesh "
+           "refinement raised the bound a degree at a time until " + pushStop_ + "; this is the best mesh it reached; " + std::to_string(unmet) +
+           " triangle(s) are below the bound";
+  }
+
   void finish() {
+    if (stageDegrees_ != plan_.requested) setBound(plan_.requested);  // judge by the bound asked for
     const Unmet u = countUnmet();
+    out_.reachedAngle = std::asin(std::sqrt(u.minSin2)) * 180 / kPi;
     auto add = [&](ReasonKind k, std::uint64_t n, const std::string& msg) {
       out_.reasons.push_back(Reason{k, n, msg});
     };
@@ -633,6 +767,8 @@ class Refiner {
     if (cancelled_)
       add(ReasonKind::Cancelled, unmet, "refinement was cancelled; " + std::to_string(unmet) +
                                             " triangle(s) do not meet the bounds");
+    else if (unreachable_)
+      add(ReasonKind::AngleUnreachable, unmet, unreachableMessage(unmet, out_.reachedAngle));
     else if (budgetHit_)
       add(ReasonKind::SteinerBudget, unmet, "the Steiner budget of " + std::to_string(budget_) +
                                                 " vertices was reached; " + std::to_string(unmet) +
@@ -655,9 +791,52 @@ class Refiner {
 
 }  // namespace
 
+namespace {
+
+bool completeOutcome(const RefineOutcome& r) {
+  for (const Reason& reason : r.reasons)
+    if (reason.kind != ReasonKind::SmallInputAngle && reason.kind != ReasonKind::SeditiousEdge) return false;
+  return true;
+}
+
+std::uint64_t liveTriangles(const MeshState& m) { return m.tri.slotCount() - m.tri.freeSlots.size(); }
+
+// A request above kStagedAboveDegrees (bound_push.h): the 33-degree mesh first, for its size; then
+// the requested bound directly, up to eight times that size; else the push from the 33-degree mesh.
+RefineOutcome refineStaged(MeshState& m) {
+  const double requested = m.options->minAngle;
+  MeshState start = m;
+  const std::size_t unrefined = m.kind.size();
+  RefineOutcome reach = Refiner(m, RefinePlan::direct(kReachableDegrees)).run();
+  if (!completeOutcome(reach)) {  // not even 33 degrees: refine as asked, as without stages
+    m = std::move(start);
+    return Refiner(m, RefinePlan::direct(requested)).run();
+  }
+  const std::uint64_t base = liveTriangles(m);
+  RefinePlan direct = RefinePlan::direct(requested);
+  direct.triangleCap = kDirectTriangleFactor * base;
+  Refiner attempt(start, direct);
+  RefineOutcome out = attempt.run();
+  if (!attempt.capHit() && completeOutcome(out)) {
+    m = std::move(start);
+    return out;
+  }
+  start = MeshState{};  // free it before the push
+  const std::uint64_t used = m.kind.size() - unrefined;
+  RefinePlan push{requested, kReachableDegrees, true, kPushTriangleFactor * base, used};
+  out = Refiner(m, push).run();
+  // The push continues the 33-degree run: its trace and rejections come first.
+  reach.events.insert(reach.events.end(), out.events.begin(), out.events.end());
+  out.events = std::move(reach.events);
+  out.rejected += reach.rejected;
+  return out;
+}
+
+}  // namespace
+
 RefineOutcome refine(MeshState& m) {
-  Refiner r(m);
-  return r.run();
+  if (!(m.options->minAngle > kStagedAboveDegrees)) return Refiner(m, RefinePlan::direct(m.options->minAngle)).run();
+  return refineStaged(m);
 }
 
 }  // namespace ruppert::detail

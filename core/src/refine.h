@@ -13,6 +13,7 @@ struct RefineOutcome {
   std::vector<Event> events;         // internal vertex ids and scaled coordinates until mapped
   std::uint64_t rejected = 0;        // rejected circumcenters / off-centers
   double lfsIntegral = 0;
+  double reachedAngle = -1;          // degrees: smallest angle the bound applies to; -1: not refined
 };
 
 // True when the options ask for any refinement (angle, area or size function).

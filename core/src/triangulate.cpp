@@ -145,6 +145,7 @@ Mesh triangulate(const Plc& plc, const Options& options) {
     e.x = m.input.toUser(e.x), e.y = m.input.toUser(e.y), e.cx = m.input.toUser(e.cx), e.cy = m.input.toUser(e.cy);
   }
   mesh.stats.rejectedCircumcenters = outcome.rejected;
+  mesh.stats.reachedAngle = outcome.reachedAngle >= 0 ? outcome.reachedAngle : mesh.stats.minAngle;
   mesh.stats.lfsIntegral = outcome.lfsIntegral;
   mesh.stats.trianglesPerLfsIntegral = outcome.lfsIntegral > 0 ? mesh.stats.triangles / outcome.lfsIntegral : 0;
   mesh.stats.milliseconds =

@@ -112,6 +112,7 @@ const char* reasonName(ReasonKind kind) {
     case ReasonKind::SteinerBudget: return "steinerBudget";
     case ReasonKind::PrecisionFloor: return "precisionFloor";
     case ReasonKind::Cancelled: return "cancelled";
+    case ReasonKind::AngleUnreachable: return "angleUnreachable";
   }
   return "unknown";
 }
@@ -134,6 +135,7 @@ const char* noticeName(NoticeKind kind) {
 void jsonStats(TextOut& out, const Stats& s) {
   out << "  \"stats\": {\"vertices\": " << s.vertices << ", \"triangles\": " << s.triangles
       << ", \"minAngle\": " << jsonReal(s.minAngle) << ", \"maxAngle\": " << jsonReal(s.maxAngle)
+      << ", \"reachedAngle\": " << jsonReal(s.reachedAngle)
       << ", \"angleHistogram\": [";
   for (std::size_t i = 0; i < s.angleHistogram.size(); ++i) out << (i ? "," : "") << s.angleHistogram[i];
   out << "], \"inputVertices\": " << s.inputVertices << ", \"segmentVertices\": " << s.segmentVertices

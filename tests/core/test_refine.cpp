@@ -213,6 +213,49 @@ TEST_CASE("a Steiner budget of k inserts exactly k vertices (0: none)", "[refine
   CHECK(square.points.size() == 8);
 }
 
+// Above 34 degrees (bound_push.h): a result is either complete, or the best mesh a push from the
+// 33-degree mesh reached, marked AngleUnreachable, with its smallest non-exempt angle in
+// stats.reachedAngle, at least 33 degrees, and at most four times the 33-degree mesh's triangles.
+void checkAboveReach(const Plc& plc, const std::string& name, int& unreachable) {
+  Options o;
+  o.minAngle = 33;
+  const Mesh at33 = refineChecked(plc, o, name);
+  if (!at33.complete) return;  // the guarantee is relative to a 33-degree mesh
+  for (double angle : {36.0, 40.0, 45.0}) {
+    INFO(name << " at " << angle << " degrees");
+    o.minAngle = angle;
+    const Mesh mesh = refineChecked(plc, o, name);
+    if (mesh.complete) {
+      CHECK(mesh.stats.reachedAngle >= angle - 1e-6);
+      continue;
+    }
+    ++unreachable;
+    REQUIRE_FALSE(mesh.reasons.empty());
+    CHECK(mesh.reasons[0].kind == ruppert::ReasonKind::AngleUnreachable);
+    CHECK(mesh.stats.reachedAngle >= 33 - 1e-6);
+    CHECK(mesh.stats.reachedAngle < angle);
+    CHECK(mesh.stats.triangles <= 4 * at33.stats.triangles);
+    // The reached angle holds for every triangle but the chapter's exemptions.
+    ruppert_test::ValidateOptions v;
+    v.input = &plc;
+    v.minAngle = mesh.stats.reachedAngle;
+    v.angleTolDeg = 1e-6;
+    const auto seditious = ruppert_test::seditiousTest(mesh, plc);
+    v.angleExempt = [seditious](const Mesh& m, std::uint32_t t) {
+      return ruppert_test::nestledInInputAngle(m, t) || seditious(m, t);
+    };
+    RUPPERT_REQUIRE_VALID_2(mesh, v);
+  }
+}
+
+TEST_CASE("above 34 degrees the result is complete or the best mesh reached (never worse than 33)", "[refine]") {
+  int unreachable = 0;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed)
+    checkAboveReach(ruppert_test::randomStarPolygon(seed, 40, 2).plc, "star polygon seed " + std::to_string(seed),
+                    unreachable);
+  CHECK(unreachable > 0);  // the inputs do reach the staged path
+}
+
 TEST_CASE("small-angle fans terminate at any requested angle", "[refine]") {
   for (double fan : {1.0, 3.0, 5.0, 10.0}) {
     // Segments from the origin at `fan` degrees apart, closed by a polyline far away.

@@ -299,6 +299,19 @@ test('maxSteiner: 0 inserts nothing, maxSteiner: k exactly k vertices', async ()
   }
 });
 
+test('above 34 degrees an unreachable bound gives the best mesh reached, ANGLE_UNREACHABLE', async () => {
+  const mesher = await init();
+  const plc = { points: [0, 0, 1, 0, 1, 1, 0, 1, 0.3, 0.31, 0.7, 0.2], segments: [0, 1, 1, 2, 2, 3, 3, 0] };
+  const at33 = mesher.triangulate(plc, { minAngle: 33 });
+  assert.equal(at33.complete, true);
+  const mesh = mesher.triangulate(plc, { minAngle: 45 });
+  assert.equal(mesh.complete, false);
+  assert.equal(mesh.reasons[0].kind, 'ANGLE_UNREACHABLE', JSON.stringify(mesh.reasons));
+  assert.ok(mesh.stats.reachedAngle >= 33 && mesh.stats.reachedAngle < 45, `${mesh.stats.reachedAngle}`);
+  assert.ok(mesh.stats.triangles <= 4 * at33.stats.triangles);
+  assert.deepEqual(validateMesh(mesh, { input: plc, minAngle: mesh.stats.reachedAngle - 1e-9 }), []);
+});
+
 test('trace records every insertion as typed arrays', async () => {
   const mesher = await init();
   const mesh = mesher.triangulate(square, { minAngle: 30, maxArea: 0.01, trace: true });

@@ -122,7 +122,13 @@ struct Progress {
 
 struct Options {
   // Minimum angle in degrees, in [0, 60]. 0 and maxArea <= 0 and no size function: plain CDT.
-  // Angles up to 60 are accepted; above ~34 completion is not guaranteed and the result says why.
+  // Angles up to 60 are accepted; above ~34 completion is not guaranteed. Above 34 a caller gets:
+  // the mesh refined to minAngle directly, if that completes within eight times the triangles of the
+  // 33-degree mesh; else the best mesh of a push from the 33-degree mesh, one degree at a time while
+  // it improves, with complete = false, ReasonKind::AngleUnreachable and the angle reached in
+  // Stats::reachedAngle: never below 33 degrees (outside the §6.6 exemptions) nor over four times
+  // the 33-degree mesh's triangles, whenever 33 degrees completes (else it refines as asked, as
+  // below 34). It costs up to about ten 33-degree refinements.
   double minAngle = 30.0;
   double maxArea = 0.0;  // <= 0: no global area bound
   // Optional size field: max triangle area at (x, y); return <= 0 or +inf for "no bound here".
@@ -194,6 +200,9 @@ enum class ReasonKind : std::uint8_t {
   SteinerBudget,    // maxSteiner reached
   PrecisionFloor,   // an edge would become shorter than doubles can place points on
   Cancelled,        // onProgress returned false
+  AngleUnreachable, // minAngle above 34: refinement met 33 degrees, raised the bound a degree at a
+                    // time while the mesh improved, and stopped short; the mesh is the best it
+                    // reached (Stats::reachedAngle), never worse than the 33-degree mesh
 };
 
 struct Reason {
@@ -206,6 +215,10 @@ struct Stats {
   std::uint64_t vertices = 0;  // vertices used by triangles
   std::uint64_t triangles = 0;
   double minAngle = 0, maxAngle = 0;  // degrees, over all triangles
+  // Degrees: the smallest angle over the triangles the angle bound applies to (those in small input
+  // angles and on seditious edges, §6.6, left out): >= Options::minAngle when complete, and what
+  // was reached when the bound was out of reach (ReasonKind::AngleUnreachable).
+  double reachedAngle = 0;
   std::vector<std::uint64_t> angleHistogram;  // 180 bins of 1 degree over all 3 angles of every triangle
   std::uint64_t inputVertices = 0, segmentVertices = 0, interiorVertices = 0, offCenterVertices = 0,
                 intersectionVertices = 0;

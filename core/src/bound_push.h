@@ -1,0 +1,80 @@
+// Refinement toward an angle bound that may be out of reach (above ~34 degrees, §6.8): meet a bound
+// that completes first, then raise it a degree at a time while the mesh keeps improving, and keep
+// track of the best mesh seen so that it, not a runaway's last state, is what the caller gets.
+//
+// Before that, the requested bound is tried directly, from the unrefined mesh, up to eight times the
+// 33-degree mesh's triangles: where it completes that way (most inputs at 35 degrees), the mesh is
+// the same as without stages. The push keeps a copy of its best mesh; the mesh is scored every
+// quarter of its size in insertions, so scores and copies cost a fraction of the refinement.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+
+#include "ruppert/ruppert.h"
+
+namespace ruppert::detail {
+
+// Requests above this many degrees are refined in stages; below it directly (as always).
+inline constexpr double kStagedAboveDegrees = 34;
+// The first stage's bound: refinement completes at it on every input we have measured (§6.8).
+inline constexpr double kReachableDegrees = 33;
+inline constexpr double kStageStepDegrees = 1;
+// The push stops once the mesh has this many times the first stage's triangles, and the direct try
+// at the requested bound once it has kDirectTriangleFactor times (a direct run that completes may
+// be larger: earcut_earcut.poly completes at 35 degrees with 6.1 times the 33-degree triangles).
+inline constexpr std::uint64_t kPushTriangleFactor = 4;
+inline constexpr std::uint64_t kDirectTriangleFactor = 8;
+
+// How one run proceeds.
+struct RefinePlan {
+  double requested = 0;  // degrees: the bound asked for (Options::minAngle)
+  double first = 0;      // degrees: the first stage's bound (== requested: one stage)
+  bool track = false;    // push: raise the bound stage by stage, keep the best mesh, stop on a stall
+  std::uint64_t triangleCap = 0;  // stop once the mesh has more triangles (0: no cap)
+  std::uint64_t used = 0;         // Steiner vertices an earlier run already inserted (budget)
+
+  static RefinePlan direct(double degrees) { return {degrees, degrees, false, 0, 0}; }
+};
+
+// One look at the whole mesh.
+struct MeshScore {
+  double minSin2 = 1;               // smallest sin^2 angle over triangles not exempt (§6.6)
+  std::uint64_t belowRequested = 0; // non-exempt triangles below the requested bound
+  std::uint64_t belowStage = 0;     // ... below the current stage's bound
+  std::uint64_t large = 0;          // triangles over their area bound
+  std::uint64_t triangles = 0;
+};
+
+// Best-so-far and stall detection over the scores of a push.
+class PushTracker {
+ public:
+  // Called with every score; `step` = insertions so far. True: this is the best mesh so far.
+  bool observe(const MeshScore& s, std::uint64_t step) {
+    if (s.belowStage < stageLeast_) stageLeast_ = s.belowStage, stageProgressAt_ = step;
+    if (s.large != 0 || (haveBest_ && !better(s, best_))) return false;
+    best_ = s, bestStep_ = step, haveBest_ = true;
+    return true;
+  }
+  // A new stage starts at `step` (its bad triangles are counted afresh).
+  void newStage(std::uint64_t step) { stageLeast_ = UINT64_MAX, stageProgressAt_ = step; }
+  // Once the first stage is complete: its size sets the push's patience, the insertions a stage may
+  // make without reducing its bad triangles.
+  void setBase(std::uint64_t triangles) { patience_ = std::max<std::uint64_t>(4096, triangles / 2); }
+  bool stalled(std::uint64_t step) const { return patience_ && step - stageProgressAt_ > patience_; }
+  bool haveBest() const { return haveBest_; }
+  std::uint64_t bestStep() const { return bestStep_; }
+  const MeshScore& best() const { return best_; }
+
+ private:
+  static bool better(const MeshScore& a, const MeshScore& b) {
+    if (a.minSin2 > b.minSin2 * (1 + 1e-9)) return true;
+    if (a.minSin2 < b.minSin2 * (1 - 1e-9)) return false;
+    return a.belowRequested < b.belowRequested;
+  }
+  MeshScore best_;
+  bool haveBest_ = false;
+  std::uint64_t bestStep_ = 0, stageLeast_ = UINT64_MAX, stageProgressAt_ = 0, patience_ = 0;
+};
+
+}  // namespace ruppert::detail
