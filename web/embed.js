@@ -46,7 +46,7 @@ export function postError(error, id = null) {
   post({ type: 'ruppert:error', id, code: error?.code ?? null, message: String(error?.message ?? error) });
 }
 
-const PLACEMENTS = ['offcenter', 'circumcenter', 'petal'];
+const PLACEMENTS = ['offcenter', 'circumcenter', 'petal', 'optimal'];
 const ALGORITHMS = { cdt: 'cdt', box: 'box' };
 const ENCROACHMENTS = ['lens', 'disk'];
 

@@ -5,7 +5,7 @@
 //     "r": [[x, y, attribute, maxArea], ...],
 //     "o": [minAngle, maxArea, "o" | "c", maxSteiner, "c" | "b", "l" | "d"] }
 //
-// maxArea 0 = none, maxSteiner -1 = automatic, "o"/"c"/"p" = off-center / circumcenter / petal placement,
+// maxArea 0 = none, maxSteiner -1 = automatic, "o"/"c"/"p"/"t" = off-center / circumcenter / petal / optimal placement,
 // "c"/"b" = CDT / bounding-box variant, "l"/"d" = diametral lens / disk encroachment. The last two
 // were appended later: links without them (or with unknown values) get the defaults, CDT and lens.
 import { DEFAULT_OPTIONS } from './drawing.js';
@@ -26,6 +26,9 @@ function fromBase64Url(text) {
   return new TextDecoder().decode(Uint8Array.from(binary, (c) => c.charCodeAt(0)));
 }
 
+const PLACEMENT_CODES = new Map([['offcenter', 'o'], ['circumcenter', 'c'], ['petal', 'p'], ['optimal', 't']]);
+const PLACEMENT_NAMES = new Map([...PLACEMENT_CODES].map(([name, code]) => [code, name]));
+
 export function encodeDrawing(d) {
   const o = d.options;
   const compact = {
@@ -34,7 +37,7 @@ export function encodeDrawing(d) {
     s: d.segments,
     h: d.holes,
     r: d.regions.map((r) => [r.x, r.y, r.attribute ?? 0, r.maxArea > 0 ? r.maxArea : 0]),
-    o: [o.minAngle, o.maxArea > 0 ? o.maxArea : 0, o.placement === 'circumcenter' ? 'c' : o.placement === 'petal' ? 'p' : 'o',
+    o: [o.minAngle, o.maxArea > 0 ? o.maxArea : 0, PLACEMENT_CODES.get(o.placement) ?? 'o',
       Number.isInteger(o.maxSteiner) ? o.maxSteiner : -1,
       o.variant === 'box' ? 'b' : 'c', o.encroachment === 'disk' ? 'd' : 'l'],
   };
@@ -68,7 +71,7 @@ export function decodeDrawing(hash) {
   const options = {
     minAngle: Number.isFinite(minAngle) ? Math.min(60, Math.max(0, minAngle)) : DEFAULT_OPTIONS.minAngle,
     maxArea: maxArea > 0 ? maxArea : null,
-    placement: placement === 'c' ? 'circumcenter' : placement === 'p' ? 'petal' : 'offcenter',
+    placement: PLACEMENT_NAMES.get(placement) ?? 'offcenter',
     maxSteiner: Number.isInteger(maxSteiner) && maxSteiner >= 0 ? maxSteiner : null,
     variant: variant === 'b' ? 'box' : 'cdt',
     encroachment: encroachment === 'd' ? 'disk' : 'lens',

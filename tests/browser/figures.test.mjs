@@ -65,6 +65,25 @@ test('the slider warns past 34 degrees', async () => {
   await settle(page);
 });
 
+test('optimal points are offered, mesh past 34 degrees and survive the link', async () => {
+  await page.selectOption('#preset', 'figure-6-9-30');
+  await settle(page);
+  await page.selectOption('#placement', 'optimal');
+  await page.fill('#min-angle', '36');
+  await page.press('#min-angle', 'Enter');
+  assert.equal(await settle(page), 'done');
+  const stats = await readStats(page);
+  assert.ok(stats.triangles > 0);
+  const { decodeDrawing } = await import('../../web/url-state.js');
+  const drawing = decodeDrawing(await page.evaluate(() => location.hash));
+  assert.equal(drawing.options.placement, 'optimal');
+  assert.equal(drawing.options.minAngle, 36);
+  await page.selectOption('#placement', 'offcenter');
+  await page.fill('#min-angle', '30');
+  await page.press('#min-angle', 'Enter');
+  await settle(page);
+});
+
 test('opening a file clears the preset box and its caption', async () => {
   await page.selectOption('#preset', 'comb');
   await settle(page);
