@@ -245,7 +245,8 @@ const scheduler = new MeshScheduler({
     showNotices(mesh.notices);
     updateLegend();
     replay.reset(request.plc, request.options, app.stepMode ? mesh : null);
-    stepper.setEvents(app.stepMode ? mesh.events : null, { points: mesh.points, minAngle: request.options.minAngle });
+    stepper.setEvents(app.stepMode ? mesh.events : null,
+      { points: mesh.points, minAngle: request.options.minAngle, placement: request.options.placement });
     const s = mesh.stats;
     const summary = `${s.triangles.toLocaleString('en-US')} triangles, ${s.vertices.toLocaleString('en-US')} vertices, ` +
       `min angle ${s.minAngle.toFixed(2)}° in ${s.milliseconds.toFixed(1)} ms`;
@@ -533,7 +534,7 @@ const replay = new StepReplay((k, mesh) => {
   const events = app.mesh.events;
   postStepped({
     index: k, total: stepper.count, vertices, triangles,
-    event: k > 0 ? describeEvent(events, k - 1, { points: app.mesh.points, minAngle: app.drawing.options.minAngle }) : null,
+    event: k > 0 ? describeEvent(events, k - 1, stepper.context) : null,
   });
   scheduleDraw();
 });

@@ -4,6 +4,7 @@
 // class, one for all edges) and drawn under the view's transform, so panning and zooming only
 // replay them. Beyond LARGE_MESH triangles, per-triangle fills cost more than they show: only
 // the edges are drawn, as one path.
+import { circumcircle, splitShell } from './event-geometry.js';
 import { minAngles } from './mesh-geometry.js';
 
 export const LARGE_MESH = 200_000;
@@ -393,6 +394,9 @@ export class Renderer {
     const kind = events.kind[e];
     if (kind === 0) {  // SEGMENT_SPLIT
       subsegment(COLOURS.step);
+      // A concentric-shell split (§6.6): the shell around the corner vertex, through the new vertex.
+      const shell = splitShell(events, e, p);
+      if (shell !== null) circle(p[2 * shell.center], p[2 * shell.center + 1], shell.radius, COLOURS.stepSecondary);
       const by = events.by[e];
       if (by >= 0) marker(p[2 * by], p[2 * by + 1], COLOURS.stepSecondary, 5);  // the encroaching vertex
     } else if (kind === 1 || kind === 2) {  // CIRCUMCENTER, OFF_CENTER
@@ -430,17 +434,4 @@ export class Renderer {
     ctx.stroke(path);
     screen();
   }
-}
-
-export function circumcircle(p, i, j, k) {
-  const ax = p[2 * i]; const ay = p[2 * i + 1];
-  const bx = p[2 * j] - ax; const by = p[2 * j + 1] - ay;
-  const cx = p[2 * k] - ax; const cy = p[2 * k + 1] - ay;
-  const d = 2 * (bx * cy - by * cx);
-  if (d === 0) return null;
-  const b2 = bx * bx + by * by;
-  const c2 = cx * cx + cy * cy;
-  const ux = (cy * b2 - by * c2) / d;
-  const uy = (bx * c2 - cx * b2) / d;
-  return { x: ax + ux, y: ay + uy, r: Math.hypot(ux, uy) };
 }

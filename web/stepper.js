@@ -3,6 +3,8 @@
 // event being the one that made it; position 0 is the constrained Delaunay triangulation before
 // refinement. StepReplay (step-replay.js) provides each position's mesh.
 
+import { rejectedIsCircumcenter, splitShell } from './event-geometry.js';
+
 const KIND_NAMES = ['segment split', 'circumcenter', 'off-center', 'rejected circumcenter'];
 
 const fmt = (v) => (Math.abs(v) >= 1e4 || (Math.abs(v) < 1e-3 && v !== 0) ? v.toExponential(3) : Number(v.toFixed(4)).toString());
@@ -17,9 +19,13 @@ function smallestAngle(points, i, j, k) {
   return Math.min(corner(i, j, k), corner(j, k, i), corner(k, i, j)) * 180 / Math.PI;
 }
 
+// What the placement calls the point it tries first, when that point is not the circumcenter.
+const FIRST_CHOICE = { offcenter: 'off-center', petal: 'off-center or petal point', optimal: 'off-center or optimal point' };
+
 /**
- * One line describing event e. With `context` ({ points: the final mesh's, minAngle }), a
- * triangle's smallest angle is given against the bound.
+ * One line describing event e. With `context` ({ points: the final mesh's, minAngle, placement }),
+ * a triangle's smallest angle is given against the bound, a split off the midpoint is named by its
+ * concentric shell, and a rejected point by what it is (circumcenter or off-center).
  */
 export function describeEvent(events, e, context = null) {
   const kind = events.kind[e];
@@ -35,15 +41,21 @@ export function describeEvent(events, e, context = null) {
   switch (kind) {
     case 0: {
       const by = events.by[e];
-      return `Split subsegment (${events.a[e]}, ${events.b[e]})${by >= 0 ? `, encroached by vertex ${by},` : ''} at its midpoint ${where}: vertex ${vertex}.`;
+      const shell = context?.points ? splitShell(events, e, context.points) : null;
+      const at = shell === null ? `at its midpoint ${where}`
+        : `on the concentric shell of radius ${fmt(shell.radius)} around vertex ${shell.center} (a power of two, §6.6), at ${where}`;
+      return `Split subsegment (${events.a[e]}, ${events.b[e]})${by >= 0 ? `, encroached by vertex ${by},` : ''} ${at}: vertex ${vertex}.`;
     }
     case 1:
       return `Inserted the circumcenter of skinny or large triangle ${triangle} at ${where}: vertex ${vertex}.`;
     case 2:
       return `Inserted the off-center of skinny triangle ${triangle} at ${where}: vertex ${vertex}.`;
-    case 3:
-      return `The circumcenter (${fmt(events.circumcenter[2 * e])}, ${fmt(events.circumcenter[2 * e + 1])}) of ${triangle} ` +
+    case 3: {
+      const circum = !context?.points || rejectedIsCircumcenter(events, e, context.points);
+      const what = circum ? 'circumcenter' : FIRST_CHOICE[context.placement] ?? 'off-center';
+      return `The ${what} (${fmt(events.circumcenter[2 * e])}, ${fmt(events.circumcenter[2 * e + 1])}) of ${triangle} ` +
         `encroached subsegment (${events.a[e]}, ${events.b[e]}): rejected; split the subsegment at ${where} instead: vertex ${vertex}.`;
+    }
     default:
       return `Event of unknown kind ${kind}.`;
   }

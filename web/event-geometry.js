@@ -1,0 +1,53 @@
+// What an event's numbers say about the chapter's geometry, read back from the mesh's points: the
+// trace records where a vertex went, not which rule put it there, so the page tells a
+// concentric-shell split from a midpoint split, and a rejected circumcenter from a rejected
+// off-center, by measuring.
+
+const RELATIVE = 1e-9;
+
+/** The circumcircle { x, y, r } of the triangle of vertices i, j, k of points, or null if flat. */
+export function circumcircle(p, i, j, k) {
+  const ax = p[2 * i]; const ay = p[2 * i + 1];
+  const bx = p[2 * j] - ax; const by = p[2 * j + 1] - ay;
+  const cx = p[2 * k] - ax; const cy = p[2 * k + 1] - ay;
+  const d = 2 * (bx * cy - by * cx);
+  if (d === 0) return null;
+  const b2 = bx * bx + by * by;
+  const c2 = cx * cx + cy * cy;
+  const ux = (cy * b2 - by * c2) / d;
+  const uy = (bx * c2 - cx * b2) / d;
+  return { x: ax + ux, y: ay + uy, r: Math.hypot(ux, uy) };
+}
+
+/**
+ * A subsegment split (event kind 0) off its midpoint: the concentric shell it lies on (§6.6), as
+ * { center: vertex id, radius }, the shell around the end whose distance to the split is a power
+ * of two. Null for a midpoint split.
+ */
+export function splitShell(events, e, points) {
+  const a = events.a[e];
+  const b = events.b[e];
+  const x = events.xy[2 * e];
+  const y = events.xy[2 * e + 1];
+  const length = Math.hypot(points[2 * b] - points[2 * a], points[2 * b + 1] - points[2 * a + 1]);
+  const mx = (points[2 * a] + points[2 * b]) / 2;
+  const my = (points[2 * a + 1] + points[2 * b + 1]) / 2;
+  if (Math.hypot(x - mx, y - my) <= RELATIVE * length) return null;
+  let best = null;
+  for (const v of [a, b]) {
+    const radius = Math.hypot(x - points[2 * v], y - points[2 * v + 1]);
+    const exponent = Math.log2(radius);
+    const off = Math.abs(exponent - Math.round(exponent));
+    if (best === null || off < best.off) best = { center: v, radius, off };
+  }
+  return { center: best.center, radius: best.radius };
+}
+
+/** Whether the point a triangle event rejected (kind 3) is that triangle's circumcenter. */
+export function rejectedIsCircumcenter(events, e, points) {
+  const c = circumcircle(points, events.triangle[3 * e], events.triangle[3 * e + 1], events.triangle[3 * e + 2]);
+  if (c === null) return true;
+  const px = events.circumcenter[2 * e];
+  const py = events.circumcenter[2 * e + 1];
+  return Math.hypot(px - c.x, py - c.y) <= RELATIVE * Math.max(c.r, 1e-300) + 1e-12 * Math.hypot(c.x, c.y);
+}
