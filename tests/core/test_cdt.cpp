@@ -525,3 +525,45 @@ TEST_CASE("the validator rejects broken meshes", "[cdt][validator]") {
     CHECK(validateMesh(good, v).empty());
   }
 }
+
+// The chain check cuts an uncovered stretch at the mesh vertices exactly on it and judges the pieces
+// one by one, and counts only mesh vertices as stations (issue 19: three judge false positives of
+// the careless-PLC sweep, now fixtures in tests/hostile). Those relaxations must not hide a real gap:
+// half of an interior segment through a vertex, or its last subsegment, taken out of a true mesh.
+TEST_CASE("the chain check still finds a missing piece of a segment through a vertex", "[cdt][validator]") {
+  Plc plc;
+  plc.points = {0, 0, 4, 0, 4, 4, 0, 4, 1, 2, 2, 2, 3, 2};
+  plc.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 6};  // segment 4 runs through point 5, (2, 2)
+  ruppert::Options plain;
+  plain.minAngle = 0;
+  const Mesh mesh = ruppert::triangulate(plc, plain);
+  ValidateOptions o;
+  o.input = &plc;
+  REQUIRE(validateMesh(mesh, o).empty());
+  auto without = [&](auto drop) {
+    Mesh m = mesh;
+    m.segments.clear(), m.segmentIds.clear();
+    for (std::size_t k = 0; k < mesh.segmentIds.size(); ++k) {
+      if (drop(mesh.segments[2 * k], mesh.segments[2 * k + 1], mesh.segmentIds[k])) continue;
+      m.segments.insert(m.segments.end(), {mesh.segments[2 * k], mesh.segments[2 * k + 1]});
+      m.segmentIds.push_back(mesh.segmentIds[k]);
+    }
+    REQUIRE(m.segmentIds.size() + 1 == mesh.segmentIds.size());
+    return validateMesh(m, o);
+  };
+  auto mentions = [](const std::vector<std::string>& problems, const std::string& word) {
+    for (const auto& p : problems)
+      if (p.find(word) != std::string::npos) return true;
+    return false;
+  };
+  // The two halves of segment 4 meet at point 5; each is one subsegment.
+  const auto secondHalf = without([](std::uint32_t u, std::uint32_t w, std::int32_t id) {
+    return id == 4 && (u == 6 || w == 6);
+  });
+  INFO(describeProblems(secondHalf));
+  CHECK(mentions(secondHalf, "input segment 4 (4, 6) is not covered by subsegments between vertices 5 and 6"));
+  const auto firstHalf = without([](std::uint32_t u, std::uint32_t w, std::int32_t id) {
+    return id == 4 && (u == 4 || w == 4);
+  });
+  CHECK(mentions(firstHalf, "input segment 4 (4, 6) is not covered by subsegments between vertices 4 and 5"));
+}

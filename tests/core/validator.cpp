@@ -14,6 +14,8 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include <gmpxx.h>
+
 #include "predicates.h"
 
 namespace ruppert_test {
@@ -109,13 +111,35 @@ class TriangleIndex {
 
   // Triangles whose closed region contains q (strict = open region only).
   std::vector<std::uint32_t> containing(const double* q, bool strict) const {
+    return containingBy(q, 0, strict, [&](const double* a, const double* b) { return orient2d(a, b, q); });
+  }
+
+  // The same for the exact midpoint of u and w, which a double need not hold: rounded, it can cross
+  // an edge it lies half an ulp from. The rounded midpoint only walks the tree (boxes widened by an
+  // ulp); exact rational signs decide.
+  std::vector<std::uint32_t> containingMidpoint(const double* u, const double* w, bool strict) const {
+    const double mid[2] = {(u[0] + w[0]) / 2, (u[1] + w[1]) / 2};
+    const double slack = 0x1p-51 * std::max({std::fabs(mid[0]), std::fabs(mid[1]), 0x1p-1000});
+    const mpq_class mx = (mpq_class(u[0]) + mpq_class(w[0])) / 2, my = (mpq_class(u[1]) + mpq_class(w[1])) / 2;
+    return containingBy(mid, slack, strict, [&](const double* a, const double* b) {
+      const mpq_class ax(a[0]), ay(a[1]), bx(b[0]), by(b[1]);
+      return double(sgn((bx - ax) * (my - ay) - (by - ay) * (mx - ax)));
+    });
+  }
+
+  // Triangles whose closed region (open, if strict) holds a query point near q (within `slack` of
+  // the boxes); side(a, b) is the sign of the query point's orientation to the edge a -> b.
+  template <class Side>
+  std::vector<std::uint32_t> containingBy(const double* q, double slack, bool strict, Side side) const {
     std::vector<std::uint32_t> result;
     if (nodes_.empty()) return result;
     std::vector<std::uint32_t> stack{0};
     while (!stack.empty()) {
       const Node& n = nodes_[stack.back()];
       stack.pop_back();
-      if (!(q[0] >= n.box.lo[0] && q[0] <= n.box.hi[0] && q[1] >= n.box.lo[1] && q[1] <= n.box.hi[1])) continue;
+      if (!(q[0] >= n.box.lo[0] - slack && q[0] <= n.box.hi[0] + slack && q[1] >= n.box.lo[1] - slack &&
+            q[1] <= n.box.hi[1] + slack))
+        continue;
       if (n.left != kLeafMark) {
         stack.push_back(n.left);
         stack.push_back(n.left + 1);
@@ -124,14 +148,16 @@ class TriangleIndex {
       for (std::size_t i = n.first; i < n.first + n.count; ++i) {
         const std::uint32_t t = order_[i];
         const Box& tb = boxes_[t];  // the leaf's box is loose: most of its triangles are ruled out here
-        if (!(q[0] >= tb.lo[0] && q[0] <= tb.hi[0] && q[1] >= tb.lo[1] && q[1] <= tb.hi[1])) continue;
+        if (!(q[0] >= tb.lo[0] - slack && q[0] <= tb.hi[0] + slack && q[1] >= tb.lo[1] - slack &&
+              q[1] <= tb.hi[1] + slack))
+          continue;
         const double* a = s_.p(s_.v(t, 0));
         const double* b = s_.p(s_.v(t, 1));
         const double* c = s_.p(s_.v(t, 2));
         // One side at a time: most candidates fail the first, and on flat triangles each test may
         // need exact arithmetic.
         auto outside = [strict](double o) { return strict ? !(o > 0) : o < 0; };
-        if (outside(orient2d(a, b, q)) || outside(orient2d(b, c, q)) || outside(orient2d(c, a, q))) continue;
+        if (outside(side(a, b)) || outside(side(b, c)) || outside(side(c, a))) continue;
         result.push_back(t);
       }
     }
@@ -501,12 +527,32 @@ constexpr std::uint32_t kNoTriangle = 0xffffffffu;
 // midpoint on a boundary edge), or one whose corner at an end that is a mesh vertex holds the
 // direction to the other end (a midpoint test alone misses a stretch that enters the domain at one
 // end and leaves it again). A stretch that leaves the domain within `tol` of a vertex only touches it.
-std::uint32_t gapInDomain(const Scaled& s, const TriangleIndex& grid, std::uint32_t u, std::uint32_t w, double tol) {
-  const double mid[2] = {(s.p(u)[0] + s.p(w)[0]) / 2, (s.p(u)[1] + s.p(w)[1]) / 2};
-  // On the domain's boundary (one triangle holds it, on an edge), a rounded midpoint proves nothing:
-  // a stretch an ulp or two outside the domain can round onto the boundary; the corners decide.
-  const auto hits = grid.containing(mid, false);
-  if (hits.size() > 1 || (hits.size() == 1 && !grid.containing(mid, true).empty())) return hits[0];
+// Used vertices exactly on the stretch cut it into pieces judged one by one: a stretch outside the
+// domain that passes through one of its corners touches the domain there and no more (its midpoint
+// may be that very vertex).
+std::uint32_t gapInDomain(const Scaled& s, const TriangleIndex& grid, const std::vector<bool>& used, std::uint32_t u,
+                          std::uint32_t w, double tol) {
+  const double* pu = s.p(u);
+  const double* pw = s.p(w);
+  auto along = [&](std::uint32_t v) { return (s.p(v)[0] - pu[0]) * (pw[0] - pu[0]) + (s.p(v)[1] - pu[1]) * (pw[1] - pu[1]); };
+  std::vector<std::uint32_t> cuts;
+  for (std::uint32_t v = 0; v < s.np; ++v)
+    if (used[v] && v != u && v != w && along(v) > 0 && along(v) < along(w) && orient2d(pu, pw, s.p(v)) == 0)
+      cuts.push_back(v);
+  if (!cuts.empty()) {
+    std::sort(cuts.begin(), cuts.end(), [&](std::uint32_t x, std::uint32_t y) { return along(x) < along(y); });
+    cuts.insert(cuts.begin(), u);
+    cuts.push_back(w);
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+      const std::uint32_t hit = gapInDomain(s, grid, used, cuts[i], cuts[i + 1], tol);
+      if (hit != kNoTriangle) return hit;
+    }
+    return kNoTriangle;
+  }
+  // The exact midpoint: on the domain's boundary (one triangle holds it, on an edge) it proves
+  // nothing, as a stretch a hair outside the domain can touch the boundary; the corners decide.
+  const auto hits = grid.containingMidpoint(pu, pw, false);
+  if (hits.size() > 1 || (hits.size() == 1 && !grid.containingMidpoint(pu, pw, true).empty())) return hits[0];
   for (const auto& [from, to] : {std::pair{u, w}, std::pair{w, u}})
     for (std::uint32_t t : grid.containing(s.p(from), false)) {
       const int i = s.v(t, 0) == from ? 0 : s.v(t, 1) == from ? 1 : s.v(t, 2) == from ? 2 : -1;
@@ -556,6 +602,9 @@ void checkSegmentCoverage(const Scaled& s, const EdgeMaps& maps, const ValidateO
     return p;
   };
 
+  std::vector<bool> used(s.np, false);
+  for (std::uint32_t v : m.triangles)
+    if (v < s.np) used[v] = true;
   std::vector<std::vector<std::uint32_t>> subsegmentsOf(nSeg);
   for (std::size_t k = 0; k < m.segmentIds.size(); ++k)
     if (m.segmentIds[k] != kNoInputSegment && std::size_t(m.segmentIds[k]) < nSeg)
@@ -640,9 +689,14 @@ void checkSegmentCoverage(const Scaled& s, const EdgeMaps& maps, const ValidateO
     // may pass beside this one's stations, which this one's own chain then covers.
     std::unordered_set<std::uint32_t> own;
     for (std::uint32_t k : subsegmentsOf[seg]) own.insert(m.segments[2 * k]), own.insert(m.segments[2 * k + 1]);
-    std::vector<double> stations{param(a), param(b)};  // param(b) may round off 1
+    // Only mesh vertices are stations: an end of the segment that the mesh does not use (it lies
+    // outside the domain) a hair before the end of a carrier must not void that carrier.
+    std::vector<double> stations;
+    for (std::uint32_t end : {a, b})
+      if (used[end]) stations.push_back(param(end));  // param(b) may round off 1
     for (const auto& entry : graph)
-      if (own.count(entry.first) || orient2d(s.p(a), s.p(b), s.p(entry.first)) == 0)
+      if (entry.first != a && entry.first != b && used[entry.first] &&
+          (own.count(entry.first) || orient2d(s.p(a), s.p(b), s.p(entry.first)) == 0))
         stations.push_back(param(entry.first));
     std::sort(stations.begin(), stations.end());
     struct Cover {
@@ -671,7 +725,7 @@ void checkSegmentCoverage(const Scaled& s, const EdgeMaps& maps, const ValidateO
       // A stretch no longer than the tolerance is rounding: within a cluster that small, the order of
       // vertices along the segment means little.
       if (std::hypot(s.p(w)[0] - s.p(u)[0], s.p(w)[1] - s.p(u)[1]) <= tol) continue;
-      std::uint32_t hit = gapInDomain(s, grid, u, w, tol);
+      std::uint32_t hit = gapInDomain(s, grid, used, u, w, tol);
       // A triangle lying wholly within the tolerance of the segment's line (a cell a few ulps across)
       // is one its chain may pass beside: bent through a corner by rounding, the chain misses the
       // cell, and the cell is no wider than the bend.

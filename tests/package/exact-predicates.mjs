@@ -56,3 +56,11 @@ export function incircle(ax, ay, bx, by, cx, cy, dx, dy) {
   const aL = aX * aX + aY * aY, bL = bX * bX + bY * bY, cL = cX * cX + cY * cY;
   return sign(aL * (bX * cY - bY * cX) + bL * (cX * aY - cY * aX) + cL * (aX * bY - aY * bX));
 }
+
+// Sign of the orientation of (a, b, m) where m is the exact midpoint of u and w, which a double
+// need not hold: rounding the midpoint can move it across an edge it lies half an ulp from.
+// 2 * orient(a, b, m) = (b - a) x (u + w - 2a), exact in BigInt.
+export function orientToMidpoint(ax, ay, bx, by, ux, uy, wx, wy) {
+  const [Ax, Ay, Bx, By, Ux, Uy, Wx, Wy] = toIntegers([ax, ay, bx, by, ux, uy, wx, wy]);
+  return sign((Bx - Ax) * (Uy + Wy - 2n * Ay) - (By - Ay) * (Ux + Wx - 2n * Ax));
+}

@@ -10,7 +10,7 @@
 // runs into a triangle: its midpoint is inside one (or on an edge between two), or it leaves one of
 // its ends into a triangle's corner. A stretch no longer than the tolerance (rounding of crossings,
 // see `tolerance`) is forgiven, as is one leaving the domain within the tolerance of a vertex.
-import { orient } from './exact-predicates.mjs';
+import { orient, orientToMidpoint } from './exact-predicates.mjs';
 
 // How far a vertex of a segment's chain may lie from its line: rounded crossings lie off their
 // segments by a few ulps of the coordinates and of the length (as tests/core/validator.h allows).
@@ -50,29 +50,48 @@ function meshIndex(mesh) {
     }
   }
   const corner = (k, i) => [p[2 * t[3 * k + i]], p[2 * t[3 * k + i] + 1]];
-  // Triangles whose closed region holds (x, y), and how many hold it in their interior.
-  const containing = (x, y) => {
+  // Triangles whose closed region holds the exact midpoint of vertices u and w, and how many hold
+  // it in their interior. The bounding boxes are widened by an ulp: the rounded midpoint only
+  // filters, the exact signs decide.
+  const containingMidpoint = (u, w) => {
+    const [ux, uy, wx, wy] = [p[2 * u], p[2 * u + 1], p[2 * w], p[2 * w + 1]];
+    const x = (ux + wx) / 2, y = (uy + wy) / 2;
+    const slack = 2 ** -51 * Math.max(Math.abs(x), Math.abs(y), Number.MIN_VALUE);
     const hits = [];
     let strict = 0;
     for (let k = 0; k < t.length / 3; k++) {
       const [a, b, c] = [corner(k, 0), corner(k, 1), corner(k, 2)];
-      if (x < Math.min(a[0], b[0], c[0]) || x > Math.max(a[0], b[0], c[0]) ||
-          y < Math.min(a[1], b[1], c[1]) || y > Math.max(a[1], b[1], c[1])) continue;
-      const o = [orient(...a, ...b, x, y), orient(...b, ...c, x, y), orient(...c, ...a, x, y)];
+      if (x < Math.min(a[0], b[0], c[0]) - slack || x > Math.max(a[0], b[0], c[0]) + slack ||
+          y < Math.min(a[1], b[1], c[1]) - slack || y > Math.max(a[1], b[1], c[1]) + slack) continue;
+      const o = [[a, b], [b, c], [c, a]].map(([f, g]) => orientToMidpoint(...f, ...g, ux, uy, wx, wy));
       if (o.some((s) => s < 0)) continue;
       hits.push(k);
       if (o.every((s) => s > 0)) strict++;
     }
     return { hits, strict };
   };
-  return { around, corner, containing };
+  return { around, corner, containingMidpoint };
 }
 
-// A triangle the stretch u-w runs into, or -1 (see the file's comment).
+// A triangle the stretch u-w runs into, or -1 (see the file's comment). Mesh vertices exactly on
+// the stretch cut it into pieces judged one by one: a stretch that only touches the domain at a
+// vertex (its midpoint may be that very vertex) does not run into the triangles around it.
 function stretchInDomain(mesh, index, u, w, tol) {
   const p = mesh.points;
-  const mid = [(p[2 * u] + p[2 * w]) / 2, (p[2 * u + 1] + p[2 * w + 1]) / 2];
-  const { hits, strict } = index.containing(...mid);
+  const [ux, uy, wx, wy] = [p[2 * u], p[2 * u + 1], p[2 * w], p[2 * w + 1]];
+  const along = (v) => (p[2 * v] - ux) * (wx - ux) + (p[2 * v + 1] - uy) * (wy - uy);
+  const end = along(w);
+  const cuts = [...index.around.keys()].filter((v) => v !== u && v !== w && along(v) > 0 && along(v) < end &&
+    orient(ux, uy, wx, wy, p[2 * v], p[2 * v + 1]) === 0).sort((x, y) => along(x) - along(y));
+  if (cuts.length > 0) {
+    const ends = [u, ...cuts, w];
+    for (let i = 0; i + 1 < ends.length; i++) {
+      const hit = stretchInDomain(mesh, index, ends[i], ends[i + 1], tol);
+      if (hit >= 0) return hit;
+    }
+    return -1;
+  }
+  const { hits, strict } = index.containingMidpoint(u, w);
   if (hits.length > 1 || strict > 0) return hits[0];
   for (const [from, to] of [[u, w], [w, u]]) {
     const f = [p[2 * from], p[2 * from + 1]], g = [p[2 * to], p[2 * to + 1]];
@@ -91,6 +110,8 @@ function stretchInDomain(mesh, index, u, w, tol) {
   }
   return -1;
 }
+
+const usedVertices = (mesh) => new Set(mesh.triangles);
 
 // The smallest value in the sorted `list` above x (Infinity if none).
 function firstAbove(list, x) {
@@ -115,7 +136,7 @@ export function chainProblems(mesh, input, maxProblems = 20) {
     bySegment.get(ids[k]).push(k);
   }
   const key = (u, v) => (u < v ? `${u},${v}` : `${v},${u}`);
-  let index = null;
+  let index = null, used = null;
   for (let id = 0; id < nSegments && problems.length < maxProblems; id++) {
     if (dropped.has(id)) continue;
     const a = resolve(input.segments[2 * id]), b = resolve(input.segments[2 * id + 1]);
@@ -158,8 +179,12 @@ export function chainProblems(mesh, input, maxProblems = 20) {
     // carriers may pass beside this one's stations, which this one's own chain then covers.
     const own = new Set();
     for (const k of bySegment.get(id) ?? []) own.add(s[2 * k]), own.add(s[2 * k + 1]);
-    const stations = [param(a), param(b)];
+    // The segment's ends are stations only where they are mesh vertices: an end the mesh does not
+    // use (outside the domain) a hair before the end of a carrier must not void that carrier.
+    used ??= usedVertices(mesh);
+    const stations = [a, b].filter((v) => used.has(v)).map(param);
     for (const v of graph.keys()) {
+      if (!used.has(v)) continue;
       if (own.has(v) || orient(ax, ay, p[2 * b], p[2 * b + 1], p[2 * v], p[2 * v + 1]) === 0) stations.push(param(v));
     }
     stations.sort((x, y) => x - y);
