@@ -52,6 +52,9 @@ namespace {
 // termination only well below 20 degrees, and the Steiner budget bounds the work regardless. 45
 // degrees lets earcut_earcut.poly reach 30 degrees where 60 left a 26.96-degree triangle.
 constexpr double kSeditiousAngle = kPi / 4;
+// corner_ holds 1 + 254 cos(the corner's smallest gap) (refine_setup.cpp): at or above this value the
+// gap is under kSeditiousAngle.
+constexpr std::uint8_t kSeditiousCorner = 1 + 180;  // 254 cos(45 degrees) = 179.6
 
 // A cavity already computed by Triangulation::cavity, handed to the insertion so it is not searched
 // twice (both null: none).
@@ -473,9 +476,18 @@ class Refiner {
     const double len = dist(pa, pb);
     // Concentric shells: measured from an acute corner, the piece next to it gets a power-of-two
     // length in (len/3, 2len/3], so equal pieces on neighbouring segments do not encroach each other.
+    // Between two corners, one under kSeditiousAngle and sharper than the other, the shells are
+    // measured from the sharper, at the power of two nearest half the length: every later split
+    // near that corner then lies on one of its shells on both of its segments, where seditious
+    // edges stop the refinement (§6.6); a midpoint there starts the two sides off different shells
+    // and a cascade of splits towards the corner (the spikes of stars: 15% fewer triangles, 0.86x;
+    // shape families 0.99x, corpus triangles 0.99x in sum).
     double f = 0.5;
     const bool ca = corner_[a] != 0, cb = corner_[b] != 0;
-    if (ca != cb) {
+    if (ca && cb && corner_[a] != corner_[b] && std::max(corner_[a], corner_[b]) >= kSeditiousCorner) {
+      const double d = std::exp2(std::round(std::log2(len / 2)));
+      f = corner_[a] > corner_[b] ? d / len : 1.0 - d / len;
+    } else if (ca != cb) {
       const double d = std::exp2(std::floor(std::log2(2.0 * len / 3.0)));
       f = ca ? d / len : 1.0 - d / len;
     }
