@@ -272,79 +272,83 @@ bool Triangulation::fillCavity(std::uint32_t v, const Location& loc, const std::
   return true;
 }
 
-bool Triangulation::insertVertexByFlips(std::uint32_t v, const Location& loc, std::vector<std::uint32_t>* newTris,
-                                        std::vector<std::uint32_t>* parents) {
+// Triangle t = (a, b, c) becomes (v, b, c) in place, plus (v, c, a) and (v, a, b): three triangles
+// around v, each keeping one outer edge. `stack` receives the three edges opposite v.
+//        c
+//       /|\   (v inside a-b-c)
+//      / v \  .
+//     a-----b
+void Triangulation::splitTriangleAt(std::uint32_t v, std::uint32_t t, std::vector<std::uint32_t>& stack) {
+  const std::uint32_t ta = tv[3 * t], tb = tv[3 * t + 1], tc = tv[3 * t + 2];
+  const std::uint32_t o0 = twin[3 * t], o1 = twin[3 * t + 1], o2 = twin[3 * t + 2];
+  const std::int32_t c0 = con[3 * t], c1 = con[3 * t + 1], c2 = con[3 * t + 2];
+  tv[3 * t] = v;
+  const std::uint32_t t1 = newTriangle(v, tc, ta), t2 = newTriangle(v, ta, tb);
+  vtri[v] = vtri[tb] = vtri[tc] = t;
+  link(3 * t, o0), con[3 * t] = c0;
+  link(3 * t1, o1), con[3 * t1] = c1;
+  link(3 * t2, o2), con[3 * t2] = c2;
+  link(3 * t + 1, 3 * t1 + 2), con[3 * t + 1] = con[3 * t1 + 2] = kFree;
+  link(3 * t1 + 1, 3 * t2 + 2), con[3 * t1 + 1] = con[3 * t2 + 2] = kFree;
+  link(3 * t2 + 1, 3 * t + 2), con[3 * t2 + 1] = con[3 * t + 2] = kFree;
+  stack = {3 * t, 3 * t1, 3 * t2};
+}
+
+// The edge a-b of half-edge e (in T = (x, a, b), and U = (y, b, a) across it if any) is split at v:
+// T -> (x, a, v) + (x, v, b), U -> (y, b, v) + (y, v, a). Both halves keep the edge's constraint.
+// `stack` receives the edges opposite v; sideU is U's slot, or kNone. False, changing nothing, if
+// a new triangle would not be strictly counter-clockwise.
+//        x
+//       / \   (v on a-b)
+//      a-v-b
+//       \ /
+//        y
+bool Triangulation::splitEdgeAt(std::uint32_t v, std::uint32_t e, std::vector<std::uint32_t>& stack,
+                                std::uint32_t& sideU) {
   const double* p = pt(v);
-  std::vector<std::uint32_t> stack;  // half-edges opposite v that may not be locally Delaunay
-  std::uint32_t sideT = kNone, sideU = kNone, a = kNone, b = kNone;
-  if (loc.kind == Location::InTriangle) {
-    //        c                 Triangle t = (a, b, c) becomes (v, b, c) in place, plus (v, c, a) and
-    //       /|\                (v, a, b): three triangles around v, each keeping one outer edge.
-    //      / v \                                                                              .
-    //     a-----b
-    const std::uint32_t t = loc.tri;
-    const std::uint32_t ta = tv[3 * t], tb = tv[3 * t + 1], tc = tv[3 * t + 2];
-    const std::uint32_t o0 = twin[3 * t], o1 = twin[3 * t + 1], o2 = twin[3 * t + 2];
-    const std::int32_t c0 = con[3 * t], c1 = con[3 * t + 1], c2 = con[3 * t + 2];
-    tv[3 * t] = v;
-    const std::uint32_t t1 = newTriangle(v, tc, ta), t2 = newTriangle(v, ta, tb);
-    vtri[v] = vtri[tb] = vtri[tc] = t;
-    link(3 * t, o0), con[3 * t] = c0;
-    link(3 * t1, o1), con[3 * t1] = c1;
-    link(3 * t2, o2), con[3 * t2] = c2;
-    link(3 * t + 1, 3 * t1 + 2), con[3 * t + 1] = con[3 * t1 + 2] = kFree;
-    link(3 * t1 + 1, 3 * t2 + 2), con[3 * t1 + 1] = con[3 * t2 + 2] = kFree;
-    link(3 * t2 + 1, 3 * t + 2), con[3 * t2 + 1] = con[3 * t + 2] = kFree;
-    stack = {3 * t, 3 * t1, 3 * t2};
-    sideT = t;
-  } else if (loc.kind == Location::OnEdge) {
-    //        x                  The edge a-b (in T = (x, a, b), and U = (y, b, a) across it if any)
-    //       / \                 is split at v: T -> (x, a, v) + (x, v, b), U -> (y, b, v) + (y, v, a).
-    //      a-v-b                Both halves keep the edge's constraint.
-    //       \ /
-    //        y
-    const std::uint32_t e = loc.edge, g = twin[e];
-    const std::uint32_t T = e / 3, x = tv[e];
-    a = origin(e), b = dest(e);
-    const std::int32_t split = con[e];
-    if (!(orient2d(pt(x), pt(a), p) > 0 && orient2d(pt(x), p, pt(b)) > 0)) return false;
-    std::uint32_t y = kNone;
-    if (g != kNone) {
-      y = tv[g];
-      if (!(orient2d(pt(y), pt(b), p) > 0 && orient2d(pt(y), p, pt(a)) > 0)) return false;
-    }
-    const std::uint32_t tXB = twin[next3(e)], tAX = twin[prev3(e)];
-    const std::int32_t cXB = con[next3(e)], cAX = con[prev3(e)];
-    tv[3 * T] = x, tv[3 * T + 1] = a, tv[3 * T + 2] = v;  // T1 = (x, a, v) in place
-    const std::uint32_t T2 = newTriangle(x, v, b);
-    vtri[x] = vtri[a] = vtri[v] = T;
-    link(3 * T + 2, tAX), con[3 * T + 2] = cAX;
-    link(3 * T2 + 1, tXB), con[3 * T2 + 1] = cXB;
-    link(3 * T + 1, 3 * T2 + 2), con[3 * T + 1] = con[3 * T2 + 2] = kFree;
-    con[3 * T] = con[3 * T2] = split;
-    twin[3 * T] = twin[3 * T2] = kNone;
-    stack = {3 * T + 2, 3 * T2 + 1};
-    sideT = T;
-    if (g != kNone) {
-      const std::uint32_t U = g / 3;
-      const std::uint32_t tAY = twin[next3(g)], tYB = twin[prev3(g)];
-      const std::int32_t cAY = con[next3(g)], cYB = con[prev3(g)];
-      tv[3 * U] = y, tv[3 * U + 1] = b, tv[3 * U + 2] = v;  // U1 = (y, b, v) in place
-      const std::uint32_t U2 = newTriangle(y, v, a);
-      vtri[y] = vtri[b] = U;
-      link(3 * U + 2, tYB), con[3 * U + 2] = cYB;
-      link(3 * U2 + 1, tAY), con[3 * U2 + 1] = cAY;
-      link(3 * U + 1, 3 * U2 + 2), con[3 * U + 1] = con[3 * U2 + 2] = kFree;
-      link(3 * T2, 3 * U), link(3 * T, 3 * U2);
-      con[3 * U] = con[3 * U2] = split;
-      stack.push_back(3 * U + 2), stack.push_back(3 * U2 + 1);
-      sideU = U;
-    }
-  } else {
-    return false;
+  const std::uint32_t g = twin[e];
+  const std::uint32_t T = e / 3, x = tv[e];
+  const std::uint32_t a = origin(e), b = dest(e);
+  const std::int32_t split = con[e];
+  if (!(orient2d(pt(x), pt(a), p) > 0 && orient2d(pt(x), p, pt(b)) > 0)) return false;
+  std::uint32_t y = kNone;
+  if (g != kNone) {
+    y = tv[g];
+    if (!(orient2d(pt(y), pt(b), p) > 0 && orient2d(pt(y), p, pt(a)) > 0)) return false;
   }
-  // Lawson: flip every edge opposite v that is not locally Delaunay; flip() keeps v at corner 0 of
-  // both triangles, so the two new edges opposite v are their edges 0.
+  const std::uint32_t tXB = twin[next3(e)], tAX = twin[prev3(e)];
+  const std::int32_t cXB = con[next3(e)], cAX = con[prev3(e)];
+  tv[3 * T] = x, tv[3 * T + 1] = a, tv[3 * T + 2] = v;  // T1 = (x, a, v) in place
+  const std::uint32_t T2 = newTriangle(x, v, b);
+  vtri[x] = vtri[a] = vtri[v] = T;
+  link(3 * T + 2, tAX), con[3 * T + 2] = cAX;
+  link(3 * T2 + 1, tXB), con[3 * T2 + 1] = cXB;
+  link(3 * T + 1, 3 * T2 + 2), con[3 * T + 1] = con[3 * T2 + 2] = kFree;
+  con[3 * T] = con[3 * T2] = split;
+  twin[3 * T] = twin[3 * T2] = kNone;
+  stack = {3 * T + 2, 3 * T2 + 1};
+  sideU = kNone;
+  if (g == kNone) return true;
+  const std::uint32_t U = g / 3;
+  const std::uint32_t tAY = twin[next3(g)], tYB = twin[prev3(g)];
+  const std::int32_t cAY = con[next3(g)], cYB = con[prev3(g)];
+  tv[3 * U] = y, tv[3 * U + 1] = b, tv[3 * U + 2] = v;  // U1 = (y, b, v) in place
+  const std::uint32_t U2 = newTriangle(y, v, a);
+  vtri[y] = vtri[b] = U;
+  link(3 * U + 2, tYB), con[3 * U + 2] = cYB;
+  link(3 * U2 + 1, tAY), con[3 * U2 + 1] = cAY;
+  link(3 * U + 1, 3 * U2 + 2), con[3 * U + 1] = con[3 * U2 + 2] = kFree;
+  link(3 * T2, 3 * U), link(3 * T, 3 * U2);
+  con[3 * U] = con[3 * U2] = split;
+  stack.push_back(3 * U + 2), stack.push_back(3 * U2 + 1);
+  sideU = U;
+  return true;
+}
+
+// Lawson flips of the edges opposite the new vertex only: flip() keeps that vertex at corner 0 of
+// both triangles, so the two new edges opposite it are their edges 0 (legalize() would also test
+// the edges at the vertex, which cannot need it here).
+void Triangulation::flipOppositeNewVertex(std::vector<std::uint32_t>& stack) {
   while (!stack.empty()) {
     const std::uint32_t h = stack.back();
     stack.pop_back();
@@ -353,42 +357,67 @@ bool Triangulation::insertVertexByFlips(std::uint32_t v, const Location& loc, st
     const std::uint32_t t = h / 3;
     if (!(incircle(pt(tv[3 * t]), pt(tv[3 * t + 1]), pt(tv[3 * t + 2]), pt(tv[g])) > 0)) continue;
     const std::uint32_t u = g / 3;
-    // flip() expects h's apex to become corner 0: rotate so that v is the apex of h.
     flip(h);
     stack.push_back(3 * t), stack.push_back(3 * u);
   }
-  if (newTris || parents) {
-    std::vector<std::uint32_t> around;
-    const std::uint32_t start = vtri[v];
-    auto corner = [&](std::uint32_t s) { return tv[3 * s] == v ? 0u : tv[3 * s + 1] == v ? 1u : 2u; };
-    std::uint32_t s = start;
-    bool closed = false;
-    for (;;) {
-      around.push_back(s);
-      const std::uint32_t g = twin[3 * s + (corner(s) + 2) % 3];
-      if (g == kNone) break;
-      s = g / 3;
-      if (s == start) { closed = true; break; }
+}
+
+// The triangles around v, in order round the fan (one way from vtri[v], then the other way when
+// the fan is open: v on the boundary).
+std::vector<std::uint32_t> Triangulation::trianglesAround(std::uint32_t v) const {
+  std::vector<std::uint32_t> around;
+  const std::uint32_t start = vtri[v];
+  auto corner = [&](std::uint32_t s) { return tv[3 * s] == v ? 0u : tv[3 * s + 1] == v ? 1u : 2u; };
+  std::uint32_t s = start;
+  bool closed = false;
+  for (;;) {
+    around.push_back(s);
+    const std::uint32_t g = twin[3 * s + (corner(s) + 2) % 3];
+    if (g == kNone) break;
+    s = g / 3;
+    if (s == start) {
+      closed = true;
+      break;
     }
-    for (s = start; !closed;) {
-      const std::uint32_t g = twin[3 * s + (corner(s) + 1) % 3];
-      if (g == kNone) break;
-      s = g / 3;
-      around.push_back(s);
-    }
-    if (newTris) *newTris = around;
-    if (parents) {
-      parents->clear();
-      for (std::uint32_t t : around) {
-        // Triangles left of a->b came from T's side, the others from U's (flips never cross it).
-        std::uint32_t from = sideT;
-        if (sideU != kNone) {
-          double c[2] = {0, 0};
-          for (int i = 0; i < 3; ++i) c[0] += pt(tv[3 * t + i])[0] / 3, c[1] += pt(tv[3 * t + i])[1] / 3;
-          if (orient2d(pt(a), pt(b), c) < 0) from = sideU;
-        }
-        parents->push_back(from);
+  }
+  for (s = start; !closed;) {
+    const std::uint32_t g = twin[3 * s + (corner(s) + 1) % 3];
+    if (g == kNone) break;
+    s = g / 3;
+    around.push_back(s);
+  }
+  return around;
+}
+
+bool Triangulation::insertVertexByFlips(std::uint32_t v, const Location& loc, std::vector<std::uint32_t>* newTris,
+                                        std::vector<std::uint32_t>* parents) {
+  std::vector<std::uint32_t> stack;  // half-edges opposite v that may not be locally Delaunay
+  std::uint32_t sideT = kNone, sideU = kNone, a = kNone, b = kNone;
+  if (loc.kind == Location::InTriangle) {
+    splitTriangleAt(v, loc.tri, stack);
+    sideT = loc.tri;
+  } else if (loc.kind == Location::OnEdge) {
+    a = origin(loc.edge), b = dest(loc.edge);
+    if (!splitEdgeAt(v, loc.edge, stack, sideU)) return false;
+    sideT = loc.edge / 3;
+  } else {
+    return false;
+  }
+  flipOppositeNewVertex(stack);
+  if (!newTris && !parents) return true;
+  const std::vector<std::uint32_t> around = trianglesAround(v);
+  if (newTris) *newTris = around;
+  if (parents) {
+    parents->clear();
+    for (std::uint32_t t : around) {
+      // Triangles left of a->b came from T's side, the others from U's (flips never cross it).
+      std::uint32_t from = sideT;
+      if (sideU != kNone) {
+        double c[2] = {0, 0};
+        for (int i = 0; i < 3; ++i) c[0] += pt(tv[3 * t + i])[0] / 3, c[1] += pt(tv[3 * t + i])[1] / 3;
+        if (orient2d(pt(a), pt(b), c) < 0) from = sideU;
       }
+      parents->push_back(from);
     }
   }
   return true;

@@ -135,6 +135,11 @@ class Triangulation {
   mutable std::uint64_t rng_ = 0x9E3779B97F4A7C15ull;
   std::uint32_t nextStamp() const;
   std::uint32_t findEdgeFrom(std::uint32_t a, std::uint32_t b) const;
+  // The steps of insertVertexByFlips.
+  void splitTriangleAt(std::uint32_t v, std::uint32_t t, std::vector<std::uint32_t>& stack);
+  bool splitEdgeAt(std::uint32_t v, std::uint32_t e, std::vector<std::uint32_t>& stack, std::uint32_t& sideU);
+  void flipOppositeNewVertex(std::vector<std::uint32_t>& stack);
+  std::vector<std::uint32_t> trianglesAround(std::uint32_t v) const;
 };
 
 }  // namespace ruppert::detail
