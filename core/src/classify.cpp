@@ -153,8 +153,12 @@ std::int64_t eatHoles(MeshState& m, std::vector<std::uint8_t>& state) {
   return -1;
 }
 
-void classifyTriangles(MeshState& m) {
-  Triangulation& t = m.tri;
+namespace {
+
+// Which triangles are outside the domain (state[s] == kOutside): beyond the enclosing segments or
+// in a hole. Segments that enclose nothing (or holes that take all they enclose) mesh the convex
+// hull instead, with a notice; a hole that still takes everything is an error.
+std::vector<std::uint8_t> domainOf(MeshState& m) {
   const std::size_t noticesBefore = m.notices.size();
   std::vector<std::uint8_t> state = outsideTriangles(m);
   const bool nothingEnclosed = std::find(state.begin(), state.end(), kUnknown) == state.end();
@@ -183,14 +187,20 @@ void classifyTriangles(MeshState& m) {
                                      : std::string("it lies in the only region the segments enclose; a hole needs an outer "
                                                    "boundary around its own")));
   }
+  return state;
+}
+
+// Region attributes and area bounds (MeshState::attribute, maxArea) for every triangle. Each
+// connected part of the domain between segments is flooded once, when its first seed is met, and
+// the seeds' values are gathered per part: thousands of regions (or of seeds in one region) cost
+// one pass over the triangles, not one per seed. Later seeds set the attribute; the smallest area
+// bound applies.
+void assignRegions(MeshState& m, const std::vector<std::uint8_t>& state) {
+  Triangulation& t = m.tri;
   const std::uint32_t slots = t.slotCount();
   const Plc& plc = *m.plc;
   m.attribute.assign(slots, 0.0);
   m.maxArea.assign(slots, m.input.maxArea);
-  // Each connected part of the domain between segments is flooded once, when its first seed is
-  // met, and the seeds' values are gathered per part: thousands of regions (or of seeds in one
-  // region) cost one pass over the triangles, not one per seed. Later seeds set the attribute; the
-  // smallest area bound applies.
   struct Part {
     double attribute = 0, maxArea = 0;
   };
@@ -221,18 +231,23 @@ void classifyTriangles(MeshState& m) {
     m.attribute[u] = part.attribute;
     if (part.maxArea > 0) m.maxArea[u] = m.maxArea[u] > 0 ? std::min(m.maxArea[u], part.maxArea) : part.maxArea;
   }
+}
 
-  if (m.options->variant == Variant::BoundingBox) {
-    // Ruppert's original algorithm refines the whole box; the domain is cut out at the end.
-    m.inDomain.assign(slots, 0);
-    for (std::uint32_t s = 0; s < slots; ++s) {
-      m.inDomain[s] = t.alive(s) && state[s] != kOutside;
-      if (!m.inDomain[s]) m.maxArea[s] = 0, m.attribute[s] = 0;
-    }
-    return;
-  }
+}  // namespace
+
+void classifyTriangles(MeshState& m) {
+  const std::vector<std::uint8_t> state = domainOf(m);
+  assignRegions(m, state);
+  Triangulation& t = m.tri;
+  const std::uint32_t slots = t.slotCount();
   m.inDomain.assign(slots, 0);
   for (std::uint32_t s = 0; s < slots; ++s) m.inDomain[s] = t.alive(s) && state[s] != kOutside;
+  if (m.options->variant == Variant::BoundingBox) {
+    // Ruppert's original algorithm refines the whole box; the domain is cut out at the end.
+    for (std::uint32_t s = 0; s < slots; ++s)
+      if (!m.inDomain[s]) m.maxArea[s] = 0, m.attribute[s] = 0;
+    return;
+  }
   removeOutside(m);
 }
 
