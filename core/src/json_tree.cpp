@@ -8,6 +8,9 @@
 
 #include "ruppert/ruppert.h"
 
+#include "cold_code.h"
+
+RUPPERT_COLD_BEGIN
 namespace ruppert::detail {
 namespace {
 
@@ -272,3 +275,4 @@ std::string jsonPosition(const std::string& text, std::size_t offset) {
 JsonValue parseJsonTree(const std::string& text, const std::string& name) { return TreeParser(text, name).document(); }
 
 }  // namespace ruppert::detail
+RUPPERT_COLD_END

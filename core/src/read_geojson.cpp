@@ -28,6 +28,9 @@
 #include "json_tree.h"
 #include "ruppert/ruppert.h"
 
+#include "cold_code.h"
+
+RUPPERT_COLD_BEGIN
 namespace ruppert {
 namespace {
 
@@ -318,3 +321,4 @@ Plc readGeoJson(std::istream& in, const std::string& name) {
 }
 
 }  // namespace ruppert
+RUPPERT_COLD_END

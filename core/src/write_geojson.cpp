@@ -12,6 +12,9 @@
 #include "ruppert/ruppert.h"
 #include "write_common.h"
 
+#include "cold_code.h"
+
+RUPPERT_COLD_BEGIN
 namespace ruppert {
 namespace {
 
@@ -59,3 +62,4 @@ std::string toGeoJson(const Mesh& mesh) {
 }
 
 }  // namespace ruppert
+RUPPERT_COLD_END

@@ -23,6 +23,9 @@
 #include "subsegment_marker.h"
 #include "write_common.h"
 
+#include "cold_code.h"
+
+RUPPERT_COLD_BEGIN
 namespace ruppert {
 namespace {
 
@@ -197,3 +200,4 @@ std::string toMsh(const Mesh& mesh, const Plc& input) {
 }
 
 }  // namespace ruppert
+RUPPERT_COLD_END

@@ -15,6 +15,9 @@
 #include "ruppert/ruppert.h"
 #include "write_common.h"
 
+#include "cold_code.h"
+
+RUPPERT_COLD_BEGIN
 namespace ruppert {
 namespace {
 
@@ -96,3 +99,4 @@ void writeVtu(std::ostream& out, const Mesh& mesh) {
 std::string toVtu(const Mesh& mesh) { return detail::printToString([&](TextOut& t) { printVtu(t, mesh); }); }
 
 }  // namespace ruppert
+RUPPERT_COLD_END
