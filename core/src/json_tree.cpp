@@ -1,6 +1,7 @@
 // Recursive-descent JSON parser building a JsonValue tree (see json_tree.h).
 #include "json_tree.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -100,6 +101,7 @@ class TreeParser {
         ++p_;
       } else if (p_ < text_.size() && text_[p_] == '}') {
         ++p_;
+        requireUniqueKeys(v);
         return;
       } else {
         fail("expected ',' or '}' in an object, found " + here());
@@ -132,6 +134,20 @@ class TreeParser {
         return;
       } else {
         fail("expected ',' or ']' in an array, found " + here());
+      }
+    }
+  }
+
+  // RFC 8259 leaves duplicate names to the reader; two "type"s or "coordinates" are refused, as the
+  // .json reader refuses them, instead of silently taking one.
+  void requireUniqueKeys(const JsonValue& v) const {
+    std::vector<const std::string*> keys;
+    for (const auto& member : v.members) keys.push_back(&member.first);
+    std::sort(keys.begin(), keys.end(), [](const std::string* a, const std::string* b) { return *a < *b; });
+    for (std::size_t i = 1; i < keys.size(); ++i) {
+      if (*keys[i] == *keys[i - 1]) {
+        throw Error(ErrorCode::MalformedInput,
+                    name_ + ":" + jsonPosition(text_, v.offset) + ": duplicate key \"" + *keys[i] + "\" in an object");
       }
     }
   }

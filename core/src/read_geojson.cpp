@@ -40,6 +40,7 @@ struct Ring {
   std::vector<std::uint32_t> ids;  // point indices, closing vertex not repeated
   std::string path;
   std::size_t offset = 0;
+  double minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;  // its bounding box
 };
 
 struct Polygon {
@@ -57,9 +58,6 @@ class GeoJsonReader {
     }
     object(root, "");
     if (polygons_.empty()) fail(root, "the document", "holds no Polygon or MultiPolygon");
-    for (const Polygon& p : polygons_) {
-      for (const Ring& r : p.rings) requireArea(r);
-    }
     holeSeeds();
     plc_.indexBase = 0;
     return std::move(plc_);
@@ -162,11 +160,20 @@ class GeoJsonReader {
       if (ring.ids.empty() || ring.ids.back() != id) ring.ids.push_back(id);
     }
     while (ring.ids.size() > 1 && ring.ids.back() == ring.ids.front()) ring.ids.pop_back();
-    if (ring.ids.size() < 3) {
-      fail(c, path, "has " + std::to_string(ring.ids.size()) + " distinct position" + (ring.ids.size() == 1 ? "" : "s") +
+    std::vector<std::uint32_t> distinct = ring.ids;
+    std::sort(distinct.begin(), distinct.end());
+    const std::size_t count = static_cast<std::size_t>(std::unique(distinct.begin(), distinct.end()) - distinct.begin());
+    if (count < 3) {
+      fail(c, path, "has " + std::to_string(count) + " distinct position" + (count == 1 ? "" : "s") +
                         "; a ring needs at least 3");
     }
-    for (std::size_t k = 0; k < ring.ids.size(); ++k) addSegment(ring.ids[k], ring.ids[(k + 1) % ring.ids.size()]);
+    for (std::size_t k = 0; k < ring.ids.size(); ++k) {
+      addSegment(ring.ids[k], ring.ids[(k + 1) % ring.ids.size()]);
+      ring.minX = std::min(ring.minX, x(ring.ids[k]));
+      ring.maxX = std::max(ring.maxX, x(ring.ids[k]));
+      ring.minY = std::min(ring.minY, y(ring.ids[k]));
+      ring.maxY = std::max(ring.maxY, y(ring.ids[k]));
+    }
     return ring;
   }
 
@@ -188,17 +195,10 @@ class GeoJsonReader {
   double x(std::uint32_t id) const { return plc_.points[2 * static_cast<std::size_t>(id)]; }
   double y(std::uint32_t id) const { return plc_.points[2 * static_cast<std::size_t>(id) + 1]; }
 
-  double signedArea(const Ring& r) const {
-    double twice = 0;
-    for (std::size_t k = 0; k < r.ids.size(); ++k) {
-      const std::uint32_t a = r.ids[k], b = r.ids[(k + 1) % r.ids.size()];
-      twice += (x(a) - x(r.ids[0])) * (y(b) - y(r.ids[0])) - (x(b) - x(r.ids[0])) * (y(a) - y(r.ids[0]));
-    }
-    return twice / 2;
-  }
-
   // Even-odd crossing test of (px, py) against one ring.
   bool insideRing(const Ring& r, double px, double py) const {
+    // Outside the box is outside the ring: most rings are judged by four comparisons.
+    if (px < r.minX || px > r.maxX || py < r.minY || py > r.maxY) return false;
     bool inside = false;
     for (std::size_t k = 0, j = r.ids.size() - 1; k < r.ids.size(); j = k++) {
       const double xi = x(r.ids[k]), yi = y(r.ids[k]), xj = x(r.ids[j]), yj = y(r.ids[j]);
@@ -213,14 +213,6 @@ class GeoJsonReader {
       if (insideRing(p.rings[r], px, py)) return false;
     }
     return true;
-  }
-
-  // A ring is a chain of segments that must enclose something: all its positions on one line make
-  // no boundary a reader can mean.
-  void requireArea(const Ring& r) const {
-    if (signedArea(r) != 0) return;
-    throw Error(ErrorCode::MalformedInput, name_ + ":" + detail::jsonPosition(text_, r.offset) + ": " + r.path +
-                                               " encloses no area (its positions lie on one line)");
   }
 
   bool covered(double px, double py) const {

@@ -134,6 +134,20 @@ TEST_CASE("geojson: a courtyard enclosed by four polygons and covered by none is
   CHECK_FALSE(anyTriangleIn(mesh, square(2, 2, 2)));
 }
 
+TEST_CASE("geojson: degenerate and self-crossing rings are segments like any other", "[geojson]") {
+  // An inner ring on one line encloses nothing: its segments are meshed as constraints, no hole.
+  const ruppert::Plc flat = ruppert::parseGeoJson(
+      "{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[9,0],[9,9],[0,9]],[[1,1],[2,2],[3,3]]]}");
+  CHECK(flat.holes.empty());
+  CHECK(meshArea(ruppert::triangulate(flat)) == Approx(81));
+  // A bowtie: its crossing is repaired (a notice), both lobes are domain.
+  const ruppert::Plc bowtie = ruppert::parseGeoJson("{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[4,4],[4,0],[0,4],[0,0]]]}");
+  const ruppert::Mesh mesh = ruppert::triangulate(bowtie);
+  CHECK(meshArea(mesh) == Approx(8));
+  REQUIRE(mesh.notices.size() == 1);
+  CHECK(mesh.notices[0].kind == ruppert::NoticeKind::SegmentsCross);
+}
+
 TEST_CASE("geojson: generated polygons with random square holes", "[geojson]") {
   std::mt19937_64 random(16);
   for (int round = 0; round < 20; ++round) {
@@ -189,10 +203,12 @@ TEST_CASE("geojson: bad input names the feature and what is wrong", "[geojson]")
   CHECK_THAT(message, Catch::Contains("features must be an array"));
   CHECK(codeOf("{\"type\":\"FeatureCollection\",\"features\":[]}", message) == ruppert::ErrorCode::MalformedInput);
   CHECK_THAT(message, Catch::Contains("holds no Polygon"));
-  // A degenerate inner ring (all on a line) has no inside to put a hole seed in.
-  CHECK(codeOf("{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[9,0],[9,9],[0,9]],[[1,1],[2,2],[3,3]]]}", message) ==
+  CHECK(codeOf("{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[1,1],[0,0],[1,1]]]}", message) ==
         ruppert::ErrorCode::MalformedInput);
-  CHECK_THAT(message, Catch::Contains("coordinates[1]") && Catch::Contains("encloses no area"));
+  CHECK_THAT(message, Catch::Contains("coordinates[0] has 2 distinct positions"));
+  CHECK(codeOf("{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[1,0],[0,1]]],\"type\":\"Point\"}", message) ==
+        ruppert::ErrorCode::MalformedInput);
+  CHECK_THAT(message, Catch::Contains("duplicate key \"type\""));
   std::string deep(300, '[');
   CHECK(codeOf(deep, message) == ruppert::ErrorCode::ParseError);
   CHECK_THAT(message, Catch::Contains("nesting"));
