@@ -124,6 +124,7 @@ int run(int argc, char** argv) {
     args.options.onProgress = [&progress](const ruppert::Progress& p) { return progress.update(p); };
     mesh = ruppert::triangulate(plc, args.options);
     progress.finish();
+    args.options.onProgress = nullptr;  // it refers to `progress`, which ends here
   } catch (const ruppert::Error& e) {
     std::cerr << "error: " << e.what() << '\n';
     if (e.code() == ruppert::ErrorCode::InvalidOption) {
