@@ -12,7 +12,7 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build-fuzz"
 seconds="${1:-60}"
-targets=(${FUZZ_TARGETS:-fuzz_read_poly fuzz_read_json fuzz_mesh})
+targets=(${FUZZ_TARGETS:-fuzz_read_poly fuzz_read_json fuzz_read_geojson fuzz_mesh})
 
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ -DRUPPERT_FUZZ=ON
 cmake --build "$build" -j2 --target "${targets[@]}"
@@ -39,6 +39,7 @@ seed "$(corpus fuzz_read_poly)" ${data:+"$data"/*.poly "$data"/crossing/*.poly} 
   "$root"/tests/fixtures/*.poly "$root"/tests/fixtures/io/*.poly "$root"/tests/fixtures/io/*.node \
   "$root"/tests/hostile/*.poly "$root"/tests/hostile/*.node
 seed "$(corpus fuzz_read_json)" "$root"/tests/fixtures/io/*.json "$root"/tests/hostile/*.json
+seed "$(corpus fuzz_read_geojson)" "$root"/tests/hostile/*.geojson
 # JSON seeds from the shared PLCs, written by the native CLI when a build of it is at hand.
 cli=""
 for candidate in "$root/build-native/core/ruppert" "$root/build-sanitize/core/ruppert"; do

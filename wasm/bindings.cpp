@@ -344,9 +344,13 @@ val parseCliArgs(val argsJs) {
     out.set("input", args.input);
     out.set("outputBase", args.outputBase);
     out.set("tracePath", args.tracePath);
+    out.set("inputFormat", args.inputFormat);
     using ruppert::cli::OutputFormat;
-    out.set("format", std::string(args.format == OutputFormat::Json  ? "json"
-                                  : args.format == OutputFormat::Svg ? "svg"
+    out.set("format", std::string(args.format == OutputFormat::Json      ? "json"
+                                  : args.format == OutputFormat::Svg     ? "svg"
+                                  : args.format == OutputFormat::Msh     ? "msh"
+                                  : args.format == OutputFormat::Vtu     ? "vtu"
+                                  : args.format == OutputFormat::GeoJson ? "geojson"
                                                                      : "triangle"));
     out.set("quiet", args.quiet);
     out.set("stats", args.stats);
@@ -372,7 +376,7 @@ val parseCliArgs(val argsJs) {
   });
 }
 
-// format: "poly", "node" or "json".
+// format: "poly", "node", "json" or "geojson".
 val readPlc(std::string text, std::string format, std::string name) {
   return guarded([&] {
     ruppert::Plc plc;
@@ -382,6 +386,8 @@ val readPlc(std::string text, std::string format, std::string name) {
       plc = ruppert::parseNode(text, name);
     } else if (format == "json") {
       plc = ruppert::parseJson(text, name);
+    } else if (format == "geojson") {
+      plc = ruppert::parseGeoJson(text, name);
     } else {
       throw ruppert::Error(ruppert::ErrorCode::InvalidOption, "unknown input format '" + format + "'");
     }
@@ -400,7 +406,7 @@ val readPolyWithNode(std::string polyText, std::string polyName, std::string nod
   });
 }
 
-// format: "node", "ele", "poly", "json" or "svg". `input` may be null (no holes or regions).
+// format: "node", "ele", "poly", "json", "svg", "msh", "vtu" or "geojson". `input` may be null (no holes or regions).
 val writeMesh(val meshJs, val inputJs, std::string format) {
   return guarded([&] {
     const ruppert::Mesh mesh = meshFromJs(meshJs);
@@ -416,6 +422,12 @@ val writeMesh(val meshJs, val inputJs, std::string format) {
       text = ruppert::toJson(mesh, input);
     } else if (format == "svg") {
       text = ruppert::toSvg(mesh);
+    } else if (format == "msh") {
+      text = ruppert::toMsh(mesh, input);
+    } else if (format == "vtu") {
+      text = ruppert::toVtu(mesh);
+    } else if (format == "geojson") {
+      text = ruppert::toGeoJson(mesh);
     } else {
       throw ruppert::Error(ruppert::ErrorCode::InvalidOption, "unknown output format '" + format + "'");
     }

@@ -4,6 +4,8 @@
 // C++ code compiled into the wasm, so both CLIs accept and print the same things; only the file
 // input/output is done here, with node:fs.
 //   ruppert --min-angle 30 -o out in.poly   writes out.node, out.ele, out.poly
+//   cat in.geojson | ruppert --format msh -o - -   reads standard input, writes the .msh to standard output
+// (The native CLI's progress line on a terminal is not drawn here: the mesher runs in one call.)
 // Exit status: 0 success, 1 invalid input, 2 usage error, 3 an output file could not be written.
 import { readFile, writeFile } from 'node:fs/promises';
 import { extname } from 'node:path';
@@ -16,21 +18,54 @@ const EXIT_WRITE_FAILED = 3;
 
 class WriteFailure extends Error {}
 
-async function readPlc(mesher, path) {
+const READERS = { poly: 'parsePoly', node: 'parseNode', json: 'parseJson', geojson: 'parseGeoJson' };
+
+// The format of standard input's text, as the native CLI sniffs it (core/cli/cli_input.cpp).
+function sniffFormat(text) {
+  if (!/^\uFEFF?\s*\{/.test(text)) return 'triangle';
+  return text.includes('"type"') && !text.includes('"points"') ? 'geojson' : 'json';
+}
+
+// Triangle's text without an extension: .poly, or failing that .node (the .poly error is shown).
+function parseTriangleText(mesher, text, name) {
+  try {
+    return mesher.parsePoly(text, name);
+  } catch (polyError) {
+    if (!(polyError instanceof MeshError) || polyError.code !== 'PARSE_ERROR') throw polyError;
+    try {
+      return mesher.parseNode(text, name);
+    } catch {
+      throw polyError;
+    }
+  }
+}
+
+async function readStdin() {
+  const chunks = [];
+  for await (const chunk of process.stdin) chunks.push(chunk);
+  return Buffer.concat(chunks).toString('utf8');
+}
+
+async function readPlc(mesher, path, inputFormat) {
   let text;
   try {
-    text = await readFile(path, 'utf8');
+    text = path === '-' ? await readStdin() : await readFile(path, 'utf8');
   } catch (cause) {
     throw new MeshError('IO_ERROR', `cannot read '${path}': ${cause.message}`, { cause });
   }
-  const ext = extname(path).toLowerCase();
-  if (ext === '.poly') return mesher.parsePoly(text, path);
-  if (ext === '.node') return mesher.parseNode(text, path);
-  if (ext === '.json') return mesher.parseJson(text, path);
-  throw new MeshError('IO_ERROR', `'${path}': unknown extension '${ext}' (expected .poly, .node or .json)`);
+  const name = path === '-' ? '<stdin>' : path;
+  const ext = extname(path).toLowerCase().slice(1);
+  const format = inputFormat || (path === '-' ? sniffFormat(text) : ext);
+  if (format === 'triangle') return parseTriangleText(mesher, text, name);
+  if (READERS[format] !== undefined) return mesher[READERS[format]](text, name);
+  throw new MeshError('IO_ERROR', `'${path}': unknown extension '.${ext}' (expected .poly, .node, .json or .geojson)`);
 }
 
 async function write(path, text) {
+  if (path.startsWith('-.')) {  // -o -: the one file of the format goes to standard output
+    await new Promise((resolve, reject) => process.stdout.write(text, (error) => (error ? reject(error) : resolve())));
+    return;
+  }
   try {
     await writeFile(path, text);
   } catch (cause) {
@@ -58,7 +93,7 @@ async function main(argv) {
   let plc;
   let mesh;
   try {
-    plc = await readPlc(mesher, args.input);
+    plc = await readPlc(mesher, args.input, args.inputFormat);
     mesh = mesher._triangulateWithReport(plc, args.options,
       { summary: !args.quiet, stats: args.stats, trace: args.tracePath !== '' });
   } catch (error) {
@@ -83,6 +118,12 @@ async function main(argv) {
         await write(`${base}.poly`, mesher.toPoly(mesh, plc));
       } else if (args.format === 'json') {
         await write(`${base}.json`, mesher.toJson(mesh, plc));
+      } else if (args.format === 'msh') {
+        await write(`${base}.msh`, mesher.toMsh(mesh, plc));
+      } else if (args.format === 'vtu') {
+        await write(`${base}.vtu`, mesher.toVtu(mesh));
+      } else if (args.format === 'geojson') {
+        await write(`${base}.geojson`, mesher.toGeoJson(mesh));
       } else {
         await write(`${base}.svg`, mesher.toSVG(mesh));
       }
@@ -93,8 +134,10 @@ async function main(argv) {
     process.stderr.write(`error: ${error.message}\n`);
     return EXIT_WRITE_FAILED;
   }
-  if (!args.quiet) process.stdout.write(mesh.report.summary);
-  if (args.stats) process.stdout.write(mesh.report.stats);
+  // With -o - standard output holds the mesh, so the reports go to standard error.
+  const report = args.outputBase === '-' ? process.stderr : process.stdout;
+  if (!args.quiet) report.write(mesh.report.summary);
+  if (args.stats) report.write(mesh.report.stats);
   return EXIT_OK;
 }
 

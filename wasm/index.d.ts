@@ -234,6 +234,14 @@ export interface Mesher {
   toPoly(mesh: Mesh, input?: Plc): string;
   toJson(mesh: Mesh, input?: Plc): string;
   toSVG(mesh: Mesh): string;
+  /** GeoJSON Polygon/MultiPolygon/Feature/FeatureCollection to a PLC; inner rings get hole seeds. */
+  parseGeoJson(text: string, name?: string): ParsedPlc;
+  /** Gmsh MSH 4.1 ASCII; `input` gives the segment markers that name the lines' physical groups. */
+  toMsh(mesh: Mesh, input?: Plc): string;
+  /** VTK XML UnstructuredGrid (ASCII). */
+  toVtu(mesh: Mesh): string;
+  /** GeoJSON FeatureCollection, one Polygon feature per triangle. */
+  toGeoJson(mesh: Mesh): string;
   /** Resolves once a wasm instance is available (pending only right after an abort). */
   readonly ready: Promise<void>;
   memoryUsage(): { heapBytes: number; allocatedBytes: number };
@@ -251,6 +259,10 @@ export declare function toNode(mesh: Mesh): string;
 export declare function toEle(mesh: Mesh): string;
 export declare function toJson(mesh: Mesh, input?: Plc): string;
 export declare function toSVG(mesh: Mesh): string;
+export declare function parseGeoJson(text: string, name?: string): ParsedPlc;
+export declare function toMsh(mesh: Mesh, input?: Plc): string;
+export declare function toVtu(mesh: Mesh): string;
+export declare function toGeoJson(mesh: Mesh): string;
 
 export type WorkerOptions = Omit<TriangulateOptions, 'sizeFunction' | 'onProgress'>;
 

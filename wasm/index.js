@@ -88,3 +88,11 @@ export const toEle = (mesh) => loaded('toEle').toEle(mesh);
 export const toJson = (mesh, input) => loaded('toJson').toJson(mesh, input);
 /** SVG text drawing a mesh. */
 export const toSVG = (mesh) => loaded('toSVG').toSVG(mesh);
+/** Reads GeoJSON polygons (Polygon, MultiPolygon, Feature, FeatureCollection) into a PLC with hole seeds. */
+export const parseGeoJson = (text, name) => loaded('parseGeoJson').parseGeoJson(text, name);
+/** Gmsh MSH 4.1 text: triangles, subsegment lines, physical groups from markers and region attributes. */
+export const toMsh = (mesh, input) => loaded('toMsh').toMsh(mesh, input);
+/** VTK XML UnstructuredGrid (.vtu) text with vertex kinds, markers, region attributes and smallest angles. */
+export const toVtu = (mesh) => loaded('toVtu').toVtu(mesh);
+/** GeoJSON FeatureCollection text: one Polygon feature per triangle. */
+export const toGeoJson = (mesh) => loaded('toGeoJson').toGeoJson(mesh);

@@ -162,6 +162,10 @@ export function createMesher(compiled, firstModule) {
     toPoly: (mesh, input) => write(mesh, input, 'poly'),
     toJson: (mesh, input) => write(mesh, input, 'json'),
     toSVG: (mesh) => write(mesh, null, 'svg'),
+    parseGeoJson: (text, name = '<geojson>') => read(text, 'geojson', name, 'parseGeoJson'),
+    toMsh: (mesh, input) => write(mesh, input, 'msh'),
+    toVtu: (mesh) => write(mesh, null, 'vtu'),
+    toGeoJson: (mesh) => write(mesh, null, 'geojson'),
     /** Resolves once an instance is available (only ever pending right after an abort). */
     get ready() {
       return module !== null || replacement === null ? Promise.resolve() : replacement;

@@ -7,7 +7,7 @@ import { init } from '../wasm/index.js';
 let mesherPromise = null;
 const mesher = () => (mesherPromise ??= init());
 
-const READERS = { poly: 'parsePoly', node: 'parseNode', json: 'parseJson' };
+const READERS = { poly: 'parsePoly', node: 'parseNode', json: 'parseJson', geojson: 'parseGeoJson' };
 
 export function fileFormat(name) {
   const match = /\.([a-z]+)$/i.exec(name);
@@ -18,7 +18,7 @@ export function fileFormat(name) {
 /** Parses file text by its extension into a ParsedPlc; throws MeshError on bad input. */
 export async function parseInput(text, name) {
   const format = fileFormat(name);
-  if (format === null) throw new Error(`${name}: unknown file type (expected .poly, .node or .json)`);
+  if (format === null) throw new Error(`${name}: unknown file type (expected .poly, .node, .json or .geojson)`);
   return (await mesher())[READERS[format]](text, name);
 }
 
@@ -32,11 +32,17 @@ export async function exportText(format, mesh, plc) {
     case 'poly': return m.toPoly(mesh, plc);
     case 'json': return m.toJson(mesh, plc);
     case 'svg': return m.toSVG(mesh);
+    case 'node': return m.toNode(mesh);
+    case 'ele': return m.toEle(mesh);
+    case 'msh': return m.toMsh(mesh, plc);
+    case 'vtu': return m.toVtu(mesh);
+    case 'geojson': return m.toGeoJson(mesh);
     default: throw new Error(`unknown export format ${format}`);
   }
 }
 
-const MIME = { poly: 'text/plain', json: 'application/json', svg: 'image/svg+xml', png: 'image/png' };
+const MIME = { poly: 'text/plain', json: 'application/json', svg: 'image/svg+xml', png: 'image/png',
+  vtu: 'application/xml', geojson: 'application/geo+json' };
 
 /** Offers `blobOrText` as a download named `name`. */
 export function download(blobOrText, name, format) {

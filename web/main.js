@@ -711,7 +711,7 @@ async function exportAs(format) {
     setStatus(`Export failed: ${error.message}`, 'error');
   }
 }
-for (const format of ['poly', 'json', 'svg', 'png']) $(`export-${format}`).addEventListener('click', () => exportAs(format));
+for (const format of ['poly', 'json', 'svg', 'png', 'node', 'ele', 'msh', 'vtu', 'geojson']) $(`export-${format}`).addEventListener('click', () => exportAs(format));
 
 $('copy-link').addEventListener('click', async () => {
   writeHash();

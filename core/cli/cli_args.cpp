@@ -28,7 +28,7 @@ bool parseStrictCount(const std::string& text, std::uint64_t& value) {
 
 const char* usageLine() {
   return "usage: ruppert [--min-angle DEG] [--max-area A] [--max-steiner N] [-o BASE] "
-         "[--format triangle|json|svg] [--quiet] [--stats] [--trace FILE] "
+         "[--format triangle|json|svg|msh|vtu|geojson] [--input-format poly|node|json|geojson] [--quiet] [--stats] [--trace FILE] "
          "[--placement offcenter|circumcenter|petal|optimal] [--encroachment lens|disk] [--variant cdt|box] [--convex-hull] [--auto-holes] "
          "[--help] [--version] INPUT";
 }
@@ -37,7 +37,8 @@ std::string helpText() {
   return std::string(usageLine()) +
          "\n\n"
          "Quality triangle mesh of a planar straight-line graph by Delaunay refinement (Ruppert).\n"
-         "INPUT is a Triangle .poly or .node file, or a .json file {\"points\": [...], \"segments\": [...], ...}.\n"
+         "INPUT is a Triangle .poly or .node file, a .json file {\"points\": [...], \"segments\": [...], ...},\n"
+         "a .geojson file (Polygon/MultiPolygon features; inner rings are holes), or - for standard input.\n"
          "\n"
          "  --min-angle DEG      smallest angle to reach, 0..60 (default 30); above 34, where out of\n"
          "                       reach: the best mesh reached (at least 33 degrees), marked incomplete\n"
@@ -46,7 +47,12 @@ std::string helpText() {
          "  --max-steiner N      at most N new vertices (default: automatic)\n"
          "  -o BASE              write the mesh: BASE.node, BASE.ele, BASE.poly (triangle format),\n"
          "                       BASE.json (json) or BASE.svg (svg); without -o only the summary is printed\n"
-         "  --format F           triangle (default), json or svg\n"
+         "  --format F           triangle (default), json, svg, msh (Gmsh 4.1: BASE.msh), vtu (VTK XML:\n"
+         "                       BASE.vtu) or geojson (a FeatureCollection of triangles: BASE.geojson)\n"
+         "  -o -                 write the one file of --format (not triangle: three files) to standard\n"
+         "                       output; the summary and --stats then go to standard error\n"
+         "  --input-format F     poly, node, json or geojson: how to read INPUT (default: its extension;\n"
+         "                       for - the text decides: '{' is json or geojson, else .poly or .node)\n"
          "  --placement P        offcenter (default), circumcenter, petal (fewest triangles: a point\n"
          "                       of the shortest edge's petal where an off-center would make a skinny\n"
          "                       triangle; slower when there is no --max-area), or optimal (the point\n"
@@ -130,7 +136,16 @@ CliArgs parseArgs(const std::vector<std::string>& args) {
       if (v == "triangle") out.format = OutputFormat::Triangle;
       else if (v == "json") out.format = OutputFormat::Json;
       else if (v == "svg") out.format = OutputFormat::Svg;
-      else throw UsageError("--format: '" + v + "' is not one of triangle, json, svg");
+      else if (v == "msh") out.format = OutputFormat::Msh;
+      else if (v == "vtu") out.format = OutputFormat::Vtu;
+      else if (v == "geojson") out.format = OutputFormat::GeoJson;
+      else throw UsageError("--format: '" + v + "' is not one of triangle, json, svg, msh, vtu, geojson");
+    } else if (name == "--input-format") {
+      const std::string v = value();
+      if (v != "poly" && v != "node" && v != "json" && v != "geojson") {
+        throw UsageError("--input-format: '" + v + "' is not one of poly, node, json, geojson");
+      }
+      out.inputFormat = v;
     } else if (name == "--encroachment") {
       const std::string v = value();
       if (v == "lens") out.options.encroachment = Encroachment::DiametralLens;
@@ -165,7 +180,7 @@ CliArgs parseArgs(const std::vector<std::string>& args) {
       out.help = flag();
     } else if (name == "--version") {
       out.version = flag();
-    } else if (name.size() > 1 && name[0] == '-') {
+    } else if (name.size() > 1 && name[0] == '-') {  // a lone "-" is INPUT: standard input
       throw UsageError("unknown option '" + name + "'");
     } else {
       if (!out.input.empty()) throw UsageError("more than one INPUT ('" + out.input + "' and '" + name + "')");
@@ -174,6 +189,10 @@ CliArgs parseArgs(const std::vector<std::string>& args) {
     }
   }
   if (out.input.empty() && !out.help && !out.version) throw UsageError("missing INPUT");
+  if (out.outputBase == "-" && out.format == OutputFormat::Triangle) {
+    throw UsageError("-o - writes one file to standard output, but --format triangle writes three (BASE.node, "
+                     "BASE.ele, BASE.poly); choose --format json, svg, msh, vtu or geojson, or give -o BASE");
+  }
   return out;
 }
 

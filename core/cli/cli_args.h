@@ -11,7 +11,7 @@
 
 namespace ruppert::cli {
 
-enum class OutputFormat { Triangle, Json, Svg };
+enum class OutputFormat { Triangle, Json, Svg, Msh, Vtu, GeoJson };
 
 struct CliArgs {
   Options options;
@@ -19,6 +19,9 @@ struct CliArgs {
   std::string outputBase;  // -o BASE; empty: print the summary only
   std::string tracePath;   // --trace FILE; empty: no trace
   OutputFormat format = OutputFormat::Triangle;
+  // --input-format poly|node|json|geojson; empty: by INPUT's extension, or for "-" (standard input)
+  // sniffed from the text. outputBase "-" writes the one output file to standard output.
+  std::string inputFormat;
   bool quiet = false;
   bool stats = false;
   bool help = false;

@@ -12,7 +12,11 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>  // isatty: the progress line is for terminals only
+
 #include "cli_args.h"
+#include "cli_input.h"
+#include "cli_progress.h"
 #include "cli_report.h"
 #include "ruppert/ruppert.h"
 
@@ -45,6 +49,19 @@ void writeFile(const std::string& path, const std::function<void(std::ostream&)>
   if (!file) throw WriteFailure{"writing '" + path + "' failed"};
 }
 
+// The one file of a single-file format: BASE + ext, or standard output for -o -.
+void writeSingle(const std::string& base, const char* ext, const std::function<void(std::ostream&)>& write) {
+  if (base != "-") return writeFile(base + ext, write);
+  try {
+    write(std::cout);
+  } catch (const ruppert::Error& e) {
+    if (e.code() != ruppert::ErrorCode::IoError) throw;
+    throw WriteFailure{std::string("writing to standard output failed: ") + e.what()};
+  }
+  std::cout.flush();
+  if (!std::cout) throw WriteFailure{"writing to standard output failed"};
+}
+
 void writeOutputs(const ruppert::cli::CliArgs& args, const ruppert::Mesh& mesh, const ruppert::Plc& plc) {
   using ruppert::cli::OutputFormat;
   const std::string& base = args.outputBase;
@@ -56,10 +73,19 @@ void writeOutputs(const ruppert::cli::CliArgs& args, const ruppert::Mesh& mesh, 
         writeFile(base + ".poly", [&](std::ostream& out) { ruppert::writePoly(out, mesh, plc); });
         break;
       case OutputFormat::Json:
-        writeFile(base + ".json", [&](std::ostream& out) { ruppert::writeJson(out, mesh, plc); });
+        writeSingle(base, ".json", [&](std::ostream& out) { ruppert::writeJson(out, mesh, plc); });
         break;
       case OutputFormat::Svg:
-        writeFile(base + ".svg", [&](std::ostream& out) { ruppert::writeSvg(out, mesh); });
+        writeSingle(base, ".svg", [&](std::ostream& out) { ruppert::writeSvg(out, mesh); });
+        break;
+      case OutputFormat::Msh:
+        writeSingle(base, ".msh", [&](std::ostream& out) { ruppert::writeMsh(out, mesh, plc); });
+        break;
+      case OutputFormat::Vtu:
+        writeSingle(base, ".vtu", [&](std::ostream& out) { ruppert::writeVtu(out, mesh); });
+        break;
+      case OutputFormat::GeoJson:
+        writeSingle(base, ".geojson", [&](std::ostream& out) { ruppert::writeGeoJson(out, mesh); });
         break;
     }
   }
@@ -92,8 +118,13 @@ int run(int argc, char** argv) {
   ruppert::Plc plc;
   ruppert::Mesh mesh;
   try {
-    plc = ruppert::readFile(args.input);
+    plc = ruppert::cli::readInput(args.input, args.inputFormat);
+    // A progress line for runs over a second, on a terminal only (see cli_progress.h).
+    ruppert::cli::ProgressLine progress(!args.quiet && isatty(STDERR_FILENO));
+    args.options.onProgress = [&progress](const ruppert::Progress& p) { return progress.update(p); };
     mesh = ruppert::triangulate(plc, args.options);
+    progress.finish();
+    args.options.onProgress = nullptr;  // it refers to `progress`, which ends here
   } catch (const ruppert::Error& e) {
     std::cerr << "error: " << e.what() << '\n';
     if (e.code() == ruppert::ErrorCode::InvalidOption) {
@@ -112,9 +143,11 @@ int run(int argc, char** argv) {
     std::cerr << "error: " << f.message << '\n';
     return kExitWriteFailed;
   }
-  if (!args.quiet) std::cout << ruppert::cli::summaryText(mesh);
-  if (args.stats) std::cout << ruppert::cli::statsText(mesh.stats);
-  std::cout.flush();
+  // With -o - standard output holds the mesh, so the reports go to standard error.
+  std::ostream& report = args.outputBase == "-" ? std::cerr : std::cout;
+  if (!args.quiet) report << ruppert::cli::summaryText(mesh);
+  if (args.stats) report << ruppert::cli::statsText(mesh.stats);
+  report.flush();
   return kExitOk;
 }
 

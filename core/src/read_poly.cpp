@@ -410,13 +410,14 @@ Plc readFile(const std::string& path) {
     if (!file) throw Error(ErrorCode::IoError, path + ": cannot open for reading");
     return readJson(file, path);
   }
+  if (ext == ".geojson") return parseGeoJson(readWholeFile(path), path);
   if (ext == ".poly") {
     // Same base name; keep the case of the extension the user wrote ("A.POLY" -> "A.NODE").
     const std::string written = path.substr(path.size() - ext.size());
     const std::string nodePath = path.substr(0, path.size() - ext.size()) + (written == ext ? ".node" : ".NODE");
     return polyFromText(readWholeFile(path), path, [&nodePath]() { return nodeFromText(readWholeFile(nodePath), nodePath); });
   }
-  throw Error(ErrorCode::IoError, path + ": unknown extension; expected .poly, .node or .json");
+  throw Error(ErrorCode::IoError, path + ": unknown extension; expected .poly, .node, .json or .geojson");
 }
 
 }  // namespace ruppert

@@ -131,6 +131,45 @@ test('exports .poly, .json, .svg and .png downloads of the mesh', async () => {
   assert.ok((await readStats(page)).vertices >= stats.vertices);
 });
 
+test('exports .node, .ele, .msh, .vtu and .geojson downloads whose headers match the mesh', async () => {
+  await page.setInputFiles('#file-input', { name: 'pentagon-with-hole.poly', mimeType: 'text/plain', buffer: Buffer.from(PENTAGON) });
+  assert.equal(await settle(page), 'done');
+  const { vertices, triangles } = await readStats(page);
+  const firstLine = (file) => file.bytes.toString('utf8').split('\n')[0].trim().split(/\s+/).map(Number);
+
+  const node = await exportFile('#export-node');
+  assert.equal(node.name, 'ruppert-mesh.node');
+  const [n, dimension] = firstLine(node);
+  assert.ok(n >= vertices && dimension === 2, `.node header ${firstLine(node)} for ${vertices} vertices`);
+  const ele = await exportFile('#export-ele');
+  assert.equal(ele.name, 'ruppert-mesh.ele');
+  assert.deepEqual(firstLine(ele).slice(0, 2), [triangles, 3]);
+
+  const msh = await exportFile('#export-msh');
+  assert.equal(msh.name, 'ruppert-mesh.msh');
+  const mshText = msh.bytes.toString('utf8');
+  assert.ok(mshText.startsWith('$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n'), mshText.slice(0, 80));
+  const elements = Number(mshText.split('$Elements\n')[1].split(/\s+/)[1]);
+  assert.ok(elements > triangles, `${elements} elements: ${triangles} triangles and the boundary lines`);
+
+  const vtu = (await exportFile('#export-vtu')).bytes.toString('utf8');
+  assert.ok(vtu.startsWith('<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid"'), vtu.slice(0, 80));
+  assert.match(vtu, new RegExp(`NumberOfCells="${triangles}"`));
+
+  const geojson = await exportFile('#export-geojson');
+  assert.equal(geojson.name, 'ruppert-mesh.geojson');
+  const collection = JSON.parse(geojson.bytes.toString('utf8'));
+  assert.equal(collection.type, 'FeatureCollection');
+  assert.equal(collection.features.length, triangles);
+
+  // The exported GeoJSON opens again: the triangles as polygons, the pentagon's hole left empty.
+  await page.setInputFiles('#file-input', { name: 'again.geojson', mimeType: 'application/geo+json', buffer: geojson.bytes });
+  assert.equal(await settle(page), 'done');
+  const drawing = await page.evaluate(async () => (await import('./url-state.js')).decodeDrawing(location.hash));
+  assert.equal(drawing.holes.length, 2, 'one hole seed, computed by parseGeoJson');
+  assert.deepEqual(errors, []);
+});
+
 test('the URL reproduces the drawing and its parameters', async () => {
   await page.selectOption('#preset', 'skyline');
   await page.fill('#min-angle', '25');

@@ -30,10 +30,12 @@ test('the two-line example from the README meshes a square to the requested qual
   assert.deepEqual(validateMesh(mesh, { input: square, minAngle: 30, maxArea: 0.01 }), []);
 });
 
-test('the shipped .wasm is at most 150 KB gzipped', () => {
+// 150 KB until issue 16: its GeoJSON reader (JSON tree, rings, hole seeds) added 9 KB gzipped and the
+// .msh/.vtu/.geojson writers 4 KB (measured by leaving each out of wasm/bindings.cpp): 161,815 bytes.
+test('the shipped .wasm is at most 165 KB gzipped', () => {
   const wasm = readFileSync(new URL('./node_modules/ruppert/wasm/dist/ruppert.wasm', import.meta.url));
   const gzipped = gzipSync(wasm, { level: 9 }).length;
-  assert.ok(gzipped <= 150000, `${gzipped} bytes gzipped`);
+  assert.ok(gzipped <= 165000, `${gzipped} bytes gzipped`);
 });
 
 test('init() loads once and returns the same mesher', async () => {

@@ -1,13 +1,13 @@
 // The hostile-input catalogue (tests/hostile/, expectations in its expectations.txt) through the
-// installed package: each file is read as text by parsePoly / parseNode / parseJson and meshed as the
-// plain CDT and at 30 and 40 degrees (Steiner budget 20,000, as tests/core/test_hostile.cpp does).
+// installed package: each file is read as text by parsePoly / parseNode / parseJson / parseGeoJson
+// and meshed as the plain CDT and at 30 and 40 degrees (Steiner budget 20,000, as tests/core/test_hostile.cpp does).
 // A "valid" file must give meshes the independent JavaScript validator accepts in every mode; any
 // other expectation is the MeshError code the package must throw, with a message that says what.
 import assert from 'node:assert/strict';
 import { existsSync, readFileSync } from 'node:fs';
 import { extname, join } from 'node:path';
 import { test } from 'node:test';
-import { init, MeshError, parseJson, parseNode, parsePoly } from 'ruppert';
+import { init, MeshError, parseGeoJson, parseJson, parseNode, parsePoly } from 'ruppert';
 import { problemsOf } from './judge-mesh.mjs';
 import { validateMesh } from './validate-mesh.mjs';
 
@@ -23,7 +23,7 @@ function readExpectations() {
   return entries;
 }
 
-const parsers = { '.poly': parsePoly, '.node': parseNode, '.json': parseJson };
+const parsers = { '.poly': parsePoly, '.node': parseNode, '.json': parseJson, '.geojson': parseGeoJson };
 const modes = [
   { name: 'plain CDT', options: { minAngle: 0 } },
   { name: 'min angle 30', options: { minAngle: 30, maxSteiner: 20000 } },

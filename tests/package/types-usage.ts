@@ -3,6 +3,7 @@
 import {
   init, createMeshWorker, MeshError, ERROR_CODES, VertexKind, EventKind, NO_NEIGHBOR,
   parsePoly, toPoly, toSVG,
+  parseGeoJson, toMsh, toVtu, toGeoJson,
   type Mesh, type Mesher, type Plc, type TriangulateOptions, type ErrorCode, type Progress,
 } from 'ruppert';
 
@@ -29,6 +30,12 @@ async function example(): Promise<number> {
   const splits = mesh.events ? mesh.events.kind.filter((k) => k === EventKind.SEGMENT_SPLIT).length : 0;
   const text: string = toPoly(mesh, plc) + toSVG(mesh) + mesher.toNode(mesh) + mesher.toEle(mesh);
   const parsed = parsePoly(text);
+  // Formats solvers, viewers and GIS read (issue 16).
+  const solverText: string = toMsh(mesh, plc) + toVtu(mesh) + toGeoJson(mesh) + mesher.toMsh(mesh) + mesher.toVtu(mesh);
+  const fromGis: Plc = parseGeoJson(mesher.toGeoJson(mesh), 'mesh.geojson');
+  const gisPoints: Float64Array = mesher.parseGeoJson(solverText.length > 0 ? toGeoJson(mesh) : '').points;
+  void fromGis.points;
+  void gisPoints.length;
   const split = parsePoly('0 2 0 0\n1 0\n0 0 1\n0\n', { name: 'a.poly', node: '2 2 0 0\n0 0 0\n1 1 1\n', nodeName: 'a.node' });
   void split.segments;
   const firstX: number = parsed.points[0];

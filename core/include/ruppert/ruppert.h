@@ -281,7 +281,7 @@ Plc readNode(std::istream& in, const std::string& name = "<node>");
 // JSON: { "points": [x0,y0,...], "segments": [a0,b0,...], "holes": [x,y,...],
 //         "regions": [{"x":..,"y":..,"attribute":..,"maxArea":..}] }
 Plc readJson(std::istream& in, const std::string& name = "<json>");
-// By extension: .poly, .node or .json. Throws IoError if unreadable.
+// By extension: .poly, .node, .json or .geojson. Throws IoError if unreadable.
 Plc readFile(const std::string& path);
 // The same readers over text already in memory (`name` appears in error messages).
 Plc parsePoly(const std::string& text, const std::string& name = "<poly>");
@@ -305,5 +305,28 @@ std::string toEle(const Mesh& mesh);
 std::string toPoly(const Mesh& mesh, const Plc& input);
 std::string toJson(const Mesh& mesh, const Plc& input);
 std::string toSvg(const Mesh& mesh);
+
+// ---------------------------------------------------------------------------------------------
+// Formats solvers, viewers and GIS read (write_msh.cpp, write_vtu.cpp, write_geojson.cpp,
+// read_geojson.cpp say exactly what is written)
+// ---------------------------------------------------------------------------------------------
+// Gmsh MSH 4.1 ASCII: nodes (tag = index + 1), triangles (type 2) and subsegments (type 1, lines);
+// one physical group per region attribute (triangles) and per segment marker (lines). A marker or
+// attribute that is a whole number >= 1 is its own physical tag; others get the tags after the largest.
+void writeMsh(std::ostream& out, const Mesh& mesh, const Plc& input);
+std::string toMsh(const Mesh& mesh, const Plc& input);
+// VTK XML UnstructuredGrid (.vtu), ASCII: points (z = 0), triangles; point data "pointMarker" (when
+// the mesh has them) and "vertexKind"; cell data "regionAttribute" and "minAngle" (degrees).
+void writeVtu(std::ostream& out, const Mesh& mesh);
+std::string toVtu(const Mesh& mesh);
+// GeoJSON FeatureCollection: one Polygon Feature per triangle with properties "triangle",
+// "vertices", "regionAttribute" and "minAngle".
+void writeGeoJson(std::ostream& out, const Mesh& mesh);
+std::string toGeoJson(const Mesh& mesh);
+// GeoJSON in: Polygon, MultiPolygon, Feature, FeatureCollection, GeometryCollection. Rings become
+// closed chains of segments; equal positions are one point; inner rings get hole seeds (none needed
+// from the caller). Errors name the path (features[3].geometry.coordinates[1]) and line:column.
+Plc parseGeoJson(const std::string& text, const std::string& name = "<geojson>");
+Plc readGeoJson(std::istream& in, const std::string& name = "<geojson>");
 
 }  // namespace ruppert
