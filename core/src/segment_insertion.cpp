@@ -396,8 +396,13 @@ class SegmentInserter {
 }  // namespace
 
 void insertHull(MeshState& m) {
-  // Andrew's monotone chain on the distinct points with exact orientation; collinear points on the
-  // hull are skipped here and picked up by segment insertion (they split the hull edge).
+  // Andrew's monotone chain with exact orientation on the distinct points and the crossings that
+  // segment insertion added: a crossing is rounded, so it can lie a hair outside the input points'
+  // hull, and a hull edge would then cross the constrained pieces that end there; each repair of
+  // such a crossing rounds a new one outside again, and the repairs looped (issue 19's careless
+  // sweep, seed 29317: crossings within 1e-19 of each other). Around every vertex, no hull edge
+  // crosses a constrained edge in exact arithmetic. Collinear points on the hull are skipped here
+  // and picked up by segment insertion (they split the hull edge).
   struct P {
     double x, y;
     std::uint32_t v;
@@ -405,7 +410,8 @@ void insertHull(MeshState& m) {
   std::vector<P> sorted;
   sorted.reserve(m.inputCount);
   const Triangulation& t = m.tri;
-  for (std::uint32_t v = 0; v < m.inputCount; ++v) sorted.push_back({t.xy[2 * v], t.xy[2 * v + 1], v});
+  for (std::uint32_t v = 0; v < t.vertexCount(); ++v)
+    if (v < m.inputCount || m.kind[v] == VertexKind::Intersection) sorted.push_back({t.xy[2 * v], t.xy[2 * v + 1], v});
   std::sort(sorted.begin(), sorted.end(), [](const P& a, const P& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
   std::vector<std::uint32_t> pts(sorted.size());
   for (std::size_t k = 0; k < sorted.size(); ++k) pts[k] = sorted[k].v;
