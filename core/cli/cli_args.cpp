@@ -38,6 +38,8 @@ std::string helpText() {
          "\n\n"
          "Quality triangle mesh of a planar straight-line graph by Delaunay refinement (Ruppert).\n"
          "INPUT is a Triangle .poly or .node file, or a .json file {\"points\": [...], \"segments\": [...], ...}.\n"
+         "INPUT BASE.ele refines that mesh (with BASE.node, and BASE.poly and BASE.area when present:\n"
+         "a maximum area per triangle, -1 for none, kept by every new triangle within an old one).\n"
          "\n"
          "  --min-angle DEG      smallest angle to reach, 0..60 (default 30); above 34, where out of\n"
          "                       reach: the best mesh reached (at least 33 degrees), marked incomplete\n"

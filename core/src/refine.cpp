@@ -29,6 +29,7 @@
 
 #include "bad_triangle_queue.h"
 #include "bound_push.h"
+#include "old_mesh.h"
 #include "optimal_placement.h"
 #include "placement.h"
 #include "predicates.h"
@@ -42,7 +43,8 @@ bool refinementRequested(const MeshState& m) {
   const Options& o = *m.options;
   bool regionArea = false;
   for (const Region& r : m.input.regions) regionArea = regionArea || r.maxArea > 0;
-  return o.minAngle > 0 || o.maxArea > 0 || regionArea || static_cast<bool>(o.sizeFunction);
+  const bool oldMeshArea = m.oldMesh != nullptr && m.oldMesh->hasBounds();
+  return o.minAngle > 0 || o.maxArea > 0 || regionArea || oldMeshArea || static_cast<bool>(o.sizeFunction);
 }
 
 namespace {
@@ -305,6 +307,10 @@ class Refiner {
         const double internal = m_.input.areaToInternal(user);
         bound = bound > 0 ? std::min(bound, internal) : internal;
       }
+    }
+    if (m_.oldMesh != nullptr) {
+      const double old = m_.oldMesh->boundFor(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
+      if (old > 0) bound = bound > 0 ? std::min(bound, old) : old;
     }
     return bound;
   }

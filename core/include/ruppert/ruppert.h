@@ -83,6 +83,17 @@ struct Plc {
   std::vector<std::int32_t> pointMarkers;    // one per point, or empty
   std::vector<std::int32_t> segmentMarkers;  // one per segment, or empty
   int indexBase = 0;  // 0 or 1: the index base the file used; writers print indices in this base
+  // Refining a mesh (Triangle's -r, with -a and a .area file): when `triangles` is not empty, the
+  // domain is the union of these triangles (3 point indices each, either orientation, none of zero
+  // area), and segments are the given ones plus every boundary edge of this mesh (an edge of one
+  // triangle only) that is not among them, numbered after them (Mesh::segmentIds); holes and regions
+  // apply as usual. The mesh is refined under the usual options. triangleMaxArea: empty, or one
+  // maximum area per triangle (<= 0 or +inf: none). The rule: a new triangle's bound is the smallest
+  // bound among the old triangles whose interiors meet its interior (exact tests), so every triangle
+  // of the result lying within an old triangle meets that triangle's bound (its area computed in
+  // doubles; refinement aims a relative 1e-9 below the bound against rounding) when complete.
+  std::vector<std::uint32_t> triangles;
+  std::vector<double> triangleMaxArea;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -299,6 +310,19 @@ void writeEle(std::ostream& out, const Mesh& mesh);
 void writePoly(std::ostream& out, const Mesh& mesh, const Plc& input);  // subsegments + input holes/regions
 void writeJson(std::ostream& out, const Mesh& mesh, const Plc& input);  // input JSON shape + "triangles" etc.
 void writeSvg(std::ostream& out, const Mesh& mesh);
+
+// Refining a mesh: Triangle's .ele (3 or more nodes per triangle: the first three are the corners;
+// attributes are read and ignored) with the .node that holds its points and, when given, the .poly
+// for segments, holes and regions (declaring 0 points, or the same points as the .node) and the .area
+// (<#triangles>, then <triangle #> <maximum area>, -1 or <= 0: none). Errors name file, line, value.
+struct MeshFiles {
+  std::string ele, node, poly, area;  // texts; poly and area are used when hasPoly / hasArea
+  bool hasPoly = false, hasArea = false;
+  std::string eleName = "<ele>", nodeName = "<node>", polyName = "<poly>", areaName = "<area>";
+};
+Plc parseMeshFiles(const MeshFiles& files);
+// BASE.ele with BASE.node, and BASE.poly and BASE.area when they exist (readFile does this for .ele).
+Plc readEleFiles(const std::string& elePath);
 // The same texts as strings.
 std::string toNode(const Mesh& mesh);
 std::string toEle(const Mesh& mesh);
