@@ -30,7 +30,7 @@ const char* usageLine() {
   return "usage: ruppert [--min-angle DEG] [--max-area A] [--max-steiner N] [-o BASE] "
          "[--format triangle|json|svg] [--quiet] [--stats] [--trace FILE] "
          "[--placement offcenter|circumcenter|petal|optimal] [--encroachment lens|disk] [--variant cdt|box] [--convex-hull] [--auto-holes] "
-         "[--help] [--version] INPUT";
+         "[--order 1|2] [--voronoi] [--help] [--version] INPUT";
 }
 
 std::string helpText() {
@@ -58,6 +58,9 @@ std::string helpText() {
          "                       (Ruppert's original: conforming mesh of an enclosing box)\n"
          "  --convex-hull        mesh the whole convex hull, not only what segments enclose\n"
          "  --auto-holes         without hole seeds: regions at even nesting depth become holes\n"
+         "  --order 2            quadratic triangles: .ele gets 6 nodes per triangle (corners, then the\n"
+         "                       midpoints of the edges opposite them), .node the midpoints after the corners\n"
+         "  --voronoi            also write the dual: BASE.v.node (circumcentres) and BASE.v.edge\n"
          "  --stats              print statistics (vertex kinds, angle histogram, size optimality)\n"
          "  --trace FILE         write every insertion as JSON lines to FILE\n"
          "  --quiet              no summary and no warnings (errors and --stats still print)\n"
@@ -163,6 +166,12 @@ CliArgs parseArgs(const std::vector<std::string>& args) {
       out.options.convexHull = flag();
     } else if (name == "--auto-holes") {
       out.options.autoHoles = flag();
+    } else if (name == "--order") {
+      const std::string v = value();
+      if (v != "1" && v != "2") throw UsageError("--order: '" + v + "' is not 1 or 2");
+      out.order = v == "2" ? 2 : 1;
+    } else if (name == "--voronoi") {
+      out.voronoi = flag();
     } else if (name == "--help" || name == "-h") {
       out.help = flag();
     } else if (name == "--version") {
@@ -176,6 +185,7 @@ CliArgs parseArgs(const std::vector<std::string>& args) {
     }
   }
   if (out.input.empty() && !out.help && !out.version) throw UsageError("missing INPUT");
+  if (out.order == 2 && out.format != OutputFormat::Triangle) throw UsageError("--order 2 writes Triangle's .node and .ele: use --format triangle");
   return out;
 }
 

@@ -277,6 +277,8 @@ struct Mesh {
   std::vector<Notice> notices;            // repairs made to the input
   Stats stats;
   std::vector<Event> events;              // only with Options::trace
+  // Quadratic elements (addQuadraticNodes): 6 per triangle, empty otherwise.
+  std::vector<std::uint32_t> triangles6;
 };
 
 // Mesh a PLC. Throws ruppert::Error on input that cannot be repaired.
@@ -310,6 +312,41 @@ void writeEle(std::ostream& out, const Mesh& mesh);
 void writePoly(std::ostream& out, const Mesh& mesh, const Plc& input);  // subsegments + input holes/regions
 void writeJson(std::ostream& out, const Mesh& mesh, const Plc& input);  // input JSON shape + "triangles" etc.
 void writeSvg(std::ostream& out, const Mesh& mesh);
+
+// ---------------------------------------------------------------------------------------------
+// Derived outputs: quadratic elements and the Voronoi diagram (Triangle's -o2 and -v)
+// ---------------------------------------------------------------------------------------------
+// Quadratic (6-node) triangles: appends one node per mesh edge, at its midpoint (a/2 + b/2 in
+// doubles: the correctly rounded midpoint), to mesh.points after the corner vertices, numbered in
+// the order the edges first appear in mesh.triangles (triangle by triangle, edges 0, 1, 2), one node
+// shared by the two triangles of an interior edge: V + E nodes in all. Fills mesh.triangles6: per
+// triangle its three corners (counter-clockwise, as in triangles), then the midpoints of the edges
+// opposite corners 0, 1 and 2 (Triangle's -o2 order). pointMarkers gets one marker per new node: 1
+// on a subsegment or boundary edge, 0 inside (first filled for the corners by Triangle's convention,
+// 1 on subsegments, when empty). vertexKinds, neighbors and stats stay about the corners. writeEle
+// writes 6-node triangles when triangles6 is filled. Call it once.
+void addQuadraticNodes(Mesh& mesh);
+
+// The dual of the mesh: one vertex per triangle (its circumcentre, which in a constrained mesh may
+// lie outside its triangle and even outside the domain) and one edge per mesh edge, the edges in
+// the order they first appear in mesh.triangles (triangle by triangle, edges 0, 1, 2). An interior
+// edge's dual joins the circumcentres of its two triangles; a boundary edge's dual is a ray from its
+// triangle's circumcentre along the edge's outward normal (edge b - a rotated clockwise: its length
+// is the edge's). It is the Voronoi diagram of the vertices only where the mesh is Delaunay (not
+// merely constrained Delaunay).
+struct Voronoi {
+  std::vector<double> points;          // 2 per triangle: circumcentre x, y
+  std::vector<std::int32_t> edges;     // 2 per mesh edge: Voronoi vertex indices; the second is -1 for a ray
+  std::vector<double> rayDirections;   // 2 per mesh edge: the ray's direction, 0 0 for a finite edge
+  std::vector<std::uint32_t> meshEdges;  // 2 per mesh edge: the mesh edge each dual edge crosses
+};
+Voronoi voronoiDiagram(const Mesh& mesh);
+// Triangle's .v.node (the circumcentres, no attributes or markers) and .v.edge (rays as
+// "<edge #> <vertex> -1 <dx> <dy>"), indices in mesh.indexBase.
+void writeVoronoiNode(std::ostream& out, const Voronoi& voronoi, const Mesh& mesh);
+void writeVoronoiEdge(std::ostream& out, const Voronoi& voronoi, const Mesh& mesh);
+std::string toVoronoiNode(const Voronoi& voronoi, const Mesh& mesh);
+std::string toVoronoiEdge(const Voronoi& voronoi, const Mesh& mesh);
 
 // Refining a mesh: Triangle's .ele (3 or more nodes per triangle: the first three are the corners;
 // attributes are read and ignored) with the .node that holds its points and, when given, the .poly
