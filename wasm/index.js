@@ -88,3 +88,9 @@ export const toEle = (mesh) => loaded('toEle').toEle(mesh);
 export const toJson = (mesh, input) => loaded('toJson').toJson(mesh, input);
 /** SVG text drawing a mesh. */
 export const toSVG = (mesh) => loaded('toSVG').toSVG(mesh);
+/** Issue 16: Triangle's .ele text with { node, poly?, area? } texts: a PLC with triangles to refine. */
+export const parseEle = (text, options) => loaded('parseEle').parseEle(text, options);
+/** Issue 16: Triangle's .v.node text of mesh.voronoi. */
+export const toVoronoiNode = (mesh) => loaded('toVoronoiNode').toVoronoiNode(mesh);
+/** Issue 16: Triangle's .v.edge text of mesh.voronoi. */
+export const toVoronoiEdge = (mesh) => loaded('toVoronoiEdge').toVoronoiEdge(mesh);

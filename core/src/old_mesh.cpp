@@ -5,6 +5,7 @@
 #include <string>
 
 #include "mesh_state.h"
+#include "message.h"
 #include "predicates.h"
 
 namespace ruppert::detail {
@@ -20,21 +21,19 @@ std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
 void checkTriangleArrays(const Plc& plc) {
   const std::size_t n = plc.points.size() / 2;
   if (plc.triangles.size() % 3 != 0)
-    fail(ErrorCode::MalformedInput, "triangles has length " + std::to_string(plc.triangles.size()) +
-                                        ": a triangle is three point indices");
+    fail(ErrorCode::MalformedInput, message({"triangles has length ", std::to_string(plc.triangles.size()), ": a triangle is three point indices"}));
   for (std::size_t k = 0; k < plc.triangles.size(); ++k)
     if (plc.triangles[k] >= n)
-      fail(ErrorCode::IndexOutOfRange, "triangles[" + std::to_string(k) + "] = " + std::to_string(plc.triangles[k]) +
-                                           " (corner " + std::to_string(k % 3) + " of triangle " + std::to_string(k / 3) +
-                                           ") refers to point " + std::to_string(plc.triangles[k]) + ", but there are only " +
-                                           std::to_string(n));
+      fail(ErrorCode::IndexOutOfRange, message({"triangles[", std::to_string(k), "] = ", std::to_string(plc.triangles[k]), " (corner ",
+                                                std::to_string(k % 3), " of triangle ", std::to_string(k / 3), ") refers to point ",
+                                                std::to_string(plc.triangles[k]), ", but there are only ", std::to_string(n)}));
   const std::size_t count = plc.triangles.size() / 3;
   if (!plc.triangleMaxArea.empty() && plc.triangleMaxArea.size() != count)
-    fail(ErrorCode::MalformedInput, "triangleMaxArea has " + std::to_string(plc.triangleMaxArea.size()) +
-                                        " entries for " + std::to_string(count) + " triangles (one per triangle, or none)");
+    fail(ErrorCode::MalformedInput, message({"triangleMaxArea has ", std::to_string(plc.triangleMaxArea.size()), " entries for ",
+                                             std::to_string(count), " triangles (one per triangle, or none)"}));
   for (std::size_t t = 0; t < plc.triangleMaxArea.size(); ++t)
     if (std::isnan(plc.triangleMaxArea[t]))
-      fail(ErrorCode::MalformedInput, "triangleMaxArea[" + std::to_string(t) + "] is NaN (<= 0: no bound)");
+      fail(ErrorCode::MalformedInput, message({"triangleMaxArea[", std::to_string(t), "] is NaN (<= 0: no bound)"}));
 }
 
 // Whether every vertex of q lies in the closed half-plane right of a -> b: then the line ab separates
@@ -99,9 +98,9 @@ OldMesh::OldMesh(const Plc& plc, const PreparedInput& input) {
     double* c = &xy_[6 * t];
     const double turn = orient2d(c, c + 2, c + 4);
     if (turn == 0)
-      fail(ErrorCode::DegenerateInput, "triangles[" + std::to_string(t) + "] = (" + std::to_string(plc.triangles[3 * t]) +
-                                           ", " + std::to_string(plc.triangles[3 * t + 1]) + ", " +
-                                           std::to_string(plc.triangles[3 * t + 2]) + ") has zero area");
+      fail(ErrorCode::DegenerateInput, message({"triangles[", std::to_string(t), "] = (", std::to_string(plc.triangles[3 * t]), ", ",
+                                                std::to_string(plc.triangles[3 * t + 1]), ", ", std::to_string(plc.triangles[3 * t + 2]),
+                                                ") has zero area"}));
     if (turn < 0) std::swap_ranges(c + 2, c + 4, c + 4);  // clockwise: turn it over
     all.push_back(static_cast<std::uint32_t>(t));
     const double user = plc.triangleMaxArea.empty() ? 0 : plc.triangleMaxArea[t];

@@ -16,10 +16,14 @@
 #include <string_view>
 #include <vector>
 
+#include "message.h"
 #include "ruppert/ruppert.h"
 
 namespace ruppert {
 namespace {
+
+using detail::message;
+using std::to_string;
 
 class Records {
  public:
@@ -45,16 +49,16 @@ class Records {
     return !fields.empty();
   }
 
-  [[noreturn]] void fail(const std::string& message, ErrorCode code = ErrorCode::ParseError) const {
-    throw Error(code, name_ + ":" + std::to_string(line_) + ": " + message);
+  [[noreturn]] void fail(const std::string& text, ErrorCode code = ErrorCode::ParseError) const {
+    throw Error(code, detail::message({name_, ":", to_string(line_), ": ", text}));
   }
 
   void require(std::vector<std::string_view>& fields, const std::string& what) {
-    if (!next(fields)) fail("expected " + what + ", found end of file");
+    if (!next(fields)) fail(message({"expected ", what, ", found end of file"}));
   }
 
   void end(std::vector<std::string_view>& fields, const std::string& after) {
-    if (next(fields)) fail("unexpected '" + std::string(fields[0]) + "' after the " + after);
+    if (next(fields)) fail(message({"unexpected '", fields[0], "' after the ", after}));
   }
 
   long long integer(std::string_view field, const std::string& what) const {
@@ -62,7 +66,7 @@ class Records {
     char* stop = nullptr;
     errno = 0;
     const long long v = std::strtoll(s.c_str(), &stop, 10);
-    if (s.empty() || stop != s.c_str() + s.size() || errno == ERANGE) fail(what + " '" + s + "' is not an integer");
+    if (s.empty() || stop != s.c_str() + s.size() || errno == ERANGE) fail(message({what, " '", s, "' is not an integer"}));
     return v;
   }
 
@@ -70,16 +74,16 @@ class Records {
     const std::string s(field);
     char* stop = nullptr;
     const double v = std::strtod(s.c_str(), &stop);
-    if (s.empty() || stop != s.c_str() + s.size() || std::isnan(v)) fail(what + " '" + s + "' is not a number");
+    if (s.empty() || stop != s.c_str() + s.size() || std::isnan(v)) fail(message({what, " '", s, "' is not a number"}));
     return v;
   }
 
   // A count no larger than the rest of the text could hold (two bytes a record at least).
   std::size_t count(std::string_view field, const std::string& what) const {
     const long long v = integer(field, what);
-    if (v < 0) fail(what + " '" + std::string(field) + "' is negative");
+    if (v < 0) fail(message({what, " '", field, "' is negative"}));
     if (static_cast<unsigned long long>(v) > text_.size() - std::min(pos_, text_.size()))
-      fail(what + " " + std::string(field) + " is more than the rest of the file could hold", ErrorCode::TooLarge);
+      fail(message({what, " ", field, " is more than the rest of the file could hold"}), ErrorCode::TooLarge);
     return static_cast<std::size_t>(v);
   }
 
@@ -97,25 +101,25 @@ std::vector<std::uint32_t> parseEle(const std::string& text, const std::string& 
   const std::size_t count = in.count(f[0], "triangle count");
   const std::size_t nodes = f.size() > 1 ? in.count(f[1], "nodes per triangle") : 3;
   const std::size_t attributes = f.size() > 2 ? in.count(f[2], "number of triangle attributes") : 0;
-  if (nodes < 3) in.fail("nodes per triangle must be 3 or more (3 or 6 as Triangle writes), found " + std::to_string(nodes));
+  if (nodes < 3) in.fail(message({"nodes per triangle must be 3 or more (3 or 6 as Triangle writes), found ", to_string(nodes)}));
   std::vector<std::uint32_t> triangles;
   triangles.reserve(3 * count);
   for (std::size_t t = 0; t < count; ++t) {
-    const std::string item = "triangle " + std::to_string(t + base);
-    in.require(f, item + " (" + std::to_string(count) + " declared)");
+    const std::string item = message({"triangle ", to_string(t + base)});
+    in.require(f, message({item, " (", to_string(count), " declared)"}));
     if (f.size() != 1 + nodes + attributes)
-      in.fail(item + ": expected " + std::to_string(1 + nodes + attributes) + " fields (number, " + std::to_string(nodes) +
-              " nodes, " + std::to_string(attributes) + " attributes), found " + std::to_string(f.size()));
-    in.integer(f[0], item + ": number");
+      in.fail(message({item, ": expected ", to_string(1 + nodes + attributes), " fields (number, ", to_string(nodes), " nodes, ",
+                       to_string(attributes), " attributes), found ", to_string(f.size())}));
+    in.integer(f[0], message({item, ": number"}));
     for (std::size_t i = 1; i <= 3; ++i) {
-      const long long v = in.integer(f[i], item + ": node");
+      const long long v = in.integer(f[i], message({item, ": node"}));
       if (v < base || v >= static_cast<long long>(points) + base)
-        in.fail(item + ": node " + std::to_string(v) + " is not a point of the .node file (" + std::to_string(points) +
-                    " points numbered from " + std::to_string(base) + ")",
+        in.fail(message({item, ": node ", to_string(v), " is not a point of the .node file (", to_string(points),
+                         " points numbered from ", to_string(base), ")"}),
                 ErrorCode::IndexOutOfRange);
       triangles.push_back(static_cast<std::uint32_t>(v - base));
     }
-    for (std::size_t i = 4; i < f.size(); ++i) in.real(f[i], item + ": field " + std::to_string(i + 1));
+    for (std::size_t i = 4; i < f.size(); ++i) in.real(f[i], message({item, ": field ", to_string(i + 1)}));
   }
   in.end(f, "triangles");
   return triangles;
@@ -127,11 +131,11 @@ std::vector<double> parseArea(const std::string& text, const std::string& name, 
   in.require(f, "the triangle count line");
   const std::size_t count = in.count(f[0], "triangle count");
   if (count != triangles)
-    in.fail("declares " + std::to_string(count) + " triangles, but the .ele has " + std::to_string(triangles));
+    in.fail(message({"declares ", to_string(count), " triangles, but the .ele has ", to_string(triangles)}));
   std::vector<double> areas(count);
   for (std::size_t t = 0; t < count; ++t) {
-    in.require(f, "the maximum area of triangle " + std::to_string(t + 1) + " of " + std::to_string(count));
-    if (f.size() != 2) in.fail("expected <triangle #> <maximum area>, found " + std::to_string(f.size()) + " fields");
+    in.require(f, message({"the maximum area of triangle ", to_string(t + 1), " of ", to_string(count)}));
+    if (f.size() != 2) in.fail(message({"expected <triangle #> <maximum area>, found ", to_string(f.size()), " fields"}));
     in.integer(f[0], "triangle number");
     areas[t] = in.real(f[1], "maximum area");
   }
@@ -157,9 +161,9 @@ Plc parseMeshFiles(const MeshFiles& files) {
     const std::size_t points = plc.points.size();
     Plc poly = parsePolyWithNode(files.poly, files.node, files.polyName, files.nodeName);
     if (poly.points.size() != points)
-      throw Error(ErrorCode::ParseError, files.polyName + ": declares " + std::to_string(poly.points.size() / 2) +
-                                             " points, but " + files.nodeName + " has " + std::to_string(points / 2) +
-                                             " (the .ele numbers the .node's points; declare 0 points in the .poly)");
+      throw Error(ErrorCode::ParseError, message({files.polyName, ": declares ", to_string(poly.points.size() / 2), " points, but ",
+                                                  files.nodeName, " has ", to_string(points / 2),
+                                                  " (the .ele numbers the .node's points; declare 0 points in the .poly)"}));
     poly.points = std::move(plc.points), poly.pointMarkers = std::move(plc.pointMarkers), poly.indexBase = plc.indexBase;
     plc = std::move(poly);
   }

@@ -5,19 +5,16 @@
 #include <cstdio>
 #include <ostream>
 #include <string>
-#include <unordered_map>
 
+#include "mesh_neighbors.h"
 #include "ruppert/ruppert.h"
 #include "text_out.h"
 
 namespace ruppert {
+
 namespace {
 
 using detail::TextOut;
-
-std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
-  return a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
-}
 
 std::string real(double v) {
   if (!std::isfinite(v)) throw Error(ErrorCode::Internal, "cannot write a non-finite Voronoi coordinate");
@@ -71,35 +68,26 @@ void printEdge(TextOut& out, const Voronoi& v, const Mesh& mesh) {
 }  // namespace
 
 Voronoi voronoiDiagram(const Mesh& mesh) {
+  detail::requireNeighbors(mesh);
   Voronoi v;
   const std::size_t n = mesh.triangles.size() / 3;
-  const std::size_t points = mesh.points.size() / 2;
   v.points.resize(2 * n);
-  for (std::size_t t = 0; t < n; ++t) {
-    for (int i = 0; i < 3; ++i)
-      if (mesh.triangles[3 * t + i] >= points)
-        throw Error(ErrorCode::IndexOutOfRange, "triangles[" + std::to_string(3 * t + i) + "] refers to a point that does not exist");
+  for (std::size_t t = 0; t < n; ++t)
     circumcentre(&mesh.points[2 * mesh.triangles[3 * t]], &mesh.points[2 * mesh.triangles[3 * t + 1]],
                  &mesh.points[2 * mesh.triangles[3 * t + 2]], &v.points[2 * t]);
-  }
-  // Each edge gets its dual's slot at its first appearance; the second triangle fills the far end.
-  std::unordered_map<std::uint64_t, std::size_t> slot;
-  slot.reserve(3 * n / 2 + 1);
+  // An edge's dual is made at its first appearance: in t, unless the neighbour across comes first.
   for (std::size_t t = 0; t < n; ++t)
     for (int i = 0; i < 3; ++i) {
+      const std::int32_t g = mesh.neighbors[3 * t + i];
+      if (g != kNoNeighbor && static_cast<std::size_t>(g) < t) continue;
       const std::uint32_t a = mesh.triangles[3 * t + (i + 1) % 3], b = mesh.triangles[3 * t + (i + 2) % 3];
-      const auto [it, added] = slot.try_emplace(edgeKey(a, b), v.edges.size() / 2);
-      if (added) {
-        v.edges.insert(v.edges.end(), {static_cast<std::int32_t>(t), -1});
-        v.meshEdges.insert(v.meshEdges.end(), {a, b});
-        // Outward normal of a -> b (the triangle, counter-clockwise, lies to its left), kept in
-        // case no second triangle comes.
-        v.rayDirections.insert(v.rayDirections.end(),
-                               {mesh.points[2 * b + 1] - mesh.points[2 * a + 1], mesh.points[2 * a] - mesh.points[2 * b]});
-      } else {
-        v.edges[2 * it->second + 1] = static_cast<std::int32_t>(t);
-        v.rayDirections[2 * it->second] = v.rayDirections[2 * it->second + 1] = 0;
-      }
+      v.edges.insert(v.edges.end(), {static_cast<std::int32_t>(t), g});
+      v.meshEdges.insert(v.meshEdges.end(), {a, b});
+      // A ray on the boundary: the outward normal of a -> b (the triangle, counter-clockwise, lies
+      // to its left).
+      const bool ray = g == kNoNeighbor;
+      v.rayDirections.insert(v.rayDirections.end(), {ray ? mesh.points[2 * b + 1] - mesh.points[2 * a + 1] : 0.0,
+                                                     ray ? mesh.points[2 * a] - mesh.points[2 * b] : 0.0});
     }
   return v;
 }

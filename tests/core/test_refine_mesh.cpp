@@ -121,6 +121,18 @@ TEST_CASE("refining a mesh: random per-triangle bounds are kept on generated inp
   }
 }
 
+TEST_CASE("refining a mesh: bounds are kept with optimal placement, which moves vertices", "[refine-mesh]") {
+  const auto gen = ruppert_test::randomStarPolygon(12, 30, 1);
+  ruppert::Options options;
+  options.minAngle = 36;
+  options.placement = ruppert::Placement::Optimal;
+  const Mesh old = ruppert::triangulate(gen.plc, {});
+  const Plc input = refinementInput(old, randomBounds(old, 12));
+  const Mesh mesh = ruppert::triangulate(input, options);
+  CHECK_VALID(mesh, validation(input, 0, 0, ruppert_test::meshArea(old)));
+  CHECK(checkBoundsKept(old, input.triangleMaxArea, mesh) > old.triangles.size() / 6);
+}
+
 TEST_CASE("refining a mesh: shared .poly inputs meshed, then refined with random per-triangle areas", "[refine-mesh]") {
   const std::string dir = ruppert_test::sharedDataDir();
   if (dir.empty()) {

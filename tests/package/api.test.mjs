@@ -30,10 +30,13 @@ test('the two-line example from the README meshes a square to the requested qual
   assert.deepEqual(validateMesh(mesh, { input: square, minAngle: 30, maxArea: 0.01 }), []);
 });
 
-test('the shipped .wasm is at most 150 KB gzipped', () => {
+// Issue 16 raised the budget from 150 KB: refining a mesh (the old-mesh grid and its readers),
+// quadratic nodes and the Voronoi dual took the module from 144,912 to 161,523 bytes gzipped
+// (node wasm/build-wasm.mjs on branch issue-16-derived).
+test('the shipped .wasm is at most 165 KB gzipped', () => {
   const wasm = readFileSync(new URL('./node_modules/ruppert/wasm/dist/ruppert.wasm', import.meta.url));
   const gzipped = gzipSync(wasm, { level: 9 }).length;
-  assert.ok(gzipped <= 150000, `${gzipped} bytes gzipped`);
+  assert.ok(gzipped <= 165000, `${gzipped} bytes gzipped`);
 });
 
 test('init() loads once and returns the same mesher', async () => {

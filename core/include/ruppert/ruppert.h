@@ -324,7 +324,8 @@ void writeSvg(std::ostream& out, const Mesh& mesh);
 // opposite corners 0, 1 and 2 (Triangle's -o2 order). pointMarkers gets one marker per new node: 1
 // on a subsegment or boundary edge, 0 inside (first filled for the corners by Triangle's convention,
 // 1 on subsegments, when empty). vertexKinds, neighbors and stats stay about the corners. writeEle
-// writes 6-node triangles when triangles6 is filled. Call it once.
+// writes 6-node triangles when triangles6 is filled. Call it once, on a mesh with its neighbors (as
+// triangulate() returns it: the shared nodes are found through them).
 void addQuadraticNodes(Mesh& mesh);
 
 // The dual of the mesh: one vertex per triangle (its circumcentre, which in a constrained mesh may
@@ -333,7 +334,7 @@ void addQuadraticNodes(Mesh& mesh);
 // edge's dual joins the circumcentres of its two triangles; a boundary edge's dual is a ray from its
 // triangle's circumcentre along the edge's outward normal (edge b - a rotated clockwise: its length
 // is the edge's). It is the Voronoi diagram of the vertices only where the mesh is Delaunay (not
-// merely constrained Delaunay).
+// merely constrained Delaunay). Needs mesh.neighbors, as triangulate() returns them.
 struct Voronoi {
   std::vector<double> points;          // 2 per triangle: circumcentre x, y
   std::vector<std::int32_t> edges;     // 2 per mesh edge: Voronoi vertex indices; the second is -1 for a ray
