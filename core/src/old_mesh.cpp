@@ -166,8 +166,9 @@ void OldMesh::forEachOverlapping(const Grid& grid, const double* p0, const doubl
   const double* q[3] = {p0, p1, p2};
   if (orient2d(p0, p1, p2) < 0) std::swap(q[1], q[2]);
   if (++query_ == 0) std::fill(seen_.begin(), seen_.end(), 0), query_ = 1;
-  const std::uint32_t c0 = grid.column(std::min({p0[0], p1[0], p2[0]})), c1 = grid.column(std::max({p0[0], p1[0], p2[0]}));
-  const std::uint32_t r0 = grid.row(std::min({p0[1], p1[1], p2[1]})), r1 = grid.row(std::max({p0[1], p1[1], p2[1]}));
+  const double minX = std::min({p0[0], p1[0], p2[0]}), maxX = std::max({p0[0], p1[0], p2[0]});
+  const double minY = std::min({p0[1], p1[1], p2[1]}), maxY = std::max({p0[1], p1[1], p2[1]});
+  const std::uint32_t c0 = grid.column(minX), c1 = grid.column(maxX), r0 = grid.row(minY), r1 = grid.row(maxY);
   for (std::uint32_t r = r0; r <= r1; ++r)
     for (std::uint32_t c = c0; c <= c1; ++c) {
       const std::size_t k = std::size_t(r) * grid.nx + c;
@@ -176,6 +177,11 @@ void OldMesh::forEachOverlapping(const Grid& grid, const double* p0, const doubl
         if (seen_[t] == query_) continue;
         seen_[t] = query_;
         const double* p[3] = {corner(t, 0), corner(t, 1), corner(t, 2)};
+        // Bounding boxes that do not overlap (touching is not overlapping) keep the interiors apart:
+        // a cheap exact test that spares most candidates the separating-axis test.
+        if (std::max({p[0][0], p[1][0], p[2][0]}) <= minX || std::min({p[0][0], p[1][0], p[2][0]}) >= maxX ||
+            std::max({p[0][1], p[1][1], p[2][1]}) <= minY || std::min({p[0][1], p[1][1], p[2][1]}) >= maxY)
+          continue;
         if (interiorsMeet(p, q) && visit(t)) return;
       }
     }
