@@ -353,6 +353,8 @@ std::string toVoronoiEdge(const Voronoi& voronoi, const Mesh& mesh);
 // attributes are read and ignored) with the .node that holds its points and, when given, the .poly
 // for segments, holes and regions (declaring 0 points, or the same points as the .node) and the .area
 // (<#triangles>, then <triangle #> <maximum area>, -1 or <= 0: none). Errors name file, line, value.
+// Every point of the .node is a point of the PLC: one that no triangle uses (a 6-node .ele's
+// midpoint nodes) becomes a vertex of the refined mesh where it lies in the domain.
 struct MeshFiles {
   std::string ele, node, poly, area;  // texts; poly and area are used when hasPoly / hasArea
   bool hasPoly = false, hasArea = false;
