@@ -8,7 +8,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { test } from 'node:test';
 import { fileURLToPath } from 'node:url';
-import { init, MeshError } from 'ruppert';
+import { createMeshWorker, init, MeshError } from 'ruppert';
 import { orient } from './exact-predicates.mjs';
 import { triangleArea, validateMesh } from './validate-mesh.mjs';
 
@@ -205,4 +205,22 @@ test('the CLI refines BASE.ele with BASE.area and writes --order 2 and --voronoi
   const missing = spawnSync(bin, ['nothing.ele'], { cwd: dir, encoding: 'utf8' });
   assert.equal(missing.status, 1);
   assert.match(missing.stderr, /cannot read 'nothing.ele'/);
+});
+
+test('a worker refines a mesh and hands back triangles6 and the Voronoi dual', async () => {
+  const old = mesher.triangulate(ringPlc(), { minAngle: 20 });
+  const bounds = boundsFor(old, 5);
+  const worker = createMeshWorker();
+  try {
+    const mesh = await worker.triangulate({ points: old.points, triangles: old.triangles, triangleMaxArea: bounds },
+      { minAngle: 20, order: 2, voronoi: true });
+    const here = mesher.triangulate({ points: old.points, triangles: old.triangles, triangleMaxArea: bounds },
+      { minAngle: 20, order: 2, voronoi: true });
+    assert.deepEqual([...mesh.triangles6], [...here.triangles6]);
+    assert.deepEqual([...mesh.points], [...here.points]);
+    assert.deepEqual([...mesh.voronoi.edges], [...here.voronoi.edges]);
+    assert.ok(boundsKept(old, bounds, mesh) > 0);
+  } finally {
+    await worker.terminate();
+  }
 });
