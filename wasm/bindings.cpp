@@ -174,6 +174,7 @@ ruppert::Mesh meshFromJs(const val& js) {
   m.triangleAttributes = copyIn<double>(js["triangleAttributes"]);
   m.pointMarkers = copyIn<std::int32_t>(js["pointMarkers"]);
   m.indexBase = js["indexBase"].isNumber() ? js["indexBase"].as<int>() : 0;
+  m.triangles6 = copyIn<std::uint32_t>(js["triangles6"]);  // issue 16: order 2
   m.stats.vertices = m.points.size() / 2;
   m.stats.triangles = m.triangles.size() / 3;
   return m;
@@ -371,6 +372,8 @@ val parseCliArgs(val argsJs) {
     options.set("autoHoles", o.autoHoles);
     options.set("trace", !args.tracePath.empty());
     options.set("sizeMeasure", o.sizeMeasure);
+    options.set("order", args.order);      // issue 16, derived
+    options.set("voronoi", args.voronoi);
     out.set("options", options);
     return out;
   });
@@ -434,6 +437,97 @@ val writeMesh(val meshJs, val inputJs, std::string format) {
     val result = val::object();
     result.set("text", text);
     return result;
+  });
+}
+
+// ---------------------------------------------------------------------------------------------
+// Issue 16, derived: refining a mesh (Plc::triangles, triangleMaxArea), quadratic nodes (order 2) and
+// the Voronoi dual (voronoi), staged in a table of their own (wasm/heap-call.js, DERIVED_*): its
+// input is two (address) slots then order and voronoi; its output five (address, length) pairs.
+// ---------------------------------------------------------------------------------------------
+struct DerivedStaged {
+  std::vector<std::uint32_t> triangles;
+  std::vector<double> triangleMaxArea;
+  double inputTable[4] = {};  // triangles, triangleMaxArea addresses; order; voronoi
+  ruppert::Voronoi voronoi;
+  double outputTable[10] = {};  // triangles6, voronoi points, edges, rayDirections, meshEdges
+};
+
+DerivedStaged& derivedStaged() {
+  static DerivedStaged d;
+  return d;
+}
+
+// Before triangulate(): the staged old mesh moves into the PLC.
+void takeDerivedInput(ruppert::Plc& plc) {
+  DerivedStaged& d = derivedStaged();
+  plc.triangles = std::move(d.triangles), plc.triangleMaxArea = std::move(d.triangleMaxArea);
+  d.triangles = {}, d.triangleMaxArea = {};
+}
+
+// After triangulate(): midpoint nodes (into mesh.points and pointMarkers, so the main table carries
+// them) and the dual, then the table of the derived arrays.
+void deriveOutputs(ruppert::Mesh& mesh) {
+  DerivedStaged& d = derivedStaged();
+  d.voronoi = d.inputTable[3] != 0 ? ruppert::voronoiDiagram(mesh) : ruppert::Voronoi{};
+  if (d.inputTable[2] == 2) ruppert::addQuadraticNodes(mesh);
+  double* t = d.outputTable;
+  auto array = [&t](const auto& v) {
+    *t++ = static_cast<double>(reinterpret_cast<std::uintptr_t>(v.data()));
+    *t++ = static_cast<double>(v.size());
+  };
+  array(mesh.triangles6), array(d.voronoi.points), array(d.voronoi.edges), array(d.voronoi.rayDirections);
+  array(d.voronoi.meshEdges);
+}
+
+void releaseDerived() {
+  DerivedStaged& d = derivedStaged();
+  d.triangles = {}, d.triangleMaxArea = {}, d.voronoi = {};
+}
+
+ruppert::Voronoi voronoiFromJs(const val& js) {
+  ruppert::Voronoi v;
+  v.points = copyIn<double>(js["points"]);
+  v.edges = copyIn<std::int32_t>(js["edges"]);
+  v.rayDirections = copyIn<double>(js["rayDirections"]);
+  v.meshEdges = copyIn<std::uint32_t>(js["meshEdges"]);
+  if (v.rayDirections.size() != v.edges.size())
+    throw ruppert::Error(ruppert::ErrorCode::MalformedInput, "voronoi.rayDirections must have two entries per edge");
+  for (std::size_t i = 0; i < v.edges.size(); ++i)
+    if (v.edges[i] >= static_cast<std::int64_t>(v.points.size() / 2) || (v.edges[i] < 0 && (i % 2 == 0 || v.edges[i] != -1)))
+      throw ruppert::Error(ruppert::ErrorCode::IndexOutOfRange, "voronoi.edges[" + std::to_string(i) + "] = " +
+                                                                   std::to_string(v.edges[i]) + " is not a Voronoi vertex");
+  return v;
+}
+
+// Triangle's .v.node ("node") or .v.edge ("edge") text of mesh.voronoi.
+val writeVoronoi(val voronoiJs, int indexBase, std::string which) {
+  return guarded([&] {
+    const ruppert::Voronoi v = voronoiFromJs(voronoiJs);
+    ruppert::Mesh mesh;
+    mesh.indexBase = indexBase;
+    val out = val::object();
+    out.set("text", which == "node" ? ruppert::toVoronoiNode(v, mesh) : ruppert::toVoronoiEdge(v, mesh));
+    return out;
+  });
+}
+
+// BASE.ele with BASE.node, and BASE.poly and BASE.area when their texts are strings.
+val readMeshFiles(val texts) {
+  return guarded([&] {
+    ruppert::MeshFiles f;
+    f.ele = texts["ele"].as<std::string>(), f.node = texts["node"].as<std::string>();
+    f.eleName = texts["eleName"].as<std::string>(), f.nodeName = texts["nodeName"].as<std::string>();
+    f.hasPoly = texts["poly"].isString(), f.hasArea = texts["area"].isString();
+    if (f.hasPoly) f.poly = texts["poly"].as<std::string>(), f.polyName = texts["polyName"].as<std::string>();
+    if (f.hasArea) f.area = texts["area"].as<std::string>(), f.areaName = texts["areaName"].as<std::string>();
+    const ruppert::Plc plc = ruppert::parseMeshFiles(f);
+    val out = val::object();
+    val js = plcToJs(plc);
+    js.set("triangles", copyOut(plc.triangles));
+    js.set("triangleMaxArea", copyOut(plc.triangleMaxArea));
+    out.set("plc", js);
+    return out;
   });
 }
 
@@ -512,7 +606,9 @@ bool runStaged(const val* sizeFunction, const val* onProgress) {
           plc.regions.push_back(ruppert::Region{regions[i], regions[i + 1], regions[i + 2], regions[i + 3]});
         ruppert::Options options = optionsFromTable(s.inputTable + kInputArrays);
         if (sizeFunction != nullptr) addCallbacks(options, *sizeFunction, *onProgress);
+        takeDerivedInput(plc);  // issue 16, derived
         s.mesh = ruppert::triangulate(plc, options);
+        deriveOutputs(s.mesh);  // issue 16, derived
         writeOutputTable(s);
       },
       s.failed);
@@ -585,7 +681,25 @@ EMSCRIPTEN_KEEPALIVE void rp_release_staged() {
   s.histogram = {}, s.reasonNumbers = {}, s.noticeNumbers = {};
   s.reasonText = {}, s.noticeText = {};
   s.failed = {};
+  releaseDerived();  // issue 16, derived
 }
+
+// Issue 16, derived: sizes the old mesh's arrays (lengths in elements), sets order and voronoi, and
+// returns the address of the derived input table (see DerivedStaged). 0 if they do not fit.
+EMSCRIPTEN_KEEPALIVE std::uintptr_t rp_stage_derived(double triangles, double triangleMaxArea, double order, double voronoi) {
+  DerivedStaged& d = derivedStaged();
+  try {
+    d.inputTable[0] = sized(d.triangles, triangles);
+    d.inputTable[1] = sized(d.triangleMaxArea, triangleMaxArea);
+  } catch (const std::bad_alloc&) {
+    releaseDerived();
+    return 0;
+  }
+  d.inputTable[2] = order, d.inputTable[3] = voronoi;
+  return reinterpret_cast<std::uintptr_t>(d.inputTable);
+}
+
+EMSCRIPTEN_KEEPALIVE std::uintptr_t rp_derived_table() { return reinterpret_cast<std::uintptr_t>(derivedStaged().outputTable); }
 
 }  // extern "C"
 
@@ -607,6 +721,8 @@ EMSCRIPTEN_BINDINGS(ruppert) {
   emscripten::function("readPolyWithNode", &readPolyWithNode);
   emscripten::function("writeMesh", &writeMesh);
   emscripten::function("parseCliArgs", &parseCliArgs);
+  emscripten::function("readMeshFiles", &readMeshFiles);  // issue 16, derived
+  emscripten::function("writeVoronoi", &writeVoronoi);
   emscripten::function("allocatedBytes", &allocatedBytes);
   emscripten::function("abortForTesting", &abortForTesting);
 }

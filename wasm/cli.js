@@ -57,8 +57,31 @@ async function readPlc(mesher, path, inputFormat) {
   const ext = extname(path).toLowerCase().slice(1);
   const format = inputFormat || (path === '-' ? sniffFormat(text) : ext);
   if (format === 'triangle') return parseTriangleText(mesher, text, name);
+  if (format === 'ele' && path !== '-') return readEle(mesher, path, text);
   if (READERS[format] !== undefined) return mesher[READERS[format]](text, name);
-  throw new MeshError('IO_ERROR', `'${path}': unknown extension '.${ext}' (expected .poly, .node, .json or .geojson)`);
+  throw new MeshError('IO_ERROR', `'${path}': unknown extension '.${ext}' (expected .poly, .node, .ele, .json or .geojson)`);
+}
+
+// Issue 16, refining a mesh: BASE.ele with BASE.node, and BASE.poly and BASE.area when they exist.
+async function readEle(mesher, path, ele) {
+  const stem = path.slice(0, -4);
+  const sibling = (ext) => stem + (path.endsWith('.ELE') ? ext.toUpperCase() : ext);
+  const optional = async (file) => {
+    try {
+      return await readFile(file, 'utf8');
+    } catch (cause) {
+      if (cause.code === 'ENOENT') return undefined;
+      throw new MeshError('IO_ERROR', `cannot read '${file}': ${cause.message}`, { cause });
+    }
+  };
+  const nodeName = sibling('.node'), polyName = sibling('.poly'), areaName = sibling('.area');
+  const node = await optional(nodeName);
+  if (node === undefined) {
+    throw new MeshError('IO_ERROR', `${nodeName}: cannot open for reading (refining ${path} needs its points)`);
+  }
+  return mesher.parseEle(ele, {
+    name: path, node, nodeName, poly: await optional(polyName), polyName, area: await optional(areaName), areaName,
+  });
 }
 
 async function write(path, text) {
@@ -111,6 +134,10 @@ async function main(argv) {
   }
   try {
     const base = args.outputBase;
+    if (base !== '' && args.options.voronoi) {
+      await write(`${base}.v.node`, mesher.toVoronoiNode(mesh));
+      await write(`${base}.v.edge`, mesher.toVoronoiEdge(mesh));
+    }
     if (base !== '') {
       if (args.format === 'triangle') {
         await write(`${base}.node`, mesher.toNode(mesh));

@@ -28,6 +28,39 @@ const INPUTS = [
 const OPTION_FIELDS = ['minAngle', 'maxArea', 'maxSteiner', 'placement', 'encroachment', 'variant', 'convexHull',
   'autoHoles', 'trace', 'sizeMeasure'];
 
+// Issue 16, derived: the old mesh to refine, order and voronoi go in a table of their own
+// (rp_stage_derived, DerivedStaged in bindings.cpp); what they give comes back in another
+// (rp_derived_table): (address, length) pairs in this order.
+const DERIVED_INPUTS = [['triangles', Uint32Array], ['triangleMaxArea', Float64Array]];
+const DERIVED_OUTPUTS = [['triangles6', Uint32Array], ['points', Float64Array], ['edges', Int32Array],
+  ['rayDirections', Float64Array], ['meshEdges', Uint32Array]];
+
+function stageDerived(m, input, options) {
+  const table = m._rp_stage_derived(input.triangles.length, input.triangleMaxArea.length, options.order,
+    options.voronoi ? 1 : 0);
+  if (table === 0) return false;
+  DERIVED_INPUTS.forEach(([name, Type], i) => {
+    const values = input[name];
+    if (values.length > 0) heapView(m, Type).set(values, m.HEAPF64[(table >>> 3) + i] / Type.BYTES_PER_ELEMENT);
+  });
+  return true;
+}
+
+// mesh.triangles6 (order 2; mesh.points already holds the midpoint nodes) and mesh.voronoi.
+function readDerived(m, mesh, options) {
+  const table = m.HEAPF64.subarray(m._rp_derived_table() >>> 3);
+  const arrays = {};
+  DERIVED_OUTPUTS.forEach(([name, Type], i) => {
+    const start = table[2 * i] / Type.BYTES_PER_ELEMENT, length = table[2 * i + 1];
+    arrays[name] = length > 0 ? heapView(m, Type).slice(start, start + length) : new Type(0);
+  });
+  if (options.order === 2) mesh.triangles6 = arrays.triangles6;
+  if (options.voronoi) {
+    const { points, edges, rayDirections, meshEdges } = arrays;
+    mesh.voronoi = { points, edges, rayDirections, meshEdges };
+  }
+}
+
 // The module's view of the heap for an element type (fetched after every call that may grow it).
 function heapView(m, Type) {
   switch (Type) {
@@ -118,6 +151,10 @@ export function triangulateInHeap(m, input, options, report) {
     return { errorCode: 'TOO_LARGE', errorMessage: 'out of memory: the input does not fit in 4 GB of WebAssembly memory', reset: true };
   }
   writeInput(m, inputTable, input, options);
+  if (!stageDerived(m, input, options)) {
+    m._rp_release_staged();
+    return { errorCode: 'TOO_LARGE', errorMessage: 'out of memory: the input does not fit in 4 GB of WebAssembly memory', reset: true };
+  }
   let failure = null;
   if (options.sizeFunction || options.onProgress) {
     failure = m.triangulateStaged(options.sizeFunction ?? null, options.onProgress ?? null);
@@ -129,6 +166,7 @@ export function triangulateInHeap(m, input, options, report) {
     return failure;
   }
   const mesh = readMesh(m);
+  readDerived(m, mesh, options);
   if (options.trace || report != null) {
     const extras = m.stagedExtras(report ?? null, options.trace);
     if (extras.errorCode) {

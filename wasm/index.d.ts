@@ -28,6 +28,16 @@ export interface Plc {
   segmentMarkers?: NumberArray;
   /** 0 or 1: the index base writers print. */
   indexBase?: 0 | 1;
+  /**
+   * Refining a mesh (Triangle's -r): 3 point indices per triangle. The domain is their union; their
+   * boundary edges join the segments (numbered after them in segmentIds); refined under the options.
+   */
+  triangles?: NumberArray;
+  /**
+   * One maximum area per triangle (<= 0: none). A new triangle's bound is the smallest among the old
+   * triangles its interior meets, so every triangle lying within an old triangle meets its bound.
+   */
+  triangleMaxArea?: NumberArray;
 }
 
 /** What the readers return. */
@@ -82,6 +92,25 @@ export interface TriangulateOptions {
   autoHoles?: boolean;
   /** Called every few thousand insertions; return false to stop early (complete = false). */
   onProgress?: (progress: Progress) => boolean | void;
+  /**
+   * 2: quadratic triangles: mesh.triangles6, and one midpoint node per edge appended to points
+   * (and pointMarkers) after the corner vertices. Default 1.
+   */
+  order?: 1 | 2;
+  /** Also compute mesh.voronoi, the dual of the mesh. */
+  voronoi?: boolean;
+}
+
+/** The dual of a mesh (options.voronoi): one vertex per triangle, one edge per mesh edge. */
+export interface Voronoi {
+  /** Circumcentre of triangle t at 2t, 2t+1 (it may lie outside its triangle and the domain). */
+  points: Float64Array;
+  /** Two Voronoi vertex indices per mesh edge; the second is -1 for a ray (a boundary edge). */
+  edges: Int32Array;
+  /** Two per mesh edge: a ray's direction, the boundary edge's outward normal (its length); 0, 0 otherwise. */
+  rayDirections: Float64Array;
+  /** Two per edge: the mesh edge (vertex indices) each dual edge crosses. */
+  meshEdges: Uint32Array;
 }
 
 export type ReasonKind = 'SMALL_INPUT_ANGLE' | 'SEDITIOUS_EDGE' | 'STEINER_BUDGET' | 'PRECISION_FLOOR' | 'CANCELLED'
@@ -178,6 +207,33 @@ export interface Mesh {
   stats: Stats;
   /** Only with options.trace. */
   events?: Events;
+  /**
+   * Only with options.order = 2: six per triangle: its corners (as in triangles), then the midpoint
+   * nodes of the edges opposite corners 0, 1, 2 (Triangle's -o2 order); shared between neighbours.
+   */
+  triangles6?: Uint32Array;
+  /** Only with options.voronoi. */
+  voronoi?: Voronoi;
+}
+
+/** The texts parseEle reads besides the .ele (Triangle's -r input). */
+export interface ParseEleOptions {
+  name?: string;
+  /** Text of the .node file holding the points (required). */
+  node: string;
+  nodeName?: string;
+  /** Text of the .poly: segments, holes, regions (declaring 0 points, or the .node's). */
+  poly?: string;
+  polyName?: string;
+  /** Text of the .area file: a maximum area per triangle, -1 for none. */
+  area?: string;
+  areaName?: string;
+}
+
+/** What parseEle returns: a PLC with the triangles to refine. */
+export interface ParsedMeshPlc extends ParsedPlc {
+  triangles: Uint32Array;
+  triangleMaxArea: Float64Array;
 }
 
 export type ErrorCode =
@@ -242,6 +298,11 @@ export interface Mesher {
   toVtu(mesh: Mesh): string;
   /** GeoJSON FeatureCollection, one Polygon feature per triangle. */
   toGeoJson(mesh: Mesh): string;
+  /** Triangle's .ele with its .node (and .poly, .area): a PLC whose triangles triangulate() refines. */
+  parseEle(text: string, options: ParseEleOptions): ParsedMeshPlc;
+  /** Triangle's .v.node / .v.edge texts of mesh.voronoi. */
+  toVoronoiNode(mesh: Mesh): string;
+  toVoronoiEdge(mesh: Mesh): string;
   /** Resolves once a wasm instance is available (pending only right after an abort). */
   readonly ready: Promise<void>;
   memoryUsage(): { heapBytes: number; allocatedBytes: number };
@@ -263,6 +324,9 @@ export declare function parseGeoJson(text: string, name?: string): ParsedPlc;
 export declare function toMsh(mesh: Mesh, input?: Plc): string;
 export declare function toVtu(mesh: Mesh): string;
 export declare function toGeoJson(mesh: Mesh): string;
+export declare function parseEle(text: string, options: ParseEleOptions): ParsedMeshPlc;
+export declare function toVoronoiNode(mesh: Mesh): string;
+export declare function toVoronoiEdge(mesh: Mesh): string;
 
 export type WorkerOptions = Omit<TriangulateOptions, 'sizeFunction' | 'onProgress'>;
 

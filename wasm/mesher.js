@@ -148,7 +148,37 @@ export function createMesher(compiled, firstModule) {
     return check(call('writeMesh', normalized, plc, format)).text;
   }
 
+  // Issue 16, refining a mesh: Triangle's .ele text with { node, poly?, area?, names } texts.
+  function readEle(text, options) {
+    requireText(text, 'parseEle');
+    if (options === null || typeof options !== 'object') {
+      throw new MeshError('MALFORMED_INPUT', 'parseEle(eleText, { node, poly?, area? }): the .node text is needed');
+    }
+    rejectUnknownKeys(options, ['name', 'node', 'nodeName', 'poly', 'polyName', 'area', 'areaName'],
+      'parseEle\'s options', (message) => new MeshError('INVALID_OPTION', message));
+    const { name = '<ele>', node, nodeName = '<node>', poly, polyName = '<poly>', area, areaName = '<area>' } = options;
+    requireText(node, 'parseEle\'s options.node');
+    if (poly !== undefined) requireText(poly, 'parseEle\'s options.poly');
+    if (area !== undefined) requireText(area, 'parseEle\'s options.area');
+    for (const n of [name, nodeName, polyName, areaName]) {
+      if (typeof n !== 'string') throw new MeshError('MALFORMED_INPUT', 'parseEle: file names must be strings');
+    }
+    return check(call('readMeshFiles', { ele: text, eleName: name, node, nodeName, poly, polyName, area, areaName })).plc;
+  }
+
+  // Issue 16, Voronoi: Triangle's .v.node / .v.edge texts of mesh.voronoi (triangulate with voronoi: true).
+  function writeVoronoi(mesh, which) {
+    if (mesh === null || typeof mesh !== 'object' || mesh.voronoi == null || typeof mesh.voronoi !== 'object') {
+      throw new MeshError('MALFORMED_INPUT', 'expected a mesh with mesh.voronoi (triangulate with { voronoi: true })');
+    }
+    const indexBase = mesh.indexBase === 1 ? 1 : 0;
+    return check(call('writeVoronoi', mesh.voronoi, indexBase, which)).text;
+  }
+
   return {
+    parseEle: (text, options) => readEle(text, options),
+    toVoronoiNode: (mesh) => writeVoronoi(mesh, 'node'),
+    toVoronoiEdge: (mesh) => writeVoronoi(mesh, 'edge'),
     triangulate: (plc, options) => triangulate(plc, options),
     /** For wasm/cli.js: also returns mesh.report = { summary?, stats?, trace? } (the native CLI's texts). */
     _triangulateWithReport: (plc, options, report) => triangulate(plc, options, report),

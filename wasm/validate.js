@@ -9,7 +9,8 @@ import { MeshError } from './errors.js';
 import { nearestKey, rejectUnknownKeys } from './known-keys.js';
 
 const MAX_UINT32 = 0xffffffff;
-const PLC_KEYS = ['points', 'segments', 'holes', 'regions', 'pointMarkers', 'segmentMarkers', 'indexBase'];
+const PLC_KEYS = ['points', 'segments', 'holes', 'regions', 'pointMarkers', 'segmentMarkers', 'indexBase',
+  'triangles', 'triangleMaxArea'];
 const REGION_KEYS = ['x', 'y', 'attribute', 'maxArea'];
 
 function describe(value) {
@@ -112,6 +113,21 @@ function regionNumber(region, i, key, fallback) {
   return v;
 }
 
+// Issue 16, refining a mesh: triangles (3 point indices each) and triangleMaxArea (one per triangle,
+// <= 0: none); the core checks the geometry (zero-area triangles) and NaN bounds.
+function oldMesh(plc, pointCount) {
+  const triangles = plc.triangles == null ? new Uint32Array(0) : toIndices(plc.triangles, 'triangles', pointCount, 'point');
+  if (triangles.length % 3 !== 0) {
+    throw invalid(`triangles has length ${triangles.length}: a triangle is three point indices`);
+  }
+  const triangleMaxArea = plc.triangleMaxArea == null ? new Float64Array(0)
+    : toFloat64(plc.triangleMaxArea, 'triangleMaxArea', { pairs: false });
+  if (triangleMaxArea.length !== 0 && triangleMaxArea.length !== triangles.length / 3) {
+    throw invalid(`triangleMaxArea has ${triangleMaxArea.length} entries for ${triangles.length / 3} triangles`);
+  }
+  return { triangles, triangleMaxArea };
+}
+
 /**
  * @param {unknown} plc { points, segments?, holes?, regions?, pointMarkers?, segmentMarkers?, indexBase? }
  * @returns the same data as exact typed arrays; regions flattened to x, y, attribute, maxArea.
@@ -161,14 +177,16 @@ export function normalizePlc(plc) {
   }
   const indexBase = plc.indexBase ?? 0;
   if (indexBase !== 0 && indexBase !== 1) throw invalid(`indexBase = ${describe(indexBase)} must be 0 or 1`);
-  return { points, segments, holes, regions, pointMarkers, segmentMarkers, indexBase };
+  const { triangles, triangleMaxArea } = oldMesh(plc, pointCount);
+  return { points, segments, holes, regions, pointMarkers, segmentMarkers, indexBase, triangles, triangleMaxArea };
 }
 
 const PLACEMENTS = { circumcenter: 0, offcenter: 1, petal: 2, optimal: 3 };
 const ENCROACHMENTS = { disk: 0, lens: 1 };
 const VARIANTS = { cdt: 0, box: 1 };
 const OPTION_KEYS = ['minAngle', 'maxArea', 'maxSteiner', 'sizeFunction', 'onProgress', 'trace',
-  'placement', 'encroachment', 'variant', 'convexHull', 'autoHoles', 'sizeMeasure'];
+  'placement', 'encroachment', 'variant', 'convexHull', 'autoHoles', 'sizeMeasure',
+  'order', 'voronoi'];
 
 function badOption(message) {
   return new MeshError('INVALID_OPTION', message);
@@ -203,6 +221,13 @@ function functionOption(options, key) {
   const v = options[key];
   if (v === undefined || v === null) return undefined;
   if (typeof v !== 'function') throw badOption(`${key} = ${describe(v)} must be a function`);
+  return v;
+}
+
+// Issue 16: order 1 (3-node triangles) or 2 (also triangles6, midpoint nodes appended to points).
+function orderOption(options) {
+  const v = options.order ?? 1;
+  if (v !== 1 && v !== 2) throw badOption(`order = ${describe(v)} must be 1 or 2`);
   return v;
 }
 
@@ -249,6 +274,8 @@ export function normalizeOptions(options) {
     sizeMeasure: booleanOption(options, 'sizeMeasure'),
     sizeFunction: functionOption(options, 'sizeFunction'),
     onProgress: functionOption(options, 'onProgress'),
+    order: orderOption(options),
+    voronoi: booleanOption(options, 'voronoi'),
   };
 }
 
@@ -271,6 +298,10 @@ export function normalizeMesh(mesh) {
     : toFloat64(mesh.triangleAttributes, 'mesh.triangleAttributes', { pairs: false });
   const indexBase = mesh.indexBase ?? 0;
   if (indexBase !== 0 && indexBase !== 1) throw invalid(`mesh.indexBase = ${describe(indexBase)} must be 0 or 1`);
+  const triangles6 = mesh.triangles6 == null ? new Uint32Array(0) : toIndices(mesh.triangles6, 'mesh.triangles6', n, 'point');
+  if (triangles6.length !== 0 && triangles6.length !== 2 * triangles.length) {
+    throw invalid(`mesh.triangles6 has length ${triangles6.length}, not 6 per triangle`);
+  }
   return { points, triangles, neighbors, segments, segmentIds, vertexKinds, triangleAttributes,
-    pointMarkers, indexBase };
+    pointMarkers, indexBase, triangles6 };
 }

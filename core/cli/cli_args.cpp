@@ -30,7 +30,7 @@ const char* usageLine() {
   return "usage: ruppert [--min-angle DEG] [--max-area A] [--max-steiner N] [-o BASE] "
          "[--format triangle|json|svg|msh|vtu|geojson] [--input-format poly|node|json|geojson] [--quiet] [--stats] [--trace FILE] "
          "[--placement offcenter|circumcenter|petal|optimal] [--encroachment lens|disk] [--variant cdt|box] [--convex-hull] [--auto-holes] "
-         "[--help] [--version] INPUT";
+         "[--order 1|2] [--voronoi] [--help] [--version] INPUT";
 }
 
 std::string helpText() {
@@ -39,6 +39,8 @@ std::string helpText() {
          "Quality triangle mesh of a planar straight-line graph by Delaunay refinement (Ruppert).\n"
          "INPUT is a Triangle .poly or .node file, a .json file {\"points\": [...], \"segments\": [...], ...},\n"
          "a .geojson file (Polygon/MultiPolygon features; inner rings are holes), or - for standard input.\n"
+         "INPUT BASE.ele refines that mesh (with BASE.node, and BASE.poly and BASE.area when present:\n"
+         "a maximum area per triangle, -1 for none, kept by every new triangle within an old one).\n"
          "\n"
          "  --min-angle DEG      smallest angle to reach, 0..60 (default 30); above 34, where out of\n"
          "                       reach: the best mesh reached (at least 33 degrees), marked incomplete\n"
@@ -62,6 +64,9 @@ std::string helpText() {
          "                       (Ruppert's original: conforming mesh of an enclosing box)\n"
          "  --convex-hull        mesh the whole convex hull, not only what segments enclose\n"
          "  --auto-holes         without hole seeds: regions at even nesting depth become holes\n"
+         "  --order 2            quadratic triangles: .ele gets 6 nodes per triangle (corners, then the\n"
+         "                       midpoints of the edges opposite them), .node the midpoints after the corners\n"
+         "  --voronoi            also write the dual: BASE.v.node (circumcentres) and BASE.v.edge\n"
          "  --stats              print statistics (vertex kinds, angle histogram, size optimality)\n"
          "  --trace FILE         write every insertion as JSON lines to FILE\n"
          "  --quiet              no summary and no warnings (errors and --stats still print)\n"
@@ -176,6 +181,12 @@ CliArgs parseArgs(const std::vector<std::string>& args) {
       out.options.convexHull = flag();
     } else if (name == "--auto-holes") {
       out.options.autoHoles = flag();
+    } else if (name == "--order") {
+      const std::string v = value();
+      if (v != "1" && v != "2") throw UsageError("--order: '" + v + "' is not 1 or 2");
+      out.order = v == "2" ? 2 : 1;
+    } else if (name == "--voronoi") {
+      out.voronoi = flag();
     } else if (name == "--help" || name == "-h") {
       out.help = flag();
     } else if (name == "--version") {
@@ -189,10 +200,13 @@ CliArgs parseArgs(const std::vector<std::string>& args) {
     }
   }
   if (out.input.empty() && !out.help && !out.version) throw UsageError("missing INPUT");
+  if (out.outputBase == "-" && out.voronoi)
+    throw UsageError("--voronoi writes two files (BASE.v.node, BASE.v.edge): give -o BASE, not -o -");
   if (out.outputBase == "-" && out.format == OutputFormat::Triangle) {
     throw UsageError("-o - writes one file to standard output, but --format triangle writes three (BASE.node, "
                      "BASE.ele, BASE.poly); choose --format json, svg, msh, vtu or geojson, or give -o BASE");
   }
+  if (out.order == 2 && out.format != OutputFormat::Triangle) throw UsageError("--order 2 writes Triangle's .node and .ele: use --format triangle");
   return out;
 }
 

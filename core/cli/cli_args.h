@@ -26,6 +26,9 @@ struct CliArgs {
   bool stats = false;
   bool help = false;
   bool version = false;
+  // Derived outputs (issue 16): --order 2 (6-node triangles in .node/.ele), --voronoi (BASE.v.node, BASE.v.edge).
+  int order = 1;
+  bool voronoi = false;
 };
 
 class UsageError : public std::runtime_error {

@@ -62,9 +62,15 @@ void writeSingle(const std::string& base, const char* ext, const std::function<v
   if (!std::cout) throw WriteFailure{"writing to standard output failed"};
 }
 
-void writeOutputs(const ruppert::cli::CliArgs& args, const ruppert::Mesh& mesh, const ruppert::Plc& plc) {
+void writeOutputs(const ruppert::cli::CliArgs& args, ruppert::Mesh& mesh, const ruppert::Plc& plc) {
   using ruppert::cli::OutputFormat;
   const std::string& base = args.outputBase;
+  if (!base.empty() && args.voronoi) {
+    const ruppert::Voronoi voronoi = ruppert::voronoiDiagram(mesh);
+    writeFile(base + ".v.node", [&](std::ostream& out) { ruppert::writeVoronoiNode(out, voronoi, mesh); });
+    writeFile(base + ".v.edge", [&](std::ostream& out) { ruppert::writeVoronoiEdge(out, voronoi, mesh); });
+  }
+  if (!base.empty() && args.order == 2) ruppert::addQuadraticNodes(mesh);
   if (!base.empty()) {
     switch (args.format) {
       case OutputFormat::Triangle:

@@ -10,6 +10,8 @@
 
 namespace ruppert::detail {
 
+class OldMesh;  // old_mesh.h
+
 struct MeshState {
   const Plc* plc = nullptr;
   const Options* options = nullptr;
@@ -25,6 +27,8 @@ struct MeshState {
   std::vector<double> maxArea;               // scaled; 0 = none
   // Bounding-box variant only: triangles outside the domain stay (and are refined) until the end.
   std::vector<std::uint8_t> inDomain;        // per slot: 1 inside the domain; empty in the CDT variant
+  // Refining a mesh (Plc::triangles): its triangles' domain and area bounds; null otherwise.
+  const OldMesh* oldMesh = nullptr;
   std::size_t segmentCount() const { return plc->segments.size() / 2; }
 
   std::uint32_t addVertex(double x, double y, VertexKind k, std::int32_t segment) {

@@ -405,6 +405,7 @@ Plc readPoly(std::istream& in, const std::string& name) { return parsePoly(slurp
 Plc readFile(const std::string& path) {
   const std::string ext = lowerExtension(path);
   if (ext == ".node") return nodeFromText(readWholeFile(path), path);
+  if (ext == ".ele") return readEleFiles(path);  // refining a mesh: read_mesh_files.cpp
   if (ext == ".json") {
     std::ifstream file(path, std::ios::binary);
     if (!file) throw Error(ErrorCode::IoError, path + ": cannot open for reading");
@@ -417,7 +418,7 @@ Plc readFile(const std::string& path) {
     const std::string nodePath = path.substr(0, path.size() - ext.size()) + (written == ext ? ".node" : ".NODE");
     return polyFromText(readWholeFile(path), path, [&nodePath]() { return nodeFromText(readWholeFile(nodePath), nodePath); });
   }
-  throw Error(ErrorCode::IoError, path + ": unknown extension; expected .poly, .node, .json or .geojson");
+  throw Error(ErrorCode::IoError, path + ": unknown extension; expected .poly, .node, .ele, .json or .geojson");
 }
 
 }  // namespace ruppert

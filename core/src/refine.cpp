@@ -29,6 +29,7 @@
 
 #include "bad_triangle_queue.h"
 #include "bound_push.h"
+#include "old_mesh.h"
 #include "optimal_placement.h"
 #include "placement.h"
 #include "predicates.h"
@@ -42,7 +43,8 @@ bool refinementRequested(const MeshState& m) {
   const Options& o = *m.options;
   bool regionArea = false;
   for (const Region& r : m.input.regions) regionArea = regionArea || r.maxArea > 0;
-  return o.minAngle > 0 || o.maxArea > 0 || regionArea || static_cast<bool>(o.sizeFunction);
+  const bool oldMeshArea = m.oldMesh != nullptr && m.oldMesh->hasBounds();
+  return o.minAngle > 0 || o.maxArea > 0 || regionArea || oldMeshArea || static_cast<bool>(o.sizeFunction);
 }
 
 namespace {
@@ -120,6 +122,7 @@ class Refiner {
   std::vector<Inherited> inherit_;
   std::vector<std::uint32_t> cavityTris_, cavityBoundary_, splitTris_, splitBoundary_;
   std::vector<EdgeRef> rejectPairs_;
+  mutable std::vector<double> oldBound_, oldBoundAt_;  // oldMeshBound's memo: per slot, and 6 coordinates
 
  public:
   Refiner(MeshState& m, const RefinePlan& plan)
@@ -309,7 +312,26 @@ class Refiner {
         bound = bound > 0 ? std::min(bound, internal) : internal;
       }
     }
+    if (m_.oldMesh != nullptr) {
+      const double old = oldMeshBound(s);
+      if (old > 0) bound = bound > 0 ? std::min(bound, old) : old;
+    }
     return bound;
+  }
+
+  // Refining a mesh: the old mesh's bound for slot s (old_mesh.h), remembered with the corner
+  // coordinates it was computed for (vertex ids would not do: Placement::Optimal moves vertices).
+  double oldMeshBound(std::uint32_t s) const {
+    if (oldBound_.size() < t_.slotCount()) oldBound_.resize(t_.slotCount(), 0), oldBoundAt_.resize(6 * std::size_t(t_.slotCount()), NAN);
+    const double* p[3] = {t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2])};
+    double* at = &oldBoundAt_[6 * std::size_t(s)];
+    bool same = true;
+    for (int i = 0; i < 6; ++i) same = same && at[i] == p[i / 2][i % 2];
+    if (!same) {
+      oldBound_[s] = m_.oldMesh->boundFor(p[0], p[1], p[2]);
+      for (int i = 0; i < 6; ++i) at[i] = p[i / 2][i % 2];
+    }
+    return oldBound_[s];
   }
 
   // The one skinniness test everything uses: sin^2 of the smallest angle below sin^2 of the bound.

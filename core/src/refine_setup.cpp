@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "old_mesh.h"
 #include "refine_geometry.h"
 #include "triangle_shape.h"
 
@@ -73,6 +74,7 @@ std::uint64_t steinerBudget(const MeshState& m) {
     estimate += 8 * qualityOf(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2])).area / m.maxArea[s];
   }
   if (o.sizeFunction) estimate += 1e8;
+  if (m.oldMesh != nullptr) estimate += m.oldMesh->budgetEstimate();
   return static_cast<std::uint64_t>(std::min(estimate, 4e9));
 }
 

@@ -3,9 +3,12 @@
 //   segments, with repairs) -> classify (exterior, holes, regions) -> refine (§6.2-6.6, 6.8) -> output.
 #include <chrono>
 #include <cmath>
+#include <optional>
+#include <string>
 
 #include "mesh_state.h"
 #include "angle_stats.h"
+#include "old_mesh.h"
 #include "refine.h"
 
 namespace ruppert {
@@ -107,13 +110,26 @@ Mesh assemble(MeshState& m) {
 }  // namespace
 }  // namespace detail
 
-Mesh triangulate(const Plc& plc, const Options& options) {
+Mesh triangulate(const Plc& userPlc, const Options& options) {
   using namespace detail;
   const auto start = std::chrono::steady_clock::now();
+  // Refining a mesh: its boundary edges join the segments, its triangles bound the domain and areas.
+  Plc refining;
+  if (!userPlc.triangles.empty()) {
+    if (options.variant == Variant::BoundingBox)
+      throw Error(ErrorCode::InvalidOption, "refining a mesh (triangles in the input) needs the constrained variant, not 'box'");
+    refining = withOldMeshBoundary(userPlc);
+  } else if (!userPlc.triangleMaxArea.empty()) {
+    throw Error(ErrorCode::MalformedInput, "triangleMaxArea has " + std::to_string(userPlc.triangleMaxArea.size()) +
+                                               " entries but the input has no triangles");
+  }
+  const Plc& plc = userPlc.triangles.empty() ? userPlc : refining;
   MeshState m;
   m.plc = &plc;
   m.options = &options;
   m.input = prepareInput(plc, options, m.notices);
+  std::optional<OldMesh> oldMesh;
+  if (!plc.triangles.empty()) m.oldMesh = &oldMesh.emplace(plc, m.input);
   buildDelaunay(m);
   if (plc.segments.empty() || options.convexHull) insertHull(m);
   insertSegments(m);
@@ -125,6 +141,7 @@ Mesh triangulate(const Plc& plc, const Options& options) {
     }
   }
   classifyTriangles(m);
+  if (m.oldMesh != nullptr) keepOldMeshDomain(m);
   RefineOutcome outcome;
   if (refinementRequested(m)) outcome = refine(m);
   if (!m.inDomain.empty()) removeOutside(m);

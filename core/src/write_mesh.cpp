@@ -174,10 +174,12 @@ void printEle(TextOut& out, const Mesh& mesh) {
   // Region attributes are written (Triangle's -A output) only when some triangle has one.
   const bool attributes = mesh.triangleAttributes.size() == n && anyNonZero(mesh.triangleAttributes);
   if (attributes) requireFinite(mesh.triangleAttributes, "triangleAttributes");
-  out << n << " 3 " << (attributes ? 1 : 0) << '\n';
+  const bool six = mesh.triangles6.size() == 6 * n && n > 0;  // addQuadraticNodes' 6-node triangles
+  out << n << (six ? " 6 " : " 3 ") << (attributes ? 1 : 0) << '\n';
   for (std::size_t t = 0; t < n; ++t) {
     out << (t + base) << ' ' << (mesh.triangles[3 * t] + base) << ' ' << (mesh.triangles[3 * t + 1] + base) << ' '
         << (mesh.triangles[3 * t + 2] + base);
+    for (std::size_t i = 3; six && i < 6; ++i) out << ' ' << (mesh.triangles6[6 * t + i] + base);
     if (attributes) out << ' ' << real(mesh.triangleAttributes[t]);
     out << '\n';
   }

@@ -32,6 +32,9 @@ test('the two-line example from the README meshes a square to the requested qual
 
 // 150 KB until issue 16: its GeoJSON reader (JSON tree, rings, hole seeds) added 9 KB gzipped and the
 // .msh/.vtu/.geojson writers 4 KB (measured by leaving each out of wasm/bindings.cpp): 161,815 bytes.
+// Issue 16 raised the budget from 150 KB: refining a mesh (the old-mesh grid and its readers),
+// quadratic nodes and the Voronoi dual took the module from 144,912 to 161,811 bytes gzipped
+// (node wasm/build-wasm.mjs on branch issue-16-derived).
 test('the shipped .wasm is at most 165 KB gzipped', () => {
   const wasm = readFileSync(new URL('./node_modules/ruppert/wasm/dist/ruppert.wasm', import.meta.url));
   const gzipped = gzipSync(wasm, { level: 9 }).length;

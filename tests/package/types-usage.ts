@@ -6,6 +6,7 @@ import {
   parseGeoJson, toMsh, toVtu, toGeoJson,
   type Mesh, type Mesher, type Plc, type TriangulateOptions, type ErrorCode, type Progress,
 } from 'ruppert';
+import { toVoronoiNode, type ParsedMeshPlc, type Voronoi } from 'ruppert';  // issue 16, derived
 
 async function example(): Promise<number> {
   const mesher: Mesher = await init();
@@ -80,3 +81,21 @@ async function misuse(mesher: Mesher): Promise<void> {
 void example;
 void worker;
 void misuse;
+
+// Issue 16, derived outputs: refining a mesh, order 2, the Voronoi dual.
+async function derived(mesher: Mesher): Promise<void> {
+  const old = mesher.triangulate({ points: [0, 0, 1, 0, 0, 1] });
+  const plc: ParsedMeshPlc = mesher.parseEle(mesher.toEle(old), { node: mesher.toNode(old), area: '1\n0 0.1\n' });
+  const mesh = mesher.triangulate({ points: plc.points, triangles: plc.triangles, triangleMaxArea: [0.1] },
+    { order: 2, voronoi: true });
+  const six: Uint32Array | undefined = mesh.triangles6;
+  const dual: Voronoi | undefined = mesh.voronoi;
+  const rays: Float64Array | undefined = dual?.rayDirections;
+  const text: string = mesher.toVoronoiEdge(mesh) + toVoronoiNode(mesh);
+  // @ts-expect-error order is 1 or 2
+  mesher.triangulate({ points: [] }, { order: 3 });
+  // @ts-expect-error parseEle needs the .node text
+  mesher.parseEle('', {});
+  void six, void rays, void text;
+}
+void derived;

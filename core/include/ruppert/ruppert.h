@@ -83,6 +83,17 @@ struct Plc {
   std::vector<std::int32_t> pointMarkers;    // one per point, or empty
   std::vector<std::int32_t> segmentMarkers;  // one per segment, or empty
   int indexBase = 0;  // 0 or 1: the index base the file used; writers print indices in this base
+  // Refining a mesh (Triangle's -r, with -a and a .area file): when `triangles` is not empty, the
+  // domain is the union of these triangles (3 point indices each, either orientation, none of zero
+  // area), and segments are the given ones plus every boundary edge of this mesh (an edge of one
+  // triangle only) that is not among them, numbered after them (Mesh::segmentIds); holes and regions
+  // apply as usual. The mesh is refined under the usual options. triangleMaxArea: empty, or one
+  // maximum area per triangle (<= 0 or +inf: none). The rule: a new triangle's bound is the smallest
+  // bound among the old triangles whose interiors meet its interior (exact tests), so every triangle
+  // of the result lying within an old triangle meets that triangle's bound (its area computed in
+  // doubles; refinement aims a relative 1e-9 below the bound against rounding) when complete.
+  std::vector<std::uint32_t> triangles;
+  std::vector<double> triangleMaxArea;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -266,6 +277,8 @@ struct Mesh {
   std::vector<Notice> notices;            // repairs made to the input
   Stats stats;
   std::vector<Event> events;              // only with Options::trace
+  // Quadratic elements (addQuadraticNodes): 6 per triangle, empty otherwise.
+  std::vector<std::uint32_t> triangles6;
 };
 
 // Mesh a PLC. Throws ruppert::Error on input that cannot be repaired.
@@ -299,6 +312,57 @@ void writeEle(std::ostream& out, const Mesh& mesh);
 void writePoly(std::ostream& out, const Mesh& mesh, const Plc& input);  // subsegments + input holes/regions
 void writeJson(std::ostream& out, const Mesh& mesh, const Plc& input);  // input JSON shape + "triangles" etc.
 void writeSvg(std::ostream& out, const Mesh& mesh);
+
+// ---------------------------------------------------------------------------------------------
+// Derived outputs: quadratic elements and the Voronoi diagram (Triangle's -o2 and -v)
+// ---------------------------------------------------------------------------------------------
+// Quadratic (6-node) triangles: appends one node per mesh edge, at its midpoint (a/2 + b/2 in
+// doubles: the correctly rounded midpoint), to mesh.points after the corner vertices, numbered in
+// the order the edges first appear in mesh.triangles (triangle by triangle, edges 0, 1, 2), one node
+// shared by the two triangles of an interior edge: V + E nodes in all. Fills mesh.triangles6: per
+// triangle its three corners (counter-clockwise, as in triangles), then the midpoints of the edges
+// opposite corners 0, 1 and 2 (Triangle's -o2 order). pointMarkers gets one marker per new node: 1
+// on a subsegment or boundary edge, 0 inside (first filled for the corners by Triangle's convention,
+// 1 on subsegments, when empty). vertexKinds, neighbors and stats stay about the corners. writeEle
+// writes 6-node triangles when triangles6 is filled. Call it once, on a mesh with its neighbors (as
+// triangulate() returns it: the shared nodes are found through them).
+void addQuadraticNodes(Mesh& mesh);
+
+// The dual of the mesh: one vertex per triangle (its circumcentre, which in a constrained mesh may
+// lie outside its triangle and even outside the domain) and one edge per mesh edge, the edges in
+// the order they first appear in mesh.triangles (triangle by triangle, edges 0, 1, 2). An interior
+// edge's dual joins the circumcentres of its two triangles; a boundary edge's dual is a ray from its
+// triangle's circumcentre along the edge's outward normal (edge b - a rotated clockwise: its length
+// is the edge's). It is the Voronoi diagram of the vertices only where the mesh is Delaunay (not
+// merely constrained Delaunay). Needs mesh.neighbors, as triangulate() returns them.
+struct Voronoi {
+  std::vector<double> points;          // 2 per triangle: circumcentre x, y
+  std::vector<std::int32_t> edges;     // 2 per mesh edge: Voronoi vertex indices; the second is -1 for a ray
+  std::vector<double> rayDirections;   // 2 per mesh edge: the ray's direction, 0 0 for a finite edge
+  std::vector<std::uint32_t> meshEdges;  // 2 per mesh edge: the mesh edge each dual edge crosses
+};
+Voronoi voronoiDiagram(const Mesh& mesh);
+// Triangle's .v.node (the circumcentres, no attributes or markers) and .v.edge (rays as
+// "<edge #> <vertex> -1 <dx> <dy>"), indices in mesh.indexBase.
+void writeVoronoiNode(std::ostream& out, const Voronoi& voronoi, const Mesh& mesh);
+void writeVoronoiEdge(std::ostream& out, const Voronoi& voronoi, const Mesh& mesh);
+std::string toVoronoiNode(const Voronoi& voronoi, const Mesh& mesh);
+std::string toVoronoiEdge(const Voronoi& voronoi, const Mesh& mesh);
+
+// Refining a mesh: Triangle's .ele (3 or more nodes per triangle: the first three are the corners;
+// attributes are read and ignored) with the .node that holds its points and, when given, the .poly
+// for segments, holes and regions (declaring 0 points, or the same points as the .node) and the .area
+// (<#triangles>, then <triangle #> <maximum area>, -1 or <= 0: none). Errors name file, line, value.
+// Every point of the .node is a point of the PLC: one that no triangle uses (a 6-node .ele's
+// midpoint nodes) becomes a vertex of the refined mesh where it lies in the domain.
+struct MeshFiles {
+  std::string ele, node, poly, area;  // texts; poly and area are used when hasPoly / hasArea
+  bool hasPoly = false, hasArea = false;
+  std::string eleName = "<ele>", nodeName = "<node>", polyName = "<poly>", areaName = "<area>";
+};
+Plc parseMeshFiles(const MeshFiles& files);
+// BASE.ele with BASE.node, and BASE.poly and BASE.area when they exist (readFile does this for .ele).
+Plc readEleFiles(const std::string& elePath);
 // The same texts as strings.
 std::string toNode(const Mesh& mesh);
 std::string toEle(const Mesh& mesh);

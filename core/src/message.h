@@ -1,0 +1,13 @@
+// Messages built from pieces in one out-of-line call: a chain of std::string operator+ is inlined
+// at every use, which costs kilobytes of WebAssembly across the readers' many messages.
+#pragma once
+
+#include <initializer_list>
+#include <string>
+#include <string_view>
+
+namespace ruppert::detail {
+
+std::string message(std::initializer_list<std::string_view> parts);
+
+}  // namespace ruppert::detail

@@ -1,0 +1,104 @@
+// The dual of a mesh (Triangle's -v): circumcentres and one dual edge or ray per mesh edge, and
+// Triangle's .v.node / .v.edge texts. See voronoiDiagram in ruppert.h.
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <ostream>
+#include <string>
+
+#include "mesh_neighbors.h"
+#include "ruppert/ruppert.h"
+#include "text_out.h"
+
+namespace ruppert {
+
+namespace {
+
+using detail::TextOut;
+
+std::string real(double v) {
+  if (!std::isfinite(v)) throw Error(ErrorCode::Internal, "cannot write a non-finite Voronoi coordinate");
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+// Circumcentre of a b c, computed relative to a (the offsets are small where the triangle is).
+void circumcentre(const double* a, const double* b, const double* c, double* out) {
+  const double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
+  const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  const double d = 2 * (bx * cy - by * cx);
+  out[0] = a[0] + (cy * b2 - by * c2) / d;
+  out[1] = a[1] + (bx * c2 - cx * b2) / d;
+}
+
+template <class Print>
+void toStream(std::ostream& out, const char* what, Print&& print) {
+  TextOut text(detail::writeToStream<std::ostream>, &out);
+  print(text);
+  text.flush();
+  out.flush();
+  if (!out) throw Error(ErrorCode::IoError, std::string("writing the ") + what + " output failed");
+}
+
+template <class Print>
+std::string toText(Print&& print) {
+  TextOut text;
+  print(text);
+  return text.take();
+}
+
+void printNode(TextOut& out, const Voronoi& v, const Mesh& mesh) {
+  const std::size_t base = mesh.indexBase == 1 ? 1 : 0, n = v.points.size() / 2;
+  out << n << " 2 0 0\n";
+  for (std::size_t i = 0; i < n; ++i) out << (i + base) << ' ' << real(v.points[2 * i]) << ' ' << real(v.points[2 * i + 1]) << '\n';
+}
+
+void printEdge(TextOut& out, const Voronoi& v, const Mesh& mesh) {
+  const std::int64_t base = mesh.indexBase == 1 ? 1 : 0;
+  const std::size_t n = v.edges.size() / 2;
+  out << n << " 0\n";
+  for (std::size_t e = 0; e < n; ++e) {
+    out << (std::int64_t(e) + base) << ' ' << (v.edges[2 * e] + base) << ' ';
+    if (v.edges[2 * e + 1] < 0) out << "-1 " << real(v.rayDirections[2 * e]) << ' ' << real(v.rayDirections[2 * e + 1]) << '\n';
+    else out << (v.edges[2 * e + 1] + base) << '\n';
+  }
+}
+
+}  // namespace
+
+Voronoi voronoiDiagram(const Mesh& mesh) {
+  detail::requireNeighbors(mesh);
+  Voronoi v;
+  const std::size_t n = mesh.triangles.size() / 3;
+  v.points.resize(2 * n);
+  for (std::size_t t = 0; t < n; ++t)
+    circumcentre(&mesh.points[2 * mesh.triangles[3 * t]], &mesh.points[2 * mesh.triangles[3 * t + 1]],
+                 &mesh.points[2 * mesh.triangles[3 * t + 2]], &v.points[2 * t]);
+  // An edge's dual is made at its first appearance: in t, unless the neighbour across comes first.
+  for (std::size_t t = 0; t < n; ++t)
+    for (int i = 0; i < 3; ++i) {
+      const std::int32_t g = mesh.neighbors[3 * t + i];
+      if (g != kNoNeighbor && static_cast<std::size_t>(g) < t) continue;
+      const std::uint32_t a = mesh.triangles[3 * t + (i + 1) % 3], b = mesh.triangles[3 * t + (i + 2) % 3];
+      v.edges.insert(v.edges.end(), {static_cast<std::int32_t>(t), g});
+      v.meshEdges.insert(v.meshEdges.end(), {a, b});
+      // A ray on the boundary: the outward normal of a -> b (the triangle, counter-clockwise, lies
+      // to its left).
+      const bool ray = g == kNoNeighbor;
+      v.rayDirections.insert(v.rayDirections.end(), {ray ? mesh.points[2 * b + 1] - mesh.points[2 * a + 1] : 0.0,
+                                                     ray ? mesh.points[2 * a] - mesh.points[2 * b] : 0.0});
+    }
+  return v;
+}
+
+void writeVoronoiNode(std::ostream& out, const Voronoi& v, const Mesh& mesh) {
+  toStream(out, ".v.node", [&](TextOut& t) { printNode(t, v, mesh); });
+}
+void writeVoronoiEdge(std::ostream& out, const Voronoi& v, const Mesh& mesh) {
+  toStream(out, ".v.edge", [&](TextOut& t) { printEdge(t, v, mesh); });
+}
+std::string toVoronoiNode(const Voronoi& v, const Mesh& mesh) { return toText([&](TextOut& t) { printNode(t, v, mesh); }); }
+std::string toVoronoiEdge(const Voronoi& v, const Mesh& mesh) { return toText([&](TextOut& t) { printEdge(t, v, mesh); }); }
+
+}  // namespace ruppert
