@@ -30,6 +30,7 @@ const char* usageLine() {
   return "usage: ruppert [--min-angle DEG] [--max-area A] [--max-steiner N] [-o BASE] "
          "[--format triangle|json|svg] [--quiet] [--stats] [--trace FILE] "
          "[--placement offcenter|circumcenter|petal|optimal] [--encroachment lens|disk] [--variant cdt|box] [--convex-hull] [--auto-holes] "
+         "[-e|--edges] [--no-boundary-steiner] [--no-segment-steiner] [-j|--jettison] "
          "[--help] [--version] INPUT";
 }
 
@@ -56,6 +57,13 @@ std::string helpText() {
          "                       (Ruppert's original: conforming mesh of an enclosing box)\n"
          "  --convex-hull        mesh the whole convex hull, not only what segments enclose\n"
          "  --auto-holes         without hole seeds: regions at even nesting depth become holes\n"
+         "  -e, --edges          also write BASE.edge: every edge once, with its boundary marker\n"
+         "                       (triangle format only)\n"
+         "  --no-boundary-steiner  no new vertex on the domain's boundary (Triangle's -Y); what\n"
+         "                       quality that leaves unreachable is reported, not looped over\n"
+         "  --no-segment-steiner   no new vertex on any segment (Triangle's -YY)\n"
+         "  -j, --jettison       leave unused input points (merged duplicates, points outside the\n"
+         "                       domain) out of the output; the others are renumbered in order\n"
          "  --stats              print statistics (vertex kinds, angle histogram, size optimality)\n"
          "  --trace FILE         write every insertion as JSON lines to FILE\n"
          "  --quiet              no summary and no warnings (errors and --stats still print)\n"
@@ -161,6 +169,14 @@ CliArgs parseArgs(const std::vector<std::string>& args) {
       out.options.convexHull = flag();
     } else if (name == "--auto-holes") {
       out.options.autoHoles = flag();
+    } else if (name == "--edges" || name == "-e") {
+      out.options.edges = flag();
+    } else if (name == "--no-boundary-steiner") {
+      out.options.noBoundarySteiner = flag();
+    } else if (name == "--no-segment-steiner") {
+      out.options.noSegmentSteiner = flag();
+    } else if (name == "--jettison" || name == "-j") {
+      out.options.jettison = flag();
     } else if (name == "--help" || name == "-h") {
       out.help = flag();
     } else if (name == "--version") {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "ruppert/ruppert.h"
+#include "boundary_markers.h"
 #include "text_out.h"
 
 namespace ruppert {
@@ -44,26 +45,33 @@ void requireFinite(const std::vector<double>& values, const char* what) {
   }
 }
 
-// Marker per point: the mesh's own when it has one per point; otherwise Triangle's convention of 1 for
-// vertices on a (sub)segment and 0 elsewhere.
-std::vector<std::int32_t> pointMarkers(const Mesh& mesh) {
-  const std::size_t n = pointCount(mesh);
-  if (mesh.pointMarkers.size() == n) return mesh.pointMarkers;
-  std::vector<std::int32_t> markers(n, 0);
-  for (std::uint32_t v : mesh.segments) {
-    if (v < n) markers[v] = 1;
-  }
-  return markers;
+// The mesh itself when it has a marker per point and per subsegment (every mesh triangulate()
+// returns); otherwise a copy with the markers Triangle's convention gives without input markers
+// (1 on the boundary, 0 inside: a mesh handed back from JavaScript without them).
+const Mesh& withMarkers(const Mesh& mesh, Mesh& scratch) {
+  if (mesh.pointMarkers.size() == pointCount(mesh) && mesh.segmentMarkers.size() == mesh.segments.size() / 2)
+    return mesh;
+  scratch = mesh;
+  scratch.segmentIds.resize(mesh.segments.size() / 2, kNoInputSegment);
+  detail::assignMarkers(scratch, Plc{});
+  if (mesh.pointMarkers.size() == pointCount(mesh)) scratch.pointMarkers = mesh.pointMarkers;
+  if (mesh.segmentMarkers.size() == mesh.segments.size() / 2) scratch.segmentMarkers = mesh.segmentMarkers;
+  return scratch;
 }
 
-void writePoints(TextOut& out, const Mesh& mesh) {
-  requireFinite(mesh.points, "points");
-  const std::vector<std::int32_t> markers = pointMarkers(mesh);
+void writePoints(TextOut& out, const Mesh& given) {
+  requireFinite(given.points, "points");
+  Mesh scratch;
+  const Mesh& mesh = withMarkers(given, scratch);
   const std::size_t base = static_cast<std::size_t>(baseOf(mesh));
-  out << pointCount(mesh) << " 2 0 1\n";
+  // Attribute columns (Plc::pointAttributes, interpolated onto new vertices) when there are any.
+  const std::size_t k = mesh.pointAttributes.size() == mesh.attributesPerPoint * pointCount(mesh) ? mesh.attributesPerPoint : 0;
+  if (k) requireFinite(mesh.pointAttributes, "pointAttributes");
+  out << pointCount(mesh) << " 2 " << k << " 1\n";
   for (std::size_t i = 0; i < pointCount(mesh); ++i) {
-    out << (i + base) << ' ' << real(mesh.points[2 * i]) << ' ' << real(mesh.points[2 * i + 1]) << ' '
-        << markers[i] << '\n';
+    out << (i + base) << ' ' << real(mesh.points[2 * i]) << ' ' << real(mesh.points[2 * i + 1]) << ' ';
+    for (std::size_t j = 0; j < k; ++j) out << real(mesh.pointAttributes[k * i + j]) << ' ';
+    out << mesh.pointMarkers[i] << '\n';
   }
 }
 
@@ -113,6 +121,7 @@ const char* reasonName(ReasonKind kind) {
     case ReasonKind::PrecisionFloor: return "precisionFloor";
     case ReasonKind::Cancelled: return "cancelled";
     case ReasonKind::AngleUnreachable: return "angleUnreachable";
+    case ReasonKind::SegmentSplitForbidden: return "segmentSplitForbidden";
   }
   return "unknown";
 }
@@ -183,7 +192,23 @@ void printEle(TextOut& out, const Mesh& mesh) {
   }
 }
 
-void printPoly(TextOut& out, const Mesh& mesh, const Plc& input) {
+void printEdge(TextOut& out, const Mesh& given) {
+  Mesh scratch;
+  const Mesh& mesh = withMarkers(given, scratch);
+  MeshEdges computed;
+  const bool own = !mesh.edges.empty() && mesh.edgeMarkers.size() == mesh.edges.size() / 2;
+  if (!own) computed = meshEdges(mesh);
+  const std::vector<std::uint32_t>& edges = own ? mesh.edges : computed.edges;
+  const std::vector<std::int32_t>& markers = own ? mesh.edgeMarkers : computed.markers;
+  const std::size_t base = static_cast<std::size_t>(baseOf(mesh));
+  out << markers.size() << " 1\n";
+  for (std::size_t e = 0; e < markers.size(); ++e)
+    out << (e + base) << ' ' << (edges[2 * e] + base) << ' ' << (edges[2 * e + 1] + base) << ' ' << markers[e] << '\n';
+}
+
+void printPoly(TextOut& out, const Mesh& given, const Plc& input) {
+  Mesh scratch;
+  const Mesh& mesh = withMarkers(given, scratch);
   requireFinite(input.holes, "holes");
   for (std::size_t i = 0; i < input.regions.size(); ++i) {
     const Region& r = input.regions[i];
@@ -194,10 +219,9 @@ void printPoly(TextOut& out, const Mesh& mesh, const Plc& input) {
   const std::size_t n = mesh.segments.size() / 2;
   out << n << " 1\n";
   for (std::size_t s = 0; s < n; ++s) {
-    // Marker = input segment id + 1, so 0 (Triangle's "no marker") marks the hull edges we added.
-    const std::int64_t id = s < mesh.segmentIds.size() ? mesh.segmentIds[s] : kNoInputSegment;
+    // The boundary marker (ruppert.h, "Boundary markers"): the input segment's, or 1 / 0.
     out << (s + base) << ' ' << (mesh.segments[2 * s] + base) << ' ' << (mesh.segments[2 * s + 1] + base) << ' '
-        << (id == kNoInputSegment ? 0 : id + 1) << '\n';
+        << mesh.segmentMarkers[s] << '\n';
   }
   const std::size_t holes = input.holes.size() / 2;
   out << holes << '\n';
@@ -319,6 +343,8 @@ void writePoly(std::ostream& out, const Mesh& mesh, const Plc& input) {
 void writeJson(std::ostream& out, const Mesh& mesh, const Plc& input) {
   toStream(out, "JSON", [&](TextOut& t) { printJson(t, mesh, input); });
 }
+void writeEdge(std::ostream& out, const Mesh& mesh) { toStream(out, ".edge", [&](TextOut& t) { printEdge(t, mesh); }); }
+std::string toEdge(const Mesh& mesh) { return toText([&](TextOut& t) { printEdge(t, mesh); }); }
 void writeSvg(std::ostream& out, const Mesh& mesh) { toStream(out, "SVG", [&](TextOut& t) { printSvg(t, mesh); }); }
 
 std::string toNode(const Mesh& mesh) { return toText([&](TextOut& t) { printNode(t, mesh); }); }
