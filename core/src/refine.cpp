@@ -358,11 +358,11 @@ class Refiner {
   // ---- forbidden splits (Options::noBoundarySteiner, noSegmentSteiner) ---------------------------
   // Such a subsegment is never split. A point that encroaches it, lies beyond it or on it is not
   // inserted; instead a triangle over its area bound gets a point pulled back towards its centroid
-  // (halfway, a quarter of the way, then the centroid itself) if one encroaches no subsegment
+  // (halfway or a quarter of the way, if that encroaches no subsegment, else the centroid itself)
   // (placeAwayFromForbidden); a triangle that is only skinny stays as it is.
-  // An inserted point thus never lies in a subsegment's lens, so no triangle it makes with one is
-  // flatter than the bound; where no such point exists the triangle stays as it is, reported as
-  // SegmentSplitForbidden. The Steiner budget and the length floor bound the work regardless.
+  // Only centroids of triangles over their area bound may lie in a forbidden subsegment's lens; what
+  // stays bad is reported as SegmentSplitForbidden. The Steiner budget and the length floor bound
+  // the work regardless.
   bool onDomainBoundary(std::uint32_t h) const {
     const std::uint32_t g = t_.twin[h];
     if (m_.inDomain.empty()) return g == kNone;
@@ -387,8 +387,12 @@ class Refiner {
       if (loc.kind == Location::OnEdge && t_.con[loc.edge] != kFree) continue;
       t_.cavity(q, loc, cavityTris_, cavityBoundary_);
       if (mesh_.tooCloseToCavity(q, cavityBoundary_) || !mesh_.representable(q)) continue;
+      // The centroid, the last resort, may encroach a forbidden subsegment: a triangle over its area
+      // bound always holds it, so the bound is met in the end (its distance to the triangle's
+      // corners, at least 2/3 of its smallest altitude, 4 A / (3 longest edge), keeps the splits finite).
       bool encroaches = false;
-      for (std::uint32_t h : cavityBoundary_) encroaches = encroaches || (t_.con[h] != kFree && mesh_.encroachesEdge(q, h));
+      for (std::uint32_t h : cavityBoundary_)
+        encroaches = encroaches || (t_.con[h] != kFree && (lambda > 0 || !splitForbidden(h)) && mesh_.encroachesEdge(q, h));
       if (encroaches) continue;
       insertSteiner(bt, q, loc, VertexKind::Interior, {&cavityTris_, &cavityBoundary_});
       return true;

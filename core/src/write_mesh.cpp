@@ -45,24 +45,21 @@ void requireFinite(const std::vector<double>& values, const char* what) {
   }
 }
 
-// The mesh itself when it has a marker per point and per subsegment (every mesh triangulate()
-// returns); otherwise a copy with the markers Triangle's convention gives without input markers
-// (1 on the boundary, 0 inside: a mesh handed back from JavaScript without them).
-const Mesh& withMarkers(const Mesh& mesh, Mesh& scratch) {
-  if (mesh.pointMarkers.size() == pointCount(mesh) && mesh.segmentMarkers.size() == mesh.segments.size() / 2)
-    return mesh;
-  scratch = mesh;
-  scratch.segmentIds.resize(mesh.segments.size() / 2, kNoInputSegment);
-  detail::assignMarkers(scratch, Plc{});
-  if (mesh.pointMarkers.size() == pointCount(mesh)) scratch.pointMarkers = mesh.pointMarkers;
-  if (mesh.segmentMarkers.size() == mesh.segments.size() / 2) scratch.segmentMarkers = mesh.segmentMarkers;
-  return scratch;
+// The mesh's markers when it has one per point and per subsegment (every mesh triangulate()
+// returns); otherwise, for what is missing, the markers Triangle's convention gives without input
+// markers (1 on the boundary, 0 inside: a mesh handed back from JavaScript without them).
+detail::Markers markersOf(const Mesh& mesh) {
+  const bool points = mesh.pointMarkers.size() == pointCount(mesh);
+  const bool segments = mesh.segmentMarkers.size() == mesh.segments.size() / 2;
+  detail::Markers m = points && segments ? detail::Markers{} : detail::computeMarkers(mesh, Plc{});
+  if (points) m.points = mesh.pointMarkers;
+  if (segments) m.segments = mesh.segmentMarkers;
+  return m;
 }
 
-void writePoints(TextOut& out, const Mesh& given) {
-  requireFinite(given.points, "points");
-  Mesh scratch;
-  const Mesh& mesh = withMarkers(given, scratch);
+void writePoints(TextOut& out, const Mesh& mesh) {
+  requireFinite(mesh.points, "points");
+  const std::vector<std::int32_t> markers = markersOf(mesh).points;
   const std::size_t base = static_cast<std::size_t>(baseOf(mesh));
   // Attribute columns (Plc::pointAttributes, interpolated onto new vertices) when there are any.
   const std::size_t k = mesh.pointAttributes.size() == mesh.attributesPerPoint * pointCount(mesh) ? mesh.attributesPerPoint : 0;
@@ -71,7 +68,7 @@ void writePoints(TextOut& out, const Mesh& given) {
   for (std::size_t i = 0; i < pointCount(mesh); ++i) {
     out << (i + base) << ' ' << real(mesh.points[2 * i]) << ' ' << real(mesh.points[2 * i + 1]) << ' ';
     for (std::size_t j = 0; j < k; ++j) out << real(mesh.pointAttributes[k * i + j]) << ' ';
-    out << mesh.pointMarkers[i] << '\n';
+    out << markers[i] << '\n';
   }
 }
 
@@ -192,12 +189,10 @@ void printEle(TextOut& out, const Mesh& mesh) {
   }
 }
 
-void printEdge(TextOut& out, const Mesh& given) {
-  Mesh scratch;
-  const Mesh& mesh = withMarkers(given, scratch);
+void printEdge(TextOut& out, const Mesh& mesh) {
   MeshEdges computed;
   const bool own = !mesh.edges.empty() && mesh.edgeMarkers.size() == mesh.edges.size() / 2;
-  if (!own) computed = meshEdges(mesh);
+  if (!own) computed = detail::edgesWith(mesh, markersOf(mesh).segments);
   const std::vector<std::uint32_t>& edges = own ? mesh.edges : computed.edges;
   const std::vector<std::int32_t>& markers = own ? mesh.edgeMarkers : computed.markers;
   const std::size_t base = static_cast<std::size_t>(baseOf(mesh));
@@ -206,9 +201,8 @@ void printEdge(TextOut& out, const Mesh& given) {
     out << (e + base) << ' ' << (edges[2 * e] + base) << ' ' << (edges[2 * e + 1] + base) << ' ' << markers[e] << '\n';
 }
 
-void printPoly(TextOut& out, const Mesh& given, const Plc& input) {
-  Mesh scratch;
-  const Mesh& mesh = withMarkers(given, scratch);
+void printPoly(TextOut& out, const Mesh& mesh, const Plc& input) {
+  const std::vector<std::int32_t> segmentMarkers = markersOf(mesh).segments;
   requireFinite(input.holes, "holes");
   for (std::size_t i = 0; i < input.regions.size(); ++i) {
     const Region& r = input.regions[i];
@@ -221,7 +215,7 @@ void printPoly(TextOut& out, const Mesh& given, const Plc& input) {
   for (std::size_t s = 0; s < n; ++s) {
     // The boundary marker (ruppert.h, "Boundary markers"): the input segment's, or 1 / 0.
     out << (s + base) << ' ' << (mesh.segments[2 * s] + base) << ' ' << (mesh.segments[2 * s + 1] + base) << ' '
-        << mesh.segmentMarkers[s] << '\n';
+        << segmentMarkers[s] << '\n';
   }
   const std::size_t holes = input.holes.size() / 2;
   out << holes << '\n';

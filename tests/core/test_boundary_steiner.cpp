@@ -111,5 +111,16 @@ TEST_CASE("no-boundary-steiner still splits interior segments", "[refine][steine
       ++onCrack;
     }
   CHECK(onCrack > 0);
+  // Area bounds are always met: a large triangle gets its centroid if nothing better.
+  for (bool all : {false, true}) {
+    ruppert::Options a = o;
+    a.noSegmentSteiner = all;
+    const ruppert::Mesh m = ruppert::triangulate(plc, a);
+    ValidateOptions v;
+    v.input = &plc;
+    v.maxArea = o.maxArea;
+    CHECK_VALID(m, v);
+    CHECK(m.points.size() / 2 > 300);
+  }
   checkForbidding(plc, 30, false);
 }
