@@ -2,24 +2,27 @@
 #pragma once
 
 #include <cstdint>
-#include <algorithm>
 #include <vector>
 
 #include "ruppert/ruppert.h"
 
 namespace ruppert::detail {
 
-// Key of the undirected edge {a, b}.
-inline std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
-  return a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
-}
+// A set of undirected edges {a, b} with an id each, indexed by their lower vertex (compressed rows,
+// built by counting: no sorting and no hash table, which cost the wasm module kilobytes).
+class EdgeIndex {
+ public:
+  // ends: a0, b0, a1, b1, ... (edge k has id k); vertices below n.
+  EdgeIndex(const std::vector<std::uint32_t>& ends, std::size_t n);
+  // The id of edge {a, b}, or -1.
+  std::int64_t find(std::uint32_t a, std::uint32_t b) const;
 
-// The edges of the mesh with a triangle on one side only, as sorted keys. (Sorted vectors, not hash
-// tables: these instantiations cost the wasm module several kilobytes.)
-std::vector<std::uint64_t> boundaryEdges(const Mesh& mesh);
-inline bool contains(const std::vector<std::uint64_t>& sorted, std::uint64_t key) {
-  return std::binary_search(sorted.begin(), sorted.end(), key);
-}
+ private:
+  std::vector<std::uint32_t> start_, other_, id_;
+};
+
+// The edges of the mesh with a triangle on one side only: a0, b0, a1, b1, ...
+std::vector<std::uint32_t> boundaryEdges(const Mesh& mesh);
 
 struct Markers {
   std::vector<std::int32_t> points, segments;  // one per point, one per subsegment

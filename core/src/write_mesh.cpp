@@ -256,6 +256,26 @@ void printJson(TextOut& out, const Mesh& mesh, const Plc& input) {
   jsonArray(out, "vertexKinds", mesh.vertexKinds, [](std::uint8_t v) { return integer(static_cast<int>(v)); });
   out << ",\n";
   jsonArray(out, "triangleAttributes", mesh.triangleAttributes, number);
+  // Issue 16: boundary markers always; edges, attributes and jettison's numbering when present.
+  const detail::Markers markers = markersOf(mesh);
+  out << ",\n";
+  jsonArray(out, "pointMarkers", markers.points, whole);
+  out << ",\n";
+  jsonArray(out, "segmentMarkers", markers.segments, whole);
+  if (!mesh.edges.empty()) {
+    out << ",\n";
+    jsonArray(out, "edges", mesh.edges, whole);
+    out << ",\n";
+    jsonArray(out, "edgeMarkers", mesh.edgeMarkers, whole);
+  }
+  if (!mesh.pointAttributes.empty()) {
+    out << ",\n  \"attributesPerPoint\": " << mesh.attributesPerPoint << ",\n";
+    jsonArray(out, "pointAttributes", mesh.pointAttributes, number);
+  }
+  if (!mesh.inputToOutput.empty()) {
+    out << ",\n";
+    jsonArray(out, "inputToOutput", mesh.inputToOutput, whole);
+  }
   out << ",\n  \"complete\": " << (mesh.complete ? "true" : "false") << ",\n  \"reasons\": [";
   for (std::size_t i = 0; i < mesh.reasons.size(); ++i) {
     const Reason& r = mesh.reasons[i];

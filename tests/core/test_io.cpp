@@ -543,6 +543,10 @@ TEST_CASE("writeJson then readJson round-trips, with the mesh arrays alongside",
   CHECK_THAT(text, Catch::Contains("\"segmentIds\": [0,1,-1,2]"));
   CHECK_THAT(text, Catch::Contains("\"vertexKinds\": [0,0,0,0,2]"));
   CHECK_THAT(text, Catch::Contains("\"triangleAttributes\": [0,0,0,0]"));
+  // No markers in the hand-made mesh: Triangle's convention (the outer square is the boundary).
+  CHECK_THAT(text, Catch::Contains("\"pointMarkers\": [1,1,1,1,0]"));
+  CHECK_THAT(text, Catch::Contains("\"segmentMarkers\": [1,1,1,1]"));
+  CHECK(text.find("\"edges\"") == std::string::npos);
   CHECK_THAT(text, Catch::Contains("\"complete\": false"));
   CHECK_THAT(text, Catch::Contains("{\"kind\": \"steinerBudget\", \"count\": 3, \"message\": \"budget \\\"100\\\" reached\"}"));
   CHECK_THAT(text, Catch::Contains("\"message\": \"point 5 \\\"dup\\\"\\nmerged\""));

@@ -30,10 +30,12 @@ test('the two-line example from the README meshes a square to the requested qual
   assert.deepEqual(validateMesh(mesh, { input: square, minAngle: 30, maxArea: 0.01 }), []);
 });
 
-test('the shipped .wasm is at most 150 KB gzipped', () => {
+// 150 KB until issue 16, whose markers, edges, attributes, jettison and no-Steiner options took it
+// from 144,912 to 152,977 bytes (measured with build-wasm.mjs's figure on the issue-16-markers branch).
+test('the shipped .wasm is at most 160 KB gzipped', () => {
   const wasm = readFileSync(new URL('./node_modules/ruppert/wasm/dist/ruppert.wasm', import.meta.url));
   const gzipped = gzipSync(wasm, { level: 9 }).length;
-  assert.ok(gzipped <= 150000, `${gzipped} bytes gzipped`);
+  assert.ok(gzipped <= 160000, `${gzipped} bytes gzipped`);
 });
 
 test('init() loads once and returns the same mesher', async () => {
