@@ -54,6 +54,13 @@ TEST_CASE("a linear field at the input points is reproduced at every output vert
       CHECK(mesh.points.size() / 2 > g.plc.points.size() / 2 + 20);
       CHECK(worstError(mesh) < 1e-12);
     }
+    // Ruppert's original variant refines a box around the domain too (its corners carry 0s, but no
+    // vertex of the domain is interpolated from them).
+    ruppert::Options box;
+    box.maxArea = 0.002;
+    box.variant = ruppert::Variant::BoundingBox;
+    INFO("seed " << seed << ", bounding-box variant");
+    CHECK(worstError(ruppert::triangulate(g.plc, box)) < 1e-12);
   }
 }
 
