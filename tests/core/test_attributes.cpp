@@ -151,3 +151,36 @@ TEST_CASE("cli: attribute columns, --jettison and --no-segment-steiner", "[attri
   std::filesystem::remove_all(dir);
 }
 #endif
+
+TEST_CASE("JSON input carries markers and attributes, and the JSON output reads back with them", "[attributes][markers][io]") {
+  const ruppert::Plc plc = ruppert::parseJson(
+      "{\"points\": [0,0, 4,0, 4,4, 0,4], \"segments\": [0,1, 1,2, 2,3, 3,0],"
+      " \"pointMarkers\": [0, -3, 0, 0], \"segmentMarkers\": [7, 0, 0, 0], \"pointAttributes\": [10,0, 14,1, 18,2, 14,3]}");
+  REQUIRE(plc.attributesPerPoint == 2);  // 8 values for 4 points
+  CHECK(plc.pointMarkers == std::vector<std::int32_t>{0, -3, 0, 0});
+  CHECK(plc.segmentMarkers == std::vector<std::int32_t>{7, 0, 0, 0});
+  ruppert::Options o;
+  o.maxArea = 1;
+  const ruppert::Mesh mesh = ruppert::triangulate(plc, o);
+  CHECK(mesh.pointMarkers[0] == 7);   // on segment 0 (marker 7)
+  CHECK(mesh.pointMarkers[1] == -3);  // its own
+  const ruppert::Plc back = ruppert::parseJson(ruppert::toJson(mesh, plc));
+  CHECK(back.pointMarkers == mesh.pointMarkers);
+  CHECK(back.segmentMarkers == mesh.segmentMarkers);
+  CHECK(back.attributesPerPoint == 2);
+  CHECK(back.pointAttributes == mesh.pointAttributes);
+  for (const char* bad : {"{\"points\": [0,0, 1,0, 0,1], \"pointMarkers\": [1, 2]}",
+                          "{\"points\": [0,0, 1,0, 0,1], \"segments\": [0,1], \"segmentMarkers\": [1, 2]}",
+                          "{\"points\": [0,0, 1,0, 0,1], \"pointMarkers\": [1, 2.5, 3]}",
+                          "{\"points\": [0,0, 1,0, 0,1], \"pointAttributes\": [1, 2, 3, 4]}",
+                          "{\"points\": [0,0, 1,0, 0,1], \"pointAttributes\": [1, 2, 3], \"attributesPerPoint\": 2}"}) {
+    INFO(bad);
+    try {
+      ruppert::parseJson(bad);
+      FAIL("no error");
+    } catch (const ruppert::Error& e) {
+      CHECK(e.code() == ruppert::ErrorCode::MalformedInput);
+      CHECK_THAT(e.what(), Catch::Contains("Markers") || Catch::Contains("pointAttributes"));
+    }
+  }
+}

@@ -325,7 +325,9 @@ Plc readPoly(std::istream& in, const std::string& name = "<poly>");
 // .node: points only (attributes and markers allowed).
 Plc readNode(std::istream& in, const std::string& name = "<node>");
 // JSON: { "points": [x0,y0,...], "segments": [a0,b0,...], "holes": [x,y,...],
-//         "regions": [{"x":..,"y":..,"attribute":..,"maxArea":..}] }
+//         "regions": [{"x":..,"y":..,"attribute":..,"maxArea":..}],
+//         "pointMarkers": [...], "segmentMarkers": [...], "pointAttributes": [...], "attributesPerPoint": k }
+// (markers one per point / segment; attributes k per point, k defaulting to their count / points)
 Plc readJson(std::istream& in, const std::string& name = "<json>");
 // By extension: .poly, .node or .json. Throws IoError if unreadable.
 Plc readFile(const std::string& path);
