@@ -119,12 +119,14 @@ ruppert::Plc plcFromJs(const val& js) {
   plc.pointMarkers = copyIn<std::int32_t>(js["pointMarkers"]);
   plc.segmentMarkers = copyIn<std::int32_t>(js["segmentMarkers"]);
   plc.indexBase = js["indexBase"].isNumber() ? js["indexBase"].as<int>() : 0;
+  plc.pointAttributes = copyIn<double>(js["pointAttributes"]);
+  plc.attributesPerPoint = js["attributesPerPoint"].isNumber() ? js["attributesPerPoint"].as<std::uint32_t>() : 0;
   return plc;
 }
 
 // Options as wasm/heap-call.js writes them into the input table (OPTION_FIELDS there), one double
 // each: reading them as embind properties cost a JavaScript round trip per field and per call.
-constexpr int kOptionCount = 10;
+constexpr int kOptionCount = 14;
 
 ruppert::Options optionsFromTable(const double* v) {
   ruppert::Options o;
@@ -139,6 +141,10 @@ ruppert::Options optionsFromTable(const double* v) {
   o.autoHoles = v[7] != 0;
   o.trace = v[8] != 0;
   o.sizeMeasure = v[9] != 0;
+  o.edges = v[10] != 0;
+  o.noBoundarySteiner = v[11] != 0;
+  o.noSegmentSteiner = v[12] != 0;
+  o.jettison = v[13] != 0;
   return o;
 }
 
@@ -173,6 +179,11 @@ ruppert::Mesh meshFromJs(const val& js) {
   m.vertexKinds = copyIn<std::uint8_t>(js["vertexKinds"]);
   m.triangleAttributes = copyIn<double>(js["triangleAttributes"]);
   m.pointMarkers = copyIn<std::int32_t>(js["pointMarkers"]);
+  m.segmentMarkers = copyIn<std::int32_t>(js["segmentMarkers"]);
+  m.edges = copyIn<std::uint32_t>(js["edges"]);
+  m.edgeMarkers = copyIn<std::int32_t>(js["edgeMarkers"]);
+  m.pointAttributes = copyIn<double>(js["pointAttributes"]);
+  m.attributesPerPoint = js["attributesPerPoint"].isNumber() ? js["attributesPerPoint"].as<std::uint32_t>() : 0;
   m.indexBase = js["indexBase"].isNumber() ? js["indexBase"].as<int>() : 0;
   m.triangles6 = copyIn<std::uint32_t>(js["triangles6"]);  // issue 16: order 2
   m.stats.vertices = m.points.size() / 2;
@@ -206,6 +217,7 @@ const char* reasonKindName(ruppert::ReasonKind k) {
     case ruppert::ReasonKind::PrecisionFloor: return "PRECISION_FLOOR";
     case ruppert::ReasonKind::Cancelled: return "CANCELLED";
     case ruppert::ReasonKind::AngleUnreachable: return "ANGLE_UNREACHABLE";
+    case ruppert::ReasonKind::SegmentSplitForbidden: return "SEGMENT_SPLIT_FORBIDDEN";
   }
   return "UNKNOWN";
 }
@@ -322,6 +334,8 @@ val plcToJs(const ruppert::Plc& plc) {
   o.set("pointMarkers", copyOut(plc.pointMarkers));
   o.set("segmentMarkers", copyOut(plc.segmentMarkers));
   o.set("indexBase", plc.indexBase);
+  o.set("pointAttributes", copyOut(plc.pointAttributes));
+  o.set("attributesPerPoint", plc.attributesPerPoint);
   return o;
 }
 
@@ -374,6 +388,10 @@ val parseCliArgs(val argsJs) {
     options.set("sizeMeasure", o.sizeMeasure);
     options.set("order", args.order);      // issue 16, derived
     options.set("voronoi", args.voronoi);
+    options.set("edges", o.edges);
+    options.set("noBoundarySteiner", o.noBoundarySteiner);
+    options.set("noSegmentSteiner", o.noSegmentSteiner);
+    options.set("jettison", o.jettison);
     out.set("options", options);
     return out;
   });
@@ -431,6 +449,8 @@ val writeMesh(val meshJs, val inputJs, std::string format) {
       text = ruppert::toVtu(mesh);
     } else if (format == "geojson") {
       text = ruppert::toGeoJson(mesh);
+    } else if (format == "edge") {
+      text = ruppert::toEdge(mesh);
     } else {
       throw ruppert::Error(ruppert::ErrorCode::InvalidOption, "unknown output format '" + format + "'");
     }
@@ -539,16 +559,16 @@ val readMeshFiles(val texts) {
 // through plain exported functions (rp_*), which cost no more than any wasm call; embind is left for
 // callbacks, failures, traces and the CLI's texts.
 // ---------------------------------------------------------------------------------------------
-// Layout of the output table, read by wasm/heap-call.js (ARRAYS, then the scalars): fifteen
+// Layout of the output table, read by wasm/heap-call.js (ARRAYS, then the scalars): twenty
 // (address, length) pairs, then scalars.
-constexpr int kOutputArrays = 15;
-constexpr int kOutputTableSize = 2 * kOutputArrays + 19;
-constexpr int kInputArrays = 6;
+constexpr int kOutputArrays = 20;
+constexpr int kOutputTableSize = 2 * kOutputArrays + 20;
+constexpr int kInputArrays = 7;
 
 struct Staged {
   ruppert::Plc plc;
   std::vector<double> regions;  // x, y, attribute, maxArea per region
-  // Addresses of the six input arrays (as doubles), then the options (optionsFromTable).
+  // Addresses of the seven input arrays (as doubles), then the options (optionsFromTable).
   double inputTable[kInputArrays + kOptionCount] = {};
   ruppert::Mesh mesh;
   std::vector<double> histogram, reasonNumbers, noticeNumbers;
@@ -584,11 +604,14 @@ void writeOutputTable(Staged& s) {
   array(m.vertexKinds), array(m.triangleAttributes), array(m.pointMarkers), array(s.histogram);
   array(s.reasonNumbers), array(s.reasonText), array(kindNames(&reasonKindName));
   array(s.noticeNumbers), array(s.noticeText), array(kindNames(&noticeKindName));
+  // Issue 16: boundary markers, edges, attributes, jettison's numbering.
+  array(m.segmentMarkers), array(m.edges), array(m.edgeMarkers), array(m.pointAttributes), array(m.inputToOutput);
   for (double v : {double(m.indexBase), m.complete ? 1.0 : 0.0, double(m.reasons.size()), double(m.notices.size()),
                    double(m.events.size()), double(st.vertices), double(st.triangles), st.minAngle, st.maxAngle,
                    double(st.inputVertices), double(st.segmentVertices), double(st.interiorVertices),
                    double(st.offCenterVertices), double(st.intersectionVertices), double(st.rejectedCircumcenters),
-                   st.lfsIntegral, st.trianglesPerLfsIntegral, st.milliseconds, st.reachedAngle})
+                   st.lfsIntegral, st.trianglesPerLfsIntegral, st.milliseconds, st.reachedAngle,
+                   double(m.attributesPerPoint)})
     *t++ = v;
 }
 
@@ -647,9 +670,11 @@ extern "C" {
 
 // Sizes the staged input arrays (lengths in elements) and returns the address of the input table:
 // the addresses where JavaScript writes points (f64), segments (u32), holes (f64), regions (f64, 4 per
-// region), pointMarkers (i32), segmentMarkers (i32), then the options. 0 if they do not fit in memory.
+// region), pointMarkers (i32), segmentMarkers (i32), pointAttributes (f64), then the options. 0 if they
+// do not fit in memory.
 EMSCRIPTEN_KEEPALIVE std::uintptr_t rp_stage_input(double points, double segments, double holes, double regions,
-                                                   double pointMarkers, double segmentMarkers, int indexBase) {
+                                                   double pointMarkers, double segmentMarkers, double pointAttributes,
+                                                   int indexBase, int attributesPerPoint) {
   Staged& s = staged();
   try {
     s.mesh = ruppert::Mesh{};
@@ -659,7 +684,9 @@ EMSCRIPTEN_KEEPALIVE std::uintptr_t rp_stage_input(double points, double segment
     s.inputTable[3] = sized(s.regions, regions);
     s.inputTable[4] = sized(s.plc.pointMarkers, pointMarkers);
     s.inputTable[5] = sized(s.plc.segmentMarkers, segmentMarkers);
+    s.inputTable[6] = sized(s.plc.pointAttributes, pointAttributes);
     s.plc.indexBase = indexBase;
+    s.plc.attributesPerPoint = static_cast<std::uint32_t>(attributesPerPoint);
   } catch (const std::bad_alloc&) {
     s.plc = ruppert::Plc{};
     s.regions = {};

@@ -143,6 +143,7 @@ async function main(argv) {
         await write(`${base}.node`, mesher.toNode(mesh));
         await write(`${base}.ele`, mesher.toEle(mesh));
         await write(`${base}.poly`, mesher.toPoly(mesh, plc));
+        if (args.options.edges) await write(`${base}.edge`, mesher.toEdge(mesh));
       } else if (args.format === 'json') {
         await write(`${base}.json`, mesher.toJson(mesh, plc));
       } else if (args.format === 'msh') {

@@ -15,18 +15,23 @@ const ARRAYS = [
   // Read here at once, before anything can grow the heap: views, not copies.
   ['reasonNumbers', Float64Array, 'view'], ['reasonText', Uint8Array, 'view'], ['reasonKinds', Uint8Array, 'view'],
   ['noticeNumbers', Float64Array, 'view'], ['noticeText', Uint8Array, 'view'], ['noticeKinds', Uint8Array, 'view'],
+  // Issue 16: boundary markers, edges, attributes, jettison's numbering.
+  ['segmentMarkers', Int32Array], ['edges', Uint32Array], ['edgeMarkers', Int32Array],
+  ['pointAttributes', Float64Array], ['inputToOutput', Int32Array],
 ];
 const STATS_BEFORE_HISTOGRAM = ['vertices', 'triangles', 'minAngle', 'maxAngle'];
 const STATS_AFTER_HISTOGRAM = ['inputVertices', 'segmentVertices', 'interiorVertices', 'offCenterVertices',
   'intersectionVertices', 'rejectedCircumcenters', 'lfsIntegral', 'trianglesPerLfsIntegral', 'milliseconds', 'reachedAngle'];
+// The scalars after the stats (the attribute count), in the table's order.
+const SCALARS_AFTER_STATS = ['attributesPerPoint'];
 
 const INPUTS = [
   ['points', Float64Array], ['segments', Uint32Array], ['holes', Float64Array], ['regions', Float64Array],
-  ['pointMarkers', Int32Array], ['segmentMarkers', Int32Array],
+  ['pointMarkers', Int32Array], ['segmentMarkers', Int32Array], ['pointAttributes', Float64Array],
 ];
 // After the input arrays' addresses in the input table, one double each (optionsFromTable in bindings.cpp).
 const OPTION_FIELDS = ['minAngle', 'maxArea', 'maxSteiner', 'placement', 'encroachment', 'variant', 'convexHull',
-  'autoHoles', 'trace', 'sizeMeasure'];
+  'autoHoles', 'trace', 'sizeMeasure', 'edges', 'noBoundarySteiner', 'noSegmentSteiner', 'jettison'];
 
 // Issue 16, derived: the old mesh to refine, order and voronoi go in a table of their own
 // (rp_stage_derived, DerivedStaged in bindings.cpp); what they give comes back in another
@@ -109,7 +114,7 @@ function writeInput(m, inputTable, input, options) {
   for (let i = 0; i < OPTION_FIELDS.length; i++) f64[table + INPUTS.length + i] = Number(options[OPTION_FIELDS[i]]);
 }
 
-function readMesh(m) {
+function readMesh(m, options) {
   const table = m.HEAPF64.subarray(m._rp_output_table() >>> 3);
   const arrays = {};
   let k = 0;
@@ -127,14 +132,20 @@ function readMesh(m) {
   for (const name of STATS_BEFORE_HISTOGRAM) stats[name] = table[k++];
   stats.angleHistogram = arrays.angleHistogram;
   for (const name of STATS_AFTER_HISTOGRAM) stats[name] = table[k++];
-  return {
+  const scalars = {};
+  for (const name of SCALARS_AFTER_STATS) scalars[name] = table[k++];
+  const mesh = {
     points: arrays.points, triangles: arrays.triangles, neighbors: arrays.neighbors, segments: arrays.segments,
     segmentIds: arrays.segmentIds, vertexKinds: arrays.vertexKinds, triangleAttributes: arrays.triangleAttributes,
-    pointMarkers: arrays.pointMarkers, indexBase, complete,
+    pointMarkers: arrays.pointMarkers, segmentMarkers: arrays.segmentMarkers,
+    pointAttributes: arrays.pointAttributes, attributesPerPoint: scalars.attributesPerPoint, indexBase, complete,
     reasons: reasonsFromHeap(reasonCount, arrays.reasonNumbers, arrays.reasonText, arrays.reasonKinds),
     notices: noticesFromHeap(noticeCount, arrays.noticeNumbers, arrays.noticeText, arrays.noticeKinds),
     stats,
   };
+  if (options.edges) mesh.edges = arrays.edges, mesh.edgeMarkers = arrays.edgeMarkers;
+  if (options.jettison) mesh.inputToOutput = arrays.inputToOutput;
+  return mesh;
 }
 
 /**
@@ -146,7 +157,7 @@ function readMesh(m) {
  */
 export function triangulateInHeap(m, input, options, report) {
   const lengths = INPUTS.map(([name]) => input[name].length);
-  const inputTable = m._rp_stage_input(...lengths, input.indexBase);
+  const inputTable = m._rp_stage_input(...lengths, input.indexBase, input.attributesPerPoint);
   if (inputTable === 0) {
     return { errorCode: 'TOO_LARGE', errorMessage: 'out of memory: the input does not fit in 4 GB of WebAssembly memory', reset: true };
   }
@@ -165,7 +176,7 @@ export function triangulateInHeap(m, input, options, report) {
     m._rp_release_staged();
     return failure;
   }
-  const mesh = readMesh(m);
+  const mesh = readMesh(m, options);
   readDerived(m, mesh, options);
   if (options.trace || report != null) {
     const extras = m.stagedExtras(report ?? null, options.trace);

@@ -22,10 +22,20 @@ export interface Plc {
   /** Hole seeds hx0, hy0, hx1, hy1, ... */
   holes?: NumberArray;
   regions?: Region[];
-  /** One per point, or empty (carried through for Triangle-format round trips). */
+  /**
+   * Boundary markers, one per point, or empty: a nonzero one is kept in mesh.pointMarkers (see
+   * Mesh.pointMarkers for Triangle's rules).
+   */
   pointMarkers?: NumberArray;
-  /** One per segment, or empty. */
+  /** One per segment, or empty: every subsegment of the segment, and every vertex on it, carries it. */
   segmentMarkers?: NumberArray;
+  /**
+   * Per-point attributes, flat: attributesPerPoint values per point, point after point. Interpolated
+   * linearly onto every new vertex (mesh.pointAttributes).
+   */
+  pointAttributes?: NumberArray;
+  /** Values per point in pointAttributes; default: its length divided by the number of points. */
+  attributesPerPoint?: number;
   /** 0 or 1: the index base writers print. */
   indexBase?: 0 | 1;
   /**
@@ -49,6 +59,9 @@ export interface ParsedPlc extends Plc {
   pointMarkers: Int32Array;
   segmentMarkers: Int32Array;
   indexBase: 0 | 1;
+  /** The .node's attribute columns, attributesPerPoint per point (empty without any). */
+  pointAttributes: Float64Array;
+  attributesPerPoint: number;
 }
 
 export interface Progress {
@@ -92,6 +105,17 @@ export interface TriangulateOptions {
   autoHoles?: boolean;
   /** Called every few thousand insertions; return false to stop early (complete = false). */
   onProgress?: (progress: Progress) => boolean | void;
+  /** Also return mesh.edges and mesh.edgeMarkers (Triangle's -e). */
+  edges?: boolean;
+  /**
+   * No new vertex on the domain's boundary (Triangle's -Y): its subsegments stay as the input gave
+   * them; triangles that only such a vertex could fix are left, reported as SEGMENT_SPLIT_FORBIDDEN.
+   */
+  noBoundarySteiner?: boolean;
+  /** No new vertex on any segment (Triangle's -YY); as noBoundarySteiner otherwise. */
+  noSegmentSteiner?: boolean;
+  /** Leave unused input points out of mesh.points (Triangle's -j); mesh.inputToOutput maps the indices. */
+  jettison?: boolean;
   /**
    * 2: quadratic triangles: mesh.triangles6, and one midpoint node per edge appended to points
    * (and pointMarkers) after the corner vertices. Default 1.
@@ -117,7 +141,10 @@ export type ReasonKind = 'SMALL_INPUT_ANGLE' | 'SEDITIOUS_EDGE' | 'STEINER_BUDGE
   // minAngle above 34 degrees that refinement could not reach: the mesh is the best one reached
   // (stats.reachedAngle): the 33-degree mesh, or better, from raising its bound a degree at a time
   // while the mesh improved.
-  | 'ANGLE_UNREACHABLE';
+  | 'ANGLE_UNREACHABLE'
+  // noBoundarySteiner / noSegmentSteiner: triangles left bad because only a vertex on a subsegment
+  // that may not be split would fix them.
+  | 'SEGMENT_SPLIT_FORBIDDEN';
 export type NoticeKind = 'DUPLICATE_POINT' | 'ZERO_LENGTH_SEGMENT' | 'DUPLICATE_SEGMENT' | 'VERTEX_ON_SEGMENT' |
   'SEGMENTS_CROSS' | 'SEGMENTS_OVERLAP' | 'HOLE_OUTSIDE_DOMAIN' | 'REGION_OUTSIDE_DOMAIN' | 'NOTHING_ENCLOSED';
 
@@ -196,8 +223,26 @@ export interface Mesh {
   vertexKinds: Uint8Array;
   /** Region attribute per triangle. */
   triangleAttributes: Float64Array;
-  /** Per point if the input had markers, else empty. */
+  /**
+   * Boundary marker per point, Triangle's rules: a nonzero input marker is kept; else a vertex on an
+   * input segment with a nonzero marker (its ends and every vertex inserted on it) has that marker
+   * (on several: the lowest segment index's); else 1 on the mesh's boundary (holes included), 0 inside.
+   */
   pointMarkers: Int32Array;
+  /** Boundary marker per subsegment: its input segment's if nonzero, else 1 on the boundary, 0 inside. */
+  segmentMarkers: Int32Array;
+  /** With options.edges: every edge once, two vertex indices each. */
+  edges?: Uint32Array;
+  /** With options.edges: per edge, its subsegment's marker, else 1 on the boundary, 0 inside. */
+  edgeMarkers?: Int32Array;
+  /** attributesPerPoint values per point: the input's, interpolated linearly onto new vertices. */
+  pointAttributes: Float64Array;
+  attributesPerPoint: number;
+  /**
+   * With options.jettison: per input point, its index in points; a merged duplicate gives the index
+   * of the point it was merged into, a point outside the domain -1.
+   */
+  inputToOutput?: Int32Array;
   indexBase: 0 | 1;
   /** Every bound met, except the exemptions of small input angles (chapter 6.6). */
   complete: boolean;
@@ -287,6 +332,8 @@ export interface Mesher {
   parseJson(text: string, name?: string): ParsedPlc;
   toNode(mesh: Mesh): string;
   toEle(mesh: Mesh): string;
+  /** Triangle's .edge text (mesh.edges if present, else computed). */
+  toEdge(mesh: Mesh): string;
   toPoly(mesh: Mesh, input?: Plc): string;
   toJson(mesh: Mesh, input?: Plc): string;
   toSVG(mesh: Mesh): string;
@@ -318,6 +365,7 @@ export declare function parseJson(text: string, name?: string): ParsedPlc;
 export declare function toPoly(mesh: Mesh, input?: Plc): string;
 export declare function toNode(mesh: Mesh): string;
 export declare function toEle(mesh: Mesh): string;
+export declare function toEdge(mesh: Mesh): string;
 export declare function toJson(mesh: Mesh, input?: Plc): string;
 export declare function toSVG(mesh: Mesh): string;
 export declare function parseGeoJson(text: string, name?: string): ParsedPlc;

@@ -84,6 +84,8 @@ export const toPoly = (mesh, input) => loaded('toPoly').toPoly(mesh, input);
 export const toNode = (mesh) => loaded('toNode').toNode(mesh);
 /** Triangle's .ele text of a mesh's triangles. */
 export const toEle = (mesh) => loaded('toEle').toEle(mesh);
+/** Triangle's .edge text: every edge of a mesh once, with its boundary marker. */
+export const toEdge = (mesh) => loaded('toEdge').toEdge(mesh);
 /** JSON text of a mesh (the input format plus triangles etc.). */
 export const toJson = (mesh, input) => loaded('toJson').toJson(mesh, input);
 /** SVG text drawing a mesh. */

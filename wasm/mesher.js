@@ -189,6 +189,7 @@ export function createMesher(compiled, firstModule) {
     parseJson: (text, name = '<json>') => read(text, 'json', name, 'parseJson'),
     toNode: (mesh) => write(mesh, null, 'node'),
     toEle: (mesh) => write(mesh, null, 'ele'),
+    toEdge: (mesh) => write(mesh, null, 'edge'),
     toPoly: (mesh, input) => write(mesh, input, 'poly'),
     toJson: (mesh, input) => write(mesh, input, 'json'),
     toSVG: (mesh) => write(mesh, null, 'svg'),

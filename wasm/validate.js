@@ -10,7 +10,7 @@ import { nearestKey, rejectUnknownKeys } from './known-keys.js';
 
 const MAX_UINT32 = 0xffffffff;
 const PLC_KEYS = ['points', 'segments', 'holes', 'regions', 'pointMarkers', 'segmentMarkers', 'indexBase',
-  'triangles', 'triangleMaxArea'];
+  'triangles', 'triangleMaxArea', 'pointAttributes', 'attributesPerPoint'];
 const REGION_KEYS = ['x', 'y', 'attribute', 'maxArea'];
 
 function describe(value) {
@@ -178,7 +178,32 @@ export function normalizePlc(plc) {
   const indexBase = plc.indexBase ?? 0;
   if (indexBase !== 0 && indexBase !== 1) throw invalid(`indexBase = ${describe(indexBase)} must be 0 or 1`);
   const { triangles, triangleMaxArea } = oldMesh(plc, pointCount);
-  return { points, segments, holes, regions, pointMarkers, segmentMarkers, indexBase, triangles, triangleMaxArea };
+  const { pointAttributes, attributesPerPoint } = normalizeAttributes(plc, pointCount);
+  return { points, segments, holes, regions, pointMarkers, segmentMarkers, indexBase, triangles, triangleMaxArea,
+    pointAttributes, attributesPerPoint };
+}
+
+// pointAttributes: flat, attributesPerPoint values per point; without attributesPerPoint the count is
+// the length divided by the number of points (which must divide it).
+function normalizeAttributes(plc, pointCount) {
+  const pointAttributes = plc.pointAttributes == null ? new Float64Array(0)
+    : toFloat64(plc.pointAttributes, 'pointAttributes', { pairs: false });
+  let attributesPerPoint = plc.attributesPerPoint;
+  if (attributesPerPoint !== undefined &&
+      (!Number.isInteger(attributesPerPoint) || attributesPerPoint < 0 || attributesPerPoint > 0xffff)) {
+    throw invalid(`attributesPerPoint = ${describe(attributesPerPoint)} must be an integer in [0, 65535]`);
+  }
+  if (attributesPerPoint === undefined) {
+    if (pointAttributes.length % Math.max(pointCount, 1) !== 0) {
+      throw invalid(`pointAttributes has ${pointAttributes.length} entries, not a multiple of the ${pointCount} points`);
+    }
+    attributesPerPoint = pointCount > 0 ? pointAttributes.length / pointCount : 0;
+  }
+  if (pointAttributes.length !== attributesPerPoint * pointCount) {
+    throw invalid(`pointAttributes has ${pointAttributes.length} entries for ${pointCount} points with ` +
+      `${attributesPerPoint} attribute(s) each`);
+  }
+  return { pointAttributes, attributesPerPoint: pointAttributes.length === 0 ? 0 : attributesPerPoint };
 }
 
 const PLACEMENTS = { circumcenter: 0, offcenter: 1, petal: 2, optimal: 3 };
@@ -186,7 +211,7 @@ const ENCROACHMENTS = { disk: 0, lens: 1 };
 const VARIANTS = { cdt: 0, box: 1 };
 const OPTION_KEYS = ['minAngle', 'maxArea', 'maxSteiner', 'sizeFunction', 'onProgress', 'trace',
   'placement', 'encroachment', 'variant', 'convexHull', 'autoHoles', 'sizeMeasure',
-  'order', 'voronoi'];
+  'order', 'voronoi', 'edges', 'noBoundarySteiner', 'noSegmentSteiner', 'jettison'];
 
 function badOption(message) {
   return new MeshError('INVALID_OPTION', message);
@@ -272,6 +297,10 @@ export function normalizeOptions(options) {
     autoHoles: booleanOption(options, 'autoHoles'),
     trace: booleanOption(options, 'trace'),
     sizeMeasure: booleanOption(options, 'sizeMeasure'),
+    edges: booleanOption(options, 'edges'),
+    noBoundarySteiner: booleanOption(options, 'noBoundarySteiner'),
+    noSegmentSteiner: booleanOption(options, 'noSegmentSteiner'),
+    jettison: booleanOption(options, 'jettison'),
     sizeFunction: functionOption(options, 'sizeFunction'),
     onProgress: functionOption(options, 'onProgress'),
     order: orderOption(options),
@@ -302,6 +331,12 @@ export function normalizeMesh(mesh) {
   if (triangles6.length !== 0 && triangles6.length !== 2 * triangles.length) {
     throw invalid(`mesh.triangles6 has length ${triangles6.length}, not 6 per triangle`);
   }
+  const segmentMarkers = toMarkers(mesh.segmentMarkers, 'mesh.segmentMarkers');
+  const edges = toIndices(mesh.edges ?? [], 'mesh.edges', n, 'point');
+  if (edges.length % 2 !== 0) throw invalid(`mesh.edges has odd length ${edges.length}`);
+  const edgeMarkers = toMarkers(mesh.edgeMarkers, 'mesh.edgeMarkers');
+  const { pointAttributes, attributesPerPoint } = normalizeAttributes(
+    { pointAttributes: mesh.pointAttributes, attributesPerPoint: mesh.attributesPerPoint || undefined }, n);
   return { points, triangles, neighbors, segments, segmentIds, vertexKinds, triangleAttributes,
-    pointMarkers, indexBase, triangles6 };
+    pointMarkers, indexBase, triangles6, segmentMarkers, edges, edgeMarkers, pointAttributes, attributesPerPoint };
 }

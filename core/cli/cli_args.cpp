@@ -30,7 +30,8 @@ const char* usageLine() {
   return "usage: ruppert [--min-angle DEG] [--max-area A] [--max-steiner N] [-o BASE] "
          "[--format triangle|json|svg|msh|vtu|geojson] [--input-format poly|node|json|geojson] [--quiet] [--stats] [--trace FILE] "
          "[--placement offcenter|circumcenter|petal|optimal] [--encroachment lens|disk] [--variant cdt|box] [--convex-hull] [--auto-holes] "
-         "[--order 1|2] [--voronoi] [--help] [--version] INPUT";
+         "[--order 1|2] [--voronoi] [-e|--edges] [--no-boundary-steiner] [--no-segment-steiner] [-j|--jettison] "
+         "[--help] [--version] INPUT";
 }
 
 std::string helpText() {
@@ -67,6 +68,13 @@ std::string helpText() {
          "  --order 2            quadratic triangles: .ele gets 6 nodes per triangle (corners, then the\n"
          "                       midpoints of the edges opposite them), .node the midpoints after the corners\n"
          "  --voronoi            also write the dual: BASE.v.node (circumcentres) and BASE.v.edge\n"
+         "  -e, --edges          also write BASE.edge: every edge once, with its boundary marker\n"
+         "                       (triangle format only)\n"
+         "  --no-boundary-steiner  no new vertex on the domain's boundary (Triangle's -Y); what\n"
+         "                       quality that leaves unreachable is reported, not looped over\n"
+         "  --no-segment-steiner   no new vertex on any segment (Triangle's -YY)\n"
+         "  -j, --jettison       leave unused input points (merged duplicates, points outside the\n"
+         "                       domain) out of the output; the others are renumbered in order\n"
          "  --stats              print statistics (vertex kinds, angle histogram, size optimality)\n"
          "  --trace FILE         write every insertion as JSON lines to FILE\n"
          "  --quiet              no summary and no warnings (errors and --stats still print)\n"
@@ -187,6 +195,14 @@ CliArgs parseArgs(const std::vector<std::string>& args) {
       out.order = v == "2" ? 2 : 1;
     } else if (name == "--voronoi") {
       out.voronoi = flag();
+    } else if (name == "--edges" || name == "-e") {
+      out.options.edges = flag();
+    } else if (name == "--no-boundary-steiner") {
+      out.options.noBoundarySteiner = flag();
+    } else if (name == "--no-segment-steiner") {
+      out.options.noSegmentSteiner = flag();
+    } else if (name == "--jettison" || name == "-j") {
+      out.options.jettison = flag();
     } else if (name == "--help" || name == "-h") {
       out.help = flag();
     } else if (name == "--version") {

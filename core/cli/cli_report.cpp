@@ -35,6 +35,7 @@ const char* reasonLabel(ReasonKind kind) {
     case ReasonKind::PrecisionFloor: return "precision floor";
     case ReasonKind::Cancelled: return "cancelled";
     case ReasonKind::AngleUnreachable: return "angle out of reach";
+    case ReasonKind::SegmentSplitForbidden: return "segment split forbidden";
   }
   return "unknown";
 }

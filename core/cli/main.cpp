@@ -77,6 +77,7 @@ void writeOutputs(const ruppert::cli::CliArgs& args, ruppert::Mesh& mesh, const 
         writeFile(base + ".node", [&](std::ostream& out) { ruppert::writeNode(out, mesh); });
         writeFile(base + ".ele", [&](std::ostream& out) { ruppert::writeEle(out, mesh); });
         writeFile(base + ".poly", [&](std::ostream& out) { ruppert::writePoly(out, mesh, plc); });
+        if (args.options.edges) writeFile(base + ".edge", [&](std::ostream& out) { ruppert::writeEdge(out, mesh); });
         break;
       case OutputFormat::Json:
         writeSingle(base, ".json", [&](std::ostream& out) { ruppert::writeJson(out, mesh, plc); });

@@ -31,9 +31,14 @@ struct MeshState {
   const OldMesh* oldMesh = nullptr;
   std::size_t segmentCount() const { return plc->segments.size() / 2; }
 
+  // Plc::pointAttributes per vertex (attributeCount each; point_attributes.h), or empty.
+  std::uint32_t attributeCount = 0;
+  std::vector<double> attributes;
+
   std::uint32_t addVertex(double x, double y, VertexKind k, std::int32_t segment) {
     kind.push_back(k);
     onSegment.push_back(segment);
+    attributes.resize(attributes.size() + attributeCount, 0.0);
     return tri.addVertex(x, y);
   }
   // Per internal vertex: its index in Mesh::points, or kNone if left out (built by the output stage).

@@ -68,6 +68,21 @@ std::string duplicateMessage(std::uint32_t i, std::uint32_t rep) {
 
 }  // namespace
 
+// Plc::pointAttributes: attributesPerPoint finite values per point, or none.
+void checkAttributes(const Plc& plc, std::size_t n) {
+  const std::vector<double>& a = plc.pointAttributes;
+  if (a.empty()) return;
+  if (plc.attributesPerPoint == 0 || a.size() != std::size_t(plc.attributesPerPoint) * n)
+    fail(ErrorCode::MalformedInput, "pointAttributes has " + std::to_string(a.size()) + " values for " +
+                                        std::to_string(n) + " points with attributesPerPoint = " +
+                                        std::to_string(plc.attributesPerPoint));
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (!std::isfinite(a[i]))
+      fail(ErrorCode::NonFiniteCoordinate, "pointAttributes[" + std::to_string(i) + "] (point " +
+                                               std::to_string(i / plc.attributesPerPoint) + ") = " +
+                                               formatNumber(a[i]) + " is not finite");
+}
+
 PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<Notice>& notices) {
   checkOptions(options);
   if (plc.points.size() % 2 != 0)
@@ -96,6 +111,7 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
     checkFinite(plc.points[2 * i], "points", i, ".x");
     checkFinite(plc.points[2 * i + 1], "points", i, ".y");
   }
+  checkAttributes(plc, n);
   for (std::size_t k = 0; k < plc.segments.size(); ++k) {
     if (plc.segments[k] >= n)
       fail(ErrorCode::IndexOutOfRange, "segments[" + std::to_string(k / 2) + "] refers to point " +

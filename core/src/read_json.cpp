@@ -1,8 +1,10 @@
 // JSON reader for the PLC shape documented in ruppert.h:
 //   { "points": [x0,y0,...], "segments": [a0,b0,...], "holes": [x,y,...],
 //     "regions": [{"x":..,"y":..,"attribute":..,"maxArea":..}] }
-// "points" is required; the rest are optional. Unknown keys (and "triangles", which our own writer
-// emits) are parsed for syntax and ignored, so a written mesh reads back as its PLC.
+// "points" is required; the rest are optional, "pointMarkers" and "segmentMarkers" (one integer per
+// point / segment), "pointAttributes" (attributesPerPoint numbers per point) and "attributesPerPoint"
+// among them. Unknown keys (and "triangles", which our own writer emits) are parsed for syntax and
+// ignored, so a written mesh reads back as its PLC.
 //
 // The parser is a small recursive-descent reader of RFC 8259 JSON that fills the Plc directly instead
 // of building a document tree: a million points cost 16 MB, not a tree of tagged values. Nesting is
@@ -42,10 +44,13 @@ class JsonReader {
     if (p_ == end_) fail(ErrorCode::ParseError, "the input is empty; expected a JSON object");
     if (*p_ != '{') fail(ErrorCode::MalformedInput, "the top level must be an object ({ \"points\": [...] })");
     Plc plc;
-    bool seen[4] = {false, false, false, false};
-    static const char* const kKnown[4] = {"points", "segments", "holes", "regions"};
+    constexpr int kKeys = 8;
+    bool seen[kKeys] = {};
+    static const char* const kKnown[kKeys] = {"points", "segments", "holes", "regions",
+                                              "pointMarkers", "segmentMarkers", "pointAttributes", "attributesPerPoint"};
+    double attributesPerPoint = -1;  // -1: not given
     members(1, [&](const std::string& key, int depth) {
-      for (int k = 0; k < 4; ++k) {
+      for (int k = 0; k < kKeys; ++k) {
         if (key != kKnown[k]) continue;
         if (seen[k]) fail(ErrorCode::MalformedInput, "duplicate key \"" + key + "\"");
         seen[k] = true;
@@ -53,7 +58,11 @@ class JsonReader {
           case 0: numbers(key, depth, plc.points); return;
           case 1: indices(key, depth, plc.segments); return;
           case 2: numbers(key, depth, plc.holes); return;
-          default: regions(key, depth, plc.regions); return;
+          case 3: regions(key, depth, plc.regions); return;
+          case 4: markers(key, depth, plc.pointMarkers); return;
+          case 5: markers(key, depth, plc.segmentMarkers); return;
+          case 6: numbers(key, depth, plc.pointAttributes); return;
+          default: attributesPerPoint = count(key); return;
         }
       }
       skipValue(depth);
@@ -73,6 +82,7 @@ class JsonReader {
                    std::to_string(plc.segments[i]) + " but there are " + std::to_string(pointCount) + " points");
       }
     }
+    checkPerItem(plc, attributesPerPoint);
     plc.indexBase = 0;
     return plc;
   }
@@ -341,6 +351,49 @@ class JsonReader {
       }
       out.push_back(static_cast<std::uint32_t>(v));
     });
+  }
+
+  // Boundary markers: 32-bit integers, negative ones too.
+  void markers(const std::string& key, int depth, std::vector<std::int32_t>& out) {
+    requireArray(key);
+    elements(depth, key, [&](const std::string& path, int) {
+      if (!startsNumber()) fail(ErrorCode::MalformedInput, path + " is not a number");
+      const char* start = p_;
+      std::string text;
+      const double v = number(path, text);
+      if (v != std::floor(v) || v < -2147483648.0 || v > 2147483647.0)
+        failAt(start, ErrorCode::MalformedInput, path + " = " + text + " is not a 32-bit integer marker");
+      out.push_back(static_cast<std::int32_t>(v));
+    });
+  }
+
+  // "attributesPerPoint": a whole number of values per point.
+  double count(const std::string& key) {
+    const char* start = p_;
+    const double v = requireNumber(key);
+    if (v != std::floor(v) || v < 0 || v > 65535)
+      failAt(start, ErrorCode::MalformedInput, key + " must be an integer in [0, 65535]");
+    return v;
+  }
+
+  // Markers one per point / segment (or none); attributes attributesPerPoint per point (or, without
+  // it, the length over the number of points, which must divide it).
+  void checkPerItem(Plc& plc, double attributesPerPoint) const {
+    const std::size_t n = plc.points.size() / 2, segments = plc.segments.size() / 2;
+    if (!plc.pointMarkers.empty() && plc.pointMarkers.size() != n)
+      failAt(begin_, ErrorCode::MalformedInput, "pointMarkers has " + std::to_string(plc.pointMarkers.size()) +
+                                                    " entries for " + std::to_string(n) + " points");
+    if (!plc.segmentMarkers.empty() && plc.segmentMarkers.size() != segments)
+      failAt(begin_, ErrorCode::MalformedInput, "segmentMarkers has " + std::to_string(plc.segmentMarkers.size()) +
+                                                    " entries for " + std::to_string(segments) + " segments");
+    const std::size_t values = plc.pointAttributes.size();
+    if (values == 0) return;
+    const std::size_t k = attributesPerPoint >= 0 ? static_cast<std::size_t>(attributesPerPoint) : n > 0 ? values / n : 0;
+    if (k == 0 || values != k * n)
+      failAt(begin_, ErrorCode::MalformedInput, "pointAttributes has " + std::to_string(values) + " values for " +
+                                                    std::to_string(n) + " points" +
+                                                    (attributesPerPoint >= 0 ? " with attributesPerPoint = " + std::to_string(k) : ""));
+    plc.attributesPerPoint = static_cast<std::uint32_t>(k);
   }
 
   void regions(const std::string& key, int depth, std::vector<Region>& out) {

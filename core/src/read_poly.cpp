@@ -205,6 +205,15 @@ class TriangleReader {
     const std::uint64_t room = in_.checkCount(n, 3, header.line, "point");
     plc.points.reserve(2 * room);
     if (markers) plc.pointMarkers.reserve(room);
+    // Attribute columns are kept (Plc::pointAttributes) up to kMaxAttributes per point and 2^27 values
+    // in all (missing trailing fields read as 0, as Triangle reads them, so the count alone sets the
+    // memory). A larger declared count is accepted only when no point gives an attribute.
+    constexpr std::uint64_t kMaxAttributes = 65535, kMaxAttributeValues = std::uint64_t(1) << 27;
+    const bool keep = attributes > 0 && attributes <= kMaxAttributes && n * attributes <= kMaxAttributeValues;
+    if (keep) {
+      plc.attributesPerPoint = static_cast<std::uint32_t>(attributes);
+      plc.pointAttributes.reserve(static_cast<std::size_t>(room * attributes));
+    }
     Record r;
     for (std::uint64_t i = 0; i < n; ++i) {
       in_.require(r, "point " + std::to_string(i + static_cast<std::uint64_t>(plc.indexBase)));
@@ -225,7 +234,16 @@ class TriangleReader {
       }
       plc.points.push_back(real(r, 1, named, "x"));
       plc.points.push_back(real(r, 2, named, "y"));
-      // Attributes are skipped; Triangle treats missing trailing fields as zero, and so do we.
+      const std::size_t given = r.fields.size() - 3;  // attributes, then the marker
+      if (keep) {
+        for (std::size_t j = 0; j < attributes; ++j)
+          plc.pointAttributes.push_back(j < given ? real(r, 3 + j, named, "attribute") : 0.0);
+      } else if (attributes > 0 && given > 0) {
+        in_.fail(ErrorCode::TooLarge, r.line,
+                 named + ": " + std::to_string(attributes) + " attributes per point for " + std::to_string(n) +
+                     " points are more than ruppert keeps (at most 65535 per point and 2^27 in all)");
+      }
+      // Triangle treats missing trailing fields as zero, and so do we.
       if (markers) {
         // (Compared without adding, so an absurd attribute count cannot wrap around.)
         const bool present = attributes < r.fields.size() && r.fields.size() - attributes > 3;

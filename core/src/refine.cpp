@@ -31,6 +31,7 @@
 #include "bound_push.h"
 #include "old_mesh.h"
 #include "optimal_placement.h"
+#include "point_attributes.h"
 #include "placement.h"
 #include "predicates.h"
 #include "refine_geometry.h"
@@ -115,6 +116,8 @@ class Refiner {
   std::uint64_t budget_ = 0, inserted_ = 0;
   bool cancelled_ = false, budgetHit_ = false;
   std::uint64_t floorHits_ = 0;  // insertions refused at the precision limit
+  std::uint64_t forbiddenHits_ = 0;  // splits refused by noBoundarySteiner / noSegmentSteiner
+  bool refusedSplit_ = false;        // the current bad triangle's point asked for a refused split
   std::vector<EdgeRef> encroached_;
   BadTriangleQueue bad_;
   std::vector<std::uint8_t> corner_;  // per vertex: acute input corner (concentric shells apply)
@@ -377,6 +380,51 @@ class Refiner {
     return false;
   }
 
+  // ---- forbidden splits (Options::noBoundarySteiner, noSegmentSteiner) ---------------------------
+  // Such a subsegment is never split. A point that encroaches it, lies beyond it or on it is not
+  // inserted; instead a triangle over its area bound gets a point pulled back towards its centroid
+  // (halfway or a quarter of the way, if that encroaches no subsegment, else the centroid itself)
+  // (placeAwayFromForbidden); a triangle that is only skinny stays as it is.
+  // Only centroids of triangles over their area bound may lie in a forbidden subsegment's lens; what
+  // stays bad is reported as SegmentSplitForbidden. The Steiner budget and the length floor bound
+  // the work regardless.
+  bool onDomainBoundary(std::uint32_t h) const {
+    const std::uint32_t g = t_.twin[h];
+    if (m_.inDomain.empty()) return g == kNone;
+    // Bounding-box variant: the box's sides are not the domain's boundary.
+    return g != kNone && m_.inDomain[h / 3] != m_.inDomain[g / 3];
+  }
+  bool splitForbidden(std::uint32_t h) const {
+    if (o_.noSegmentSteiner && (t_.con[h] >= 0 || onDomainBoundary(h))) return true;
+    return o_.noBoundarySteiner && onDomainBoundary(h);
+  }
+
+  // The fallback of a triangle whose point was refused (see above): between the point and the
+  // triangle's centroid, the first of three points that lies in the domain on this side and
+  // encroaches no subsegment. False if none does.
+  bool placeAwayFromForbidden(const BadTriangle& bt, const double* const* p, const double* refused) {
+    const double g[2] = {(p[0][0] + p[1][0] + p[2][0]) / 3, (p[0][1] + p[1][1] + p[2][1]) / 3};
+    for (double lambda : {0.5, 0.25, 0.0}) {
+      const double q[2] = {g[0] + lambda * (refused[0] - g[0]), g[1] + lambda * (refused[1] - g[1])};
+      std::uint32_t blocked;
+      const Location loc = mesh_.walk(bt.slot, q, blocked);
+      if (blocked != kNone || loc.kind == Location::Lost || loc.kind == Location::OnVertex) continue;
+      if (loc.kind == Location::OnEdge && t_.con[loc.edge] != kFree) continue;
+      t_.cavity(q, loc, cavityTris_, cavityBoundary_);
+      if (mesh_.tooCloseToCavity(q, cavityBoundary_) || !mesh_.representable(q)) continue;
+      // The centroid, the last resort, may encroach a forbidden subsegment: a triangle over its area
+      // bound always holds it, so the bound is met in the end (its distance to the triangle's
+      // corners, at least 2/3 of its smallest altitude, 4 A / (3 longest edge), keeps the splits finite).
+      bool encroaches = false;
+      for (std::uint32_t h : cavityBoundary_)
+        encroaches = encroaches || (t_.con[h] != kFree && (lambda > 0 || !splitForbidden(h)) && mesh_.encroachesEdge(q, h));
+      if (encroaches) continue;
+      insertSteiner(bt, q, loc, VertexKind::Interior, {&cavityTris_, &cavityBoundary_});
+      return true;
+    }
+    return false;
+  }
+
   // ---- exemptions (§6.6) -------------------------------------------------------------------------
   // The triangle's smallest angle is an input angle: both edges at that corner are subsegments.
   bool nestledInInputAngle(std::uint32_t s, const TriangleShape& sh) const {
@@ -421,6 +469,7 @@ class Refiner {
   bool insertAt(std::uint32_t v, const Location& loc, const CavityRef& cavity = {}) {
     const bool onSubsegment = loc.kind == Location::OnEdge && t_.con[loc.edge] != kFree;
     flipped_.clear();
+    if (m_.attributeCount) interpolateAttributes(v, loc);
     // Bowyer-Watson first; where its cavity would wrap around a vertex at which the domain touches
     // itself, split and flip instead.
     const bool filled = cavity.tris ? t_.fillCavity(v, loc, *cavity.tris, *cavity.boundary, &newTris_, &parents_)
@@ -439,6 +488,29 @@ class Refiner {
     }
     recheckFlipped();
     return true;
+  }
+
+  // v's attributes from the edge or triangle it is about to be inserted in (point_attributes.h).
+  void interpolateAttributes(std::uint32_t v, const Location& loc) {
+    if (loc.kind == Location::OnEdge) return interpolateOnSegment(m_, v, t_.origin(loc.edge), t_.dest(loc.edge));
+    const std::uint32_t* c = &t_.tv[3 * loc.tri];
+    interpolateInTriangle(m_, v, c[0], c[1], c[2]);
+  }
+
+  // A vertex about to move to x: its attributes at x, from the triangle of its star that holds x.
+  void reinterpolateMoved(std::uint32_t v, const double* x) {
+    const std::vector<std::uint32_t>& star = optimal_.star();
+    if (star.empty()) return;
+    std::uint32_t pick = star.front();
+    for (std::uint32_t h : star) {
+      const double* o = t_.pt(t_.origin(h));
+      const double* d = t_.pt(t_.dest(h));
+      if (orient2d(o, d, x) >= 0 && orient2d(t_.pt(v), o, x) >= 0 && orient2d(d, t_.pt(v), x) >= 0) {
+        pick = h;
+        break;
+      }
+    }
+    interpolateInTriangle(m_, v, v, t_.origin(pick), t_.dest(pick), x);
   }
 
   // Triangles changed by flips (in flipped_): queue them if bad, and their edges and the edges
@@ -535,6 +607,11 @@ class Refiner {
   // Split subsegment h (§6.2, §6.6). `bt` and `rejected`: the triangle whose point was rejected
   // and that point, if that is why, for the trace. False if it cannot be split (precision floor).
   bool splitSubsegment(std::uint32_t h, const BadTriangle* bt, const double* rejected) {
+    if (splitForbidden(h)) {
+      ++forbiddenHits_;
+      refusedSplit_ = true;
+      return false;
+    }
     const std::uint32_t a = t_.origin(h), b = t_.dest(h);
     // Copies: adding a vertex below may reallocate the coordinate array.
     const double pa[2] = {t_.xy[2 * a], t_.xy[2 * a + 1]};
@@ -628,7 +705,17 @@ class Refiner {
     if (skinny && o_.placement == Placement::Optimal && !(maxAreaAt(s) > 0) && optimalOrRelocate(bt, p, sh, target))
       return;
     Location loc;
-    if (!locateOrReject(bt, target, loc)) return;
+    refusedSplit_ = false;
+    const std::uint64_t before = inserted_;
+    if (!locateOrReject(bt, target, loc)) {
+      // (Only when nothing was inserted meanwhile: p points into the coordinates, which may move.)
+      // Only for triangles over their area bound: for skinny ones, centroids cascade into ever
+      // smaller skinny triangles along the forbidden subsegment (measured: A.poly at 30 degrees ran
+      // to the Steiner budget, 15 829 vertices, where it needs 78 without the option).
+      if (refusedSplit_ && inserted_ == before && isCurrent(t_, bt) && maxAreaAt(s) > 0 && q.area > maxAreaAt(s))
+        placeAwayFromForbidden(bt, p, target);
+      return;
+    }
     CavityRef known{&cavityTris_, &cavityBoundary_};
     const SkinnyTriangle st{s, p, sh, target, &cavityBoundary_};
     double better[2];
@@ -675,6 +762,7 @@ class Refiner {
     if (relocations_.size() <= v) relocations_.resize(t_.vertexCount(), 0);
     double x[2];
     if (relocations_[v] >= kMaxRelocations || !mayInsert() || !optimal_.relocation(mesh_, v, x)) return false;
+    if (m_.attributeCount) reinterpolateMoved(v, x);
     t_.xy[2 * v] = x[0], t_.xy[2 * v + 1] = x[1];
     ++relocations_[v], ++inserted_;
     // The star's edges, and those of the triangles beyond it, may no longer be locally Delaunay.
@@ -807,6 +895,12 @@ class Refiner {
       add(ReasonKind::SteinerBudget, unmet, "the Steiner budget of " + std::to_string(budget_) +
                                                 " vertices was reached; " + std::to_string(unmet) +
                                                 " triangle(s) do not meet the bounds");
+    else if (unmet > 0 && forbiddenHits_ > 0)
+      add(ReasonKind::SegmentSplitForbidden, unmet,
+          std::to_string(unmet) + " triangle(s) do not meet the bounds: " + std::to_string(forbiddenHits_) +
+              " split(s) of subsegments were refused because " +
+              (o_.noSegmentSteiner ? "no new vertex may lie on a segment" : "no new vertex may lie on the domain's boundary") +
+              " (no-segment-steiner / no-boundary-steiner), and the vertices that would have caused them were not inserted");
     else if (unmet > 0 || floorHits_ > 0)
       add(ReasonKind::PrecisionFloor, unmet,
           std::to_string(unmet) + " triangle(s) could not be improved: " + std::to_string(floorHits_) +

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "mesh_state.h"
+#include "point_attributes.h"
 #include "predicates.h"
 
 namespace ruppert::detail {
@@ -278,6 +279,7 @@ class SegmentInserter {
         w = loc.vertex;
       } else {
         w = m_.addVertex(q[0], q[1], VertexKind::Intersection, -1);
+        interpolateOnSegment(m_, w, a, b);
         if ((loc.kind != Location::InTriangle && loc.kind != Location::OnEdge) ||
             (!t_.insertVertex(w, loc) && !t_.insertVertexByFlips(w, loc)))
           throw Error(ErrorCode::Internal, "could not insert the crossing of " + segName(id) + " at (" +

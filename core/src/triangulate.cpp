@@ -1,12 +1,16 @@
 // ruppert::triangulate: the pipeline (§6.1's generic Delaunay refinement, constrained as in §6.7).
 //   prepare (validate, scale, merge duplicates) -> Delaunay of the points -> constraints (hull,
 //   segments, with repairs) -> classify (exterior, holes, regions) -> refine (§6.2-6.6, 6.8) -> output.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <optional>
 #include <string>
 
+#include "boundary_markers.h"
+#include "jettison.h"
 #include "mesh_state.h"
+#include "point_attributes.h"
 #include "angle_stats.h"
 #include "old_mesh.h"
 #include "refine.h"
@@ -15,6 +19,22 @@ namespace ruppert {
 
 namespace detail {
 namespace {
+
+// Mesh::pointAttributes: the input points' own values, the new vertices' interpolated ones.
+void copyAttributes(const MeshState& m, Mesh& mesh) {
+  const Plc& plc = *m.plc;
+  const std::size_t k = m.attributeCount;
+  if (k == 0) return;
+  mesh.attributesPerPoint = m.attributeCount;
+  mesh.pointAttributes.assign(k * (mesh.points.size() / 2), 0.0);
+  std::copy(plc.pointAttributes.begin(), plc.pointAttributes.begin() + k * (plc.points.size() / 2),
+            mesh.pointAttributes.begin());
+  for (std::uint32_t v = m.inputCount; v < m.tri.vertexCount(); ++v) {
+    const std::uint32_t o = m.outputMap[v];
+    if (o == kNone) continue;
+    std::copy_n(m.attributes.begin() + k * v, k, mesh.pointAttributes.begin() + k * o);
+  }
+}
 
 Mesh assemble(MeshState& m) {
   Mesh mesh;
@@ -51,14 +71,7 @@ Mesh assemble(MeshState& m) {
     mesh.points[2 * std::size_t(o) + 1] = m.input.toUser(t.xy[2 * v + 1]);
     mesh.vertexKinds[o] = static_cast<std::uint8_t>(m.kind[v]);
   }
-  if (!plc.pointMarkers.empty()) {
-    mesh.pointMarkers.resize(outVertices, 0);
-    for (std::uint32_t i = 0; i < inputPoints && i < plc.pointMarkers.size(); ++i)
-      mesh.pointMarkers[i] = plc.pointMarkers[i];
-    for (std::uint32_t v = m.inputCount; v < t.vertexCount(); ++v)
-      if (outIndex(v) != kNone)
-        mesh.pointMarkers[outIndex(v)] = m.onSegment[v] >= 0 || m.kind[v] == VertexKind::Intersection ? 1 : 0;
-  }
+  copyAttributes(m, mesh);
 
   std::vector<std::uint32_t> slotToTri(t.slotCount(), kNone);
   std::uint32_t count = 0;
@@ -104,6 +117,7 @@ Mesh assemble(MeshState& m) {
                 st.intersectionVertices;
   mesh.indexBase = plc.indexBase;
   mesh.notices = std::move(m.notices);
+  assignMarkers(mesh, plc);
   return mesh;
 }
 
@@ -131,6 +145,7 @@ Mesh triangulate(const Plc& userPlc, const Options& options) {
   std::optional<OldMesh> oldMesh;
   if (!plc.triangles.empty()) m.oldMesh = &oldMesh.emplace(plc, m.input);
   buildDelaunay(m);
+  initAttributes(m);
   if (plc.segments.empty() || options.convexHull) insertHull(m);
   insertSegments(m);
   if (options.variant == Variant::BoundingBox) {
@@ -165,6 +180,16 @@ Mesh triangulate(const Plc& userPlc, const Options& options) {
   mesh.stats.reachedAngle = outcome.reachedAngle >= 0 ? outcome.reachedAngle : mesh.stats.minAngle;
   mesh.stats.lfsIntegral = outcome.lfsIntegral;
   mesh.stats.trianglesPerLfsIntegral = outcome.lfsIntegral > 0 ? mesh.stats.triangles / outcome.lfsIntegral : 0;
+  if (options.jettison) {
+    std::vector<std::uint32_t> mergedInto(plc.points.size() / 2);
+    for (std::size_t i = 0; i < mergedInto.size(); ++i) mergedInto[i] = m.input.inputIndex[m.input.representative[i]];
+    jettisonUnused(mesh, mergedInto);
+  }
+  if (options.edges) {
+    MeshEdges edges = meshEdges(mesh);
+    mesh.edges = std::move(edges.edges);
+    mesh.edgeMarkers = std::move(edges.markers);
+  }
   mesh.stats.milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return mesh;

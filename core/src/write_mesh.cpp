@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "ruppert/ruppert.h"
+#include "boundary_markers.h"
 #include "text_out.h"
 
 namespace ruppert {
@@ -44,26 +45,30 @@ void requireFinite(const std::vector<double>& values, const char* what) {
   }
 }
 
-// Marker per point: the mesh's own when it has one per point; otherwise Triangle's convention of 1 for
-// vertices on a (sub)segment and 0 elsewhere.
-std::vector<std::int32_t> pointMarkers(const Mesh& mesh) {
-  const std::size_t n = pointCount(mesh);
-  if (mesh.pointMarkers.size() == n) return mesh.pointMarkers;
-  std::vector<std::int32_t> markers(n, 0);
-  for (std::uint32_t v : mesh.segments) {
-    if (v < n) markers[v] = 1;
-  }
-  return markers;
+// The mesh's markers when it has one per point and per subsegment (every mesh triangulate()
+// returns); otherwise, for what is missing, the markers Triangle's convention gives without input
+// markers (1 on the boundary, 0 inside: a mesh handed back from JavaScript without them).
+detail::Markers markersOf(const Mesh& mesh) {
+  const bool points = mesh.pointMarkers.size() == pointCount(mesh);
+  const bool segments = mesh.segmentMarkers.size() == mesh.segments.size() / 2;
+  detail::Markers m = points && segments ? detail::Markers{} : detail::computeMarkers(mesh, Plc{});
+  if (points) m.points = mesh.pointMarkers;
+  if (segments) m.segments = mesh.segmentMarkers;
+  return m;
 }
 
 void writePoints(TextOut& out, const Mesh& mesh) {
   requireFinite(mesh.points, "points");
-  const std::vector<std::int32_t> markers = pointMarkers(mesh);
+  const std::vector<std::int32_t> markers = markersOf(mesh).points;
   const std::size_t base = static_cast<std::size_t>(baseOf(mesh));
-  out << pointCount(mesh) << " 2 0 1\n";
+  // Attribute columns (Plc::pointAttributes, interpolated onto new vertices) when there are any.
+  const std::size_t k = mesh.pointAttributes.size() == mesh.attributesPerPoint * pointCount(mesh) ? mesh.attributesPerPoint : 0;
+  if (k) requireFinite(mesh.pointAttributes, "pointAttributes");
+  out << pointCount(mesh) << " 2 " << k << " 1\n";
   for (std::size_t i = 0; i < pointCount(mesh); ++i) {
-    out << (i + base) << ' ' << real(mesh.points[2 * i]) << ' ' << real(mesh.points[2 * i + 1]) << ' '
-        << markers[i] << '\n';
+    out << (i + base) << ' ' << real(mesh.points[2 * i]) << ' ' << real(mesh.points[2 * i + 1]) << ' ';
+    for (std::size_t j = 0; j < k; ++j) out << real(mesh.pointAttributes[k * i + j]) << ' ';
+    out << markers[i] << '\n';
   }
 }
 
@@ -113,6 +118,7 @@ const char* reasonName(ReasonKind kind) {
     case ReasonKind::PrecisionFloor: return "precisionFloor";
     case ReasonKind::Cancelled: return "cancelled";
     case ReasonKind::AngleUnreachable: return "angleUnreachable";
+    case ReasonKind::SegmentSplitForbidden: return "segmentSplitForbidden";
   }
   return "unknown";
 }
@@ -185,7 +191,20 @@ void printEle(TextOut& out, const Mesh& mesh) {
   }
 }
 
+void printEdge(TextOut& out, const Mesh& mesh) {
+  MeshEdges computed;
+  const bool own = !mesh.edges.empty() && mesh.edgeMarkers.size() == mesh.edges.size() / 2;
+  if (!own) computed = detail::edgesWith(mesh, markersOf(mesh).segments);
+  const std::vector<std::uint32_t>& edges = own ? mesh.edges : computed.edges;
+  const std::vector<std::int32_t>& markers = own ? mesh.edgeMarkers : computed.markers;
+  const std::size_t base = static_cast<std::size_t>(baseOf(mesh));
+  out << markers.size() << " 1\n";
+  for (std::size_t e = 0; e < markers.size(); ++e)
+    out << (e + base) << ' ' << (edges[2 * e] + base) << ' ' << (edges[2 * e + 1] + base) << ' ' << markers[e] << '\n';
+}
+
 void printPoly(TextOut& out, const Mesh& mesh, const Plc& input) {
+  const std::vector<std::int32_t> segmentMarkers = markersOf(mesh).segments;
   requireFinite(input.holes, "holes");
   for (std::size_t i = 0; i < input.regions.size(); ++i) {
     const Region& r = input.regions[i];
@@ -196,10 +215,9 @@ void printPoly(TextOut& out, const Mesh& mesh, const Plc& input) {
   const std::size_t n = mesh.segments.size() / 2;
   out << n << " 1\n";
   for (std::size_t s = 0; s < n; ++s) {
-    // Marker = input segment id + 1, so 0 (Triangle's "no marker") marks the hull edges we added.
-    const std::int64_t id = s < mesh.segmentIds.size() ? mesh.segmentIds[s] : kNoInputSegment;
+    // The boundary marker (ruppert.h, "Boundary markers"): the input segment's, or 1 / 0.
     out << (s + base) << ' ' << (mesh.segments[2 * s] + base) << ' ' << (mesh.segments[2 * s + 1] + base) << ' '
-        << (id == kNoInputSegment ? 0 : id + 1) << '\n';
+        << segmentMarkers[s] << '\n';
   }
   const std::size_t holes = input.holes.size() / 2;
   out << holes << '\n';
@@ -240,6 +258,26 @@ void printJson(TextOut& out, const Mesh& mesh, const Plc& input) {
   jsonArray(out, "vertexKinds", mesh.vertexKinds, [](std::uint8_t v) { return integer(static_cast<int>(v)); });
   out << ",\n";
   jsonArray(out, "triangleAttributes", mesh.triangleAttributes, number);
+  // Issue 16: boundary markers always; edges, attributes and jettison's numbering when present.
+  const detail::Markers markers = markersOf(mesh);
+  out << ",\n";
+  jsonArray(out, "pointMarkers", markers.points, whole);
+  out << ",\n";
+  jsonArray(out, "segmentMarkers", markers.segments, whole);
+  if (!mesh.edges.empty()) {
+    out << ",\n";
+    jsonArray(out, "edges", mesh.edges, whole);
+    out << ",\n";
+    jsonArray(out, "edgeMarkers", mesh.edgeMarkers, whole);
+  }
+  if (!mesh.pointAttributes.empty()) {
+    out << ",\n  \"attributesPerPoint\": " << mesh.attributesPerPoint << ",\n";
+    jsonArray(out, "pointAttributes", mesh.pointAttributes, number);
+  }
+  if (!mesh.inputToOutput.empty()) {
+    out << ",\n";
+    jsonArray(out, "inputToOutput", mesh.inputToOutput, whole);
+  }
   out << ",\n  \"complete\": " << (mesh.complete ? "true" : "false") << ",\n  \"reasons\": [";
   for (std::size_t i = 0; i < mesh.reasons.size(); ++i) {
     const Reason& r = mesh.reasons[i];
@@ -321,6 +359,8 @@ void writePoly(std::ostream& out, const Mesh& mesh, const Plc& input) {
 void writeJson(std::ostream& out, const Mesh& mesh, const Plc& input) {
   toStream(out, "JSON", [&](TextOut& t) { printJson(t, mesh, input); });
 }
+void writeEdge(std::ostream& out, const Mesh& mesh) { toStream(out, ".edge", [&](TextOut& t) { printEdge(t, mesh); }); }
+std::string toEdge(const Mesh& mesh) { return toText([&](TextOut& t) { printEdge(t, mesh); }); }
 void writeSvg(std::ostream& out, const Mesh& mesh) { toStream(out, "SVG", [&](TextOut& t) { printSvg(t, mesh); }); }
 
 std::string toNode(const Mesh& mesh) { return toText([&](TextOut& t) { printNode(t, mesh); }); }

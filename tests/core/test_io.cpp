@@ -505,8 +505,12 @@ TEST_CASE("writePoly then readPoly round-trips points, subsegments, holes and re
     CHECK(back.indexBase == base);
     CHECK(sameBits(back.points, m.points));
     CHECK(back.segments == m.segments);
-    // Marker = input segment id + 1; the hull edge (kNoInputSegment) gets 0.
-    CHECK(back.segmentMarkers == std::vector<std::int32_t>{1, 2, 0, 3});
+    // No markers in the mesh: Triangle's convention, 1 on the boundary (these four subsegments are).
+    CHECK(back.segmentMarkers == std::vector<std::int32_t>{1, 1, 1, 1});
+    // The mesh's own markers are written as they are (not the input segment's index).
+    ruppert::Mesh marked = m;
+    marked.segmentMarkers = {5, 0, 7, -2};
+    CHECK(poly(ruppert::toPoly(marked, input)).segmentMarkers == marked.segmentMarkers);
     CHECK(sameBits(back.holes, input.holes));
     REQUIRE(back.regions.size() == 2);
     CHECK(back.regions[0].x == input.regions[0].x);
@@ -539,6 +543,10 @@ TEST_CASE("writeJson then readJson round-trips, with the mesh arrays alongside",
   CHECK_THAT(text, Catch::Contains("\"segmentIds\": [0,1,-1,2]"));
   CHECK_THAT(text, Catch::Contains("\"vertexKinds\": [0,0,0,0,2]"));
   CHECK_THAT(text, Catch::Contains("\"triangleAttributes\": [0,0,0,0]"));
+  // No markers in the hand-made mesh: Triangle's convention (the outer square is the boundary).
+  CHECK_THAT(text, Catch::Contains("\"pointMarkers\": [1,1,1,1,0]"));
+  CHECK_THAT(text, Catch::Contains("\"segmentMarkers\": [1,1,1,1]"));
+  CHECK(text.find("\"edges\"") == std::string::npos);
   CHECK_THAT(text, Catch::Contains("\"complete\": false"));
   CHECK_THAT(text, Catch::Contains("{\"kind\": \"steinerBudget\", \"count\": 3, \"message\": \"budget \\\"100\\\" reached\"}"));
   CHECK_THAT(text, Catch::Contains("\"message\": \"point 5 \\\"dup\\\"\\nmerged\""));

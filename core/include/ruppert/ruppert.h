@@ -79,9 +79,14 @@ struct Plc {
   std::vector<std::uint32_t> segments;  // a0, b0, a1, b1, ... indices into points
   std::vector<double> holes;            // hole seeds: hx0, hy0, hx1, hy1, ...
   std::vector<Region> regions;
-  // Carried through for Triangle-format round trips; may be empty.
+  // Boundary markers (Triangle's): tags a solver uses to find its boundary conditions; may be empty
+  // (all 0). The mesh's markers follow from them, see "Boundary markers" at Mesh.
   std::vector<std::int32_t> pointMarkers;    // one per point, or empty
   std::vector<std::int32_t> segmentMarkers;  // one per segment, or empty
+  // Per-point attributes (a .node's attribute columns): attributesPerPoint values per point, point
+  // after point, or empty. Interpolated linearly onto every new vertex (Mesh::pointAttributes).
+  std::uint32_t attributesPerPoint = 0;
+  std::vector<double> pointAttributes;
   int indexBase = 0;  // 0 or 1: the index base the file used; writers print indices in this base
   // Refining a mesh (Triangle's -r, with -a and a .area file): when `triangles` is not empty, the
   // domain is the union of these triangles (3 point indices each, either orientation, none of zero
@@ -156,6 +161,12 @@ struct Options {
   bool sizeMeasure = false; // compute Stats::lfsIntegral (§6.5; one shortest-path pass over the mesh)
   // Called every few thousand insertions; return false to stop early (complete=false, "cancelled").
   std::function<bool(const Progress&)> onProgress;
+  // Output and boundary (issue 16), after Triangle's -e, -Y, -YY and -j:
+  bool edges = false;              // fill Mesh::edges and Mesh::edgeMarkers (meshEdges below)
+  bool noBoundarySteiner = false;  // no new vertex on a subsegment of the domain's boundary (-Y)
+  bool noSegmentSteiner = false;   // no new vertex on any subsegment (-YY); implies the above
+  bool jettison = false;           // leave Unused input points out of Mesh::points (-j), see
+                                   // Mesh::inputToOutput
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -214,6 +225,9 @@ enum class ReasonKind : std::uint8_t {
   AngleUnreachable, // minAngle above 34: refinement met 33 degrees, raised the bound a degree at a
                     // time while the mesh improved, and stopped short; the mesh is the best it
                     // reached (Stats::reachedAngle), never worse than the 33-degree mesh
+  SegmentSplitForbidden,  // Options::noBoundarySteiner / noSegmentSteiner: triangles left bad because
+                          // the only cure was a vertex on a subsegment that may not be split (count:
+                          // those triangles; the message also says how many splits were refused)
 };
 
 struct Reason {
@@ -260,6 +274,13 @@ struct Event {
   double cx = 0, cy = 0;             // rejected circumcenter (Rejected)
 };
 
+// Boundary markers (Triangle's convention), in Mesh::pointMarkers, segmentMarkers and edgeMarkers:
+//   * a subsegment or edge that is part of an input segment with a nonzero marker has that marker;
+//     else 1 if it lies on the mesh's boundary (outer boundary or a hole's), else 0;
+//   * a point with a nonzero input marker keeps it; else a vertex on an input segment with a nonzero
+//     marker (its endpoints and every vertex inserted on it) has that marker (on several such
+//     segments: the one of the lowest segment index); else 1 on the mesh's boundary, else 0.
+// So without any input markers boundary vertices and edges get 1 and interior ones 0.
 struct Mesh {
   std::vector<double> points;             // input points first, same indices; then the new vertices
                                           // that triangles use, in the order they were inserted
@@ -269,7 +290,22 @@ struct Mesh {
   std::vector<std::int32_t> segmentIds;   // 1 per subsegment: input segment index, or kNoInputSegment
   std::vector<std::uint8_t> vertexKinds;  // 1 per point: VertexKind
   std::vector<double> triangleAttributes; // 1 per triangle: its region's attribute (0 outside regions)
-  std::vector<std::int32_t> pointMarkers; // 1 per point if the input had markers (new points: 0 / 1 on segments)
+  std::vector<std::int32_t> pointMarkers; // 1 per point: boundary markers (see above)
+  std::vector<std::int32_t> segmentMarkers; // 1 per subsegment: boundary markers (see above)
+  // With Options::edges (else empty): every edge of the mesh once, 2 vertex indices each, in the order
+  // meshEdges() gives them, and its boundary marker.
+  std::vector<std::uint32_t> edges;
+  std::vector<std::int32_t> edgeMarkers;
+  // Plc::attributesPerPoint values per point: an input point's own; a new vertex's interpolated
+  // linearly from the triangle it was inserted in (barycentric), or from the ends of the subsegment
+  // it split, so a linear field given at the input points is reproduced at every vertex.
+  std::uint32_t attributesPerPoint = 0;
+  std::vector<double> pointAttributes;
+  // With Options::jettison (else empty, and an input point's index in points is its own): 1 per input
+  // point, its index in points: a merged duplicate maps to the point it was merged into, a point
+  // outside the domain (or otherwise unused) to -1. Unused points are then left out of points, and
+  // every other array is numbered accordingly.
+  std::vector<std::int32_t> inputToOutput;
   int indexBase = 0;                      // copied from the input, for writers
   bool complete = true;                   // every bound met, except the chapter's exemptions (§6.6)
   std::vector<Reason> reasons;            // what is unmet and why; SmallInputAngle / SeditiousEdge
@@ -284,6 +320,16 @@ struct Mesh {
 // Mesh a PLC. Throws ruppert::Error on input that cannot be repaired.
 Mesh triangulate(const Plc& plc, const Options& options = {});
 
+// Every edge of a mesh once (from triangles and neighbors): for each triangle t and edge i, the edge
+// from triangles[3t+(i+1)%3] to triangles[3t+(i+2)%3] when neighbors[3t+i] is kNoNeighbor or > t.
+// So there are (3 T + B) / 2 edges for T triangles and B boundary edges. Markers as above (from
+// mesh.segments and mesh.segmentMarkers).
+struct MeshEdges {
+  std::vector<std::uint32_t> edges;   // 2 vertex indices per edge
+  std::vector<std::int32_t> markers;  // 1 per edge
+};
+MeshEdges meshEdges(const Mesh& mesh);
+
 // ---------------------------------------------------------------------------------------------
 // Readers and writers (Triangle's .node/.poly/.ele, JSON, SVG)
 // ---------------------------------------------------------------------------------------------
@@ -292,7 +338,9 @@ Plc readPoly(std::istream& in, const std::string& name = "<poly>");
 // .node: points only (attributes and markers allowed).
 Plc readNode(std::istream& in, const std::string& name = "<node>");
 // JSON: { "points": [x0,y0,...], "segments": [a0,b0,...], "holes": [x,y,...],
-//         "regions": [{"x":..,"y":..,"attribute":..,"maxArea":..}] }
+//         "regions": [{"x":..,"y":..,"attribute":..,"maxArea":..}],
+//         "pointMarkers": [...], "segmentMarkers": [...], "pointAttributes": [...], "attributesPerPoint": k }
+// (markers one per point / segment; attributes k per point, k defaulting to their count / points)
 Plc readJson(std::istream& in, const std::string& name = "<json>");
 // By extension: .poly, .node, .json or .geojson. Throws IoError if unreadable.
 Plc readFile(const std::string& path);
@@ -312,6 +360,10 @@ void writeEle(std::ostream& out, const Mesh& mesh);
 void writePoly(std::ostream& out, const Mesh& mesh, const Plc& input);  // subsegments + input holes/regions
 void writeJson(std::ostream& out, const Mesh& mesh, const Plc& input);  // input JSON shape + "triangles" etc.
 void writeSvg(std::ostream& out, const Mesh& mesh);
+// .edge: Triangle's format ("count 1", then index, two endpoints, marker), every edge once: the mesh's
+// edges if it has them, else meshEdges(mesh).
+void writeEdge(std::ostream& out, const Mesh& mesh);
+std::string toEdge(const Mesh& mesh);
 
 // ---------------------------------------------------------------------------------------------
 // Derived outputs: quadratic elements and the Voronoi diagram (Triangle's -o2 and -v)
