@@ -160,6 +160,7 @@ export class GlMesh {
     this.triangleCount = this.source ? mesh.triangles.length / 3 : 0;
     this.chunks = [];
     this.geometryReady = false;
+    this.readyAt = null;
     this.generation = (this.generation ?? 0) + 1;
     clearTimeout(this.deferred);
     if (!this.source) return;
@@ -188,6 +189,7 @@ export class GlMesh {
           this.applyColours();
         }
         this.warmUp();
+        this.readyAt = performance.now();  // benchmarks: when the triangles were on the GPU
         onReady();
       }, 0);
     }, 0);

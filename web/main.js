@@ -255,7 +255,10 @@ const scheduler = new MeshScheduler({
       `Meshing… ${p.insertedVertices.toLocaleString('en-US')} vertices inserted, ${p.triangles.toLocaleString('en-US')} triangles, worst angle ${p.worstAngle.toFixed(1)}°`;
   },
   onResult(mesh, request) {
-    if (bench) meshArrivedAt = performance.now();
+    if (bench) {
+      meshArrivedAt = performance.now();
+      document.body.dataset.meshArrivedAt = String(meshArrivedAt);
+    }
     stopProgress();
     app.mesh = mesh;
     app.meshedPlc = request.plc;

@@ -4,6 +4,8 @@
 // (`?renderer=2d`, the page before WebGL) in the same headless Chromium, in alternating (paired)
 // rounds because the machine is shared. Measured per round:
 //   first picture: from the mesh's arrival in the page (onResult) to its first finished frame
+//   triangles on the GPU (WebGL, meshes above 200k triangles): from the arrival until the task
+//     after the first picture has sent them (until then the view comes from the quick overview)
 //   frame: one pan or zoom step redrawn and finished (GPU readback / 2D pixel read), median of N
 //
 //   node tests/bench/render-bench.mjs [--rounds 3] [--frames 20] [--max-area 6.5e-7] [--out FILE]
@@ -54,11 +56,15 @@ async function round(harness, renderer) {
     const times = await run();
     view.zoomAt(view.width / 2, view.height / 2, 16);
     const zoomed = await run();
-    return { triangles, times, zoomed, firstPicture: Number(document.body.dataset.firstPictureMs) };
+    const ready = renderer.gl?.readyAt ? renderer.gl.readyAt - Number(document.body.dataset.meshArrivedAt) : null;
+    return { triangles, times, zoomed, ready, firstPicture: Number(document.body.dataset.firstPictureMs) };
   }, FRAMES);
   await page.close();
   if (errors.length) throw new Error(`console errors: ${errors.join('; ')}`);
-  return { renderer, triangles: result.triangles, firstPictureMs: result.firstPicture, frameMs: median(result.times), zoomedFrameMs: median(result.zoomed) };
+  return {
+    renderer, triangles: result.triangles, firstPictureMs: result.firstPicture, onGpuMs: result.ready,
+    frameMs: median(result.times), zoomedFrameMs: median(result.zoomed),
+  };
 }
 
 const harness = await launch();
@@ -68,7 +74,8 @@ try {
     for (const renderer of r % 2 === 0 ? ['webgl', '2d'] : ['2d', 'webgl']) {
       const row = await round(harness, renderer);
       rows.push({ round: r, ...row });
-      console.log(`round ${r} ${renderer.padEnd(5)} ${row.triangles} triangles: first picture ${row.firstPictureMs.toFixed(0)} ms, ` +
+      const gpu = row.onGpuMs === null ? '' : ` (triangles on the GPU after ${row.onGpuMs.toFixed(0)} ms)`;
+      console.log(`round ${r} ${renderer.padEnd(5)} ${row.triangles} triangles: first picture ${row.firstPictureMs.toFixed(0)} ms${gpu}, ` +
         `median frame ${row.frameMs.toFixed(1)} ms (whole mesh in view), ${row.zoomedFrameMs.toFixed(1)} ms (zoomed in 16x)`);
     }
   }
@@ -82,12 +89,13 @@ for (const renderer of ['webgl', '2d']) {
     firstPictureMs: median(mine.map((r) => r.firstPictureMs)),
     frameMs: median(mine.map((r) => r.frameMs)),
     zoomedFrameMs: median(mine.map((r) => r.zoomedFrameMs)),
+    onGpuMs: renderer === 'webgl' ? median(mine.map((r) => r.onGpuMs)) : null,
   };
 }
 const speedup = summary['2d'].frameMs / summary.webgl.frameMs;
 const zoomedSpeedup = summary['2d'].zoomedFrameMs / summary.webgl.zoomedFrameMs;
 const line = (r) => `first picture ${summary[r].firstPictureMs.toFixed(0)} ms, frame ${summary[r].frameMs.toFixed(1)} ms, zoomed ${summary[r].zoomedFrameMs.toFixed(1)} ms`;
-console.log(`median of ${ROUNDS} rounds: webgl ${line('webgl')}; 2d ${line('2d')}; frames ${speedup.toFixed(1)}x faster, zoomed ${zoomedSpeedup.toFixed(1)}x`);
+console.log(`median of ${ROUNDS} rounds: webgl ${line('webgl')}, triangles on the GPU after ${summary.webgl.onGpuMs?.toFixed(0)} ms; 2d ${line('2d')}; frames ${speedup.toFixed(1)}x faster, zoomed ${zoomedSpeedup.toFixed(1)}x`);
 if (OUT) {
   const command = `node tests/bench/render-bench.mjs ${args.join(' ')}`.trim();
   writeFileSync(OUT, `${JSON.stringify({ command, date: new Date().toISOString(), rows, summary, speedup, zoomedSpeedup }, null, 2)}\n`);
