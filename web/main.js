@@ -34,6 +34,12 @@ $('renderer-note').hidden = renderer.gl !== null || !wantGl;
 // `?bench=1` (tests/bench/render-bench.mjs, tests/browser): the page's view, renderer and drawing, and the
 // time from a mesh's arrival to its first finished picture in body[data-first-picture-ms].
 renderer.onReady = () => scheduleDraw();
+renderer.onFallback = () => {
+  document.body.dataset.renderer = '2d';
+  $('renderer-note').textContent = 'The WebGL context was lost: the mesh is drawn with the 2D canvas now, slower, and above 200,000 triangles without its colours.';
+  $('renderer-note').hidden = false;
+  scheduleDraw();
+};
 const bench = new URLSearchParams(location.search).has('bench');
 let meshArrivedAt = null;
 if (bench) window.ruppertBench = { view, renderer, draw: () => draw(), exemptions: () => app.exemptions };

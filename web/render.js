@@ -115,6 +115,16 @@ export class Renderer {
     this.minAngle = null;  // per-triangle smallest angle
     this.gl = glCanvas ? GlMesh.create(glCanvas) : null;  // null: the mesh is drawn in 2D
     this.onReady = null;  // called when a large mesh's triangles reached the GPU (draw again)
+    this.onFallback = null;  // called when a lost WebGL context sends the page back to 2D
+    // A lost context (the GPU process gone, too many contexts) takes the buffers with it: the page
+    // goes on in 2D rather than showing an empty canvas.
+    glCanvas?.addEventListener('webglcontextlost', () => {
+      if (!this.gl) return;
+      this.gl = null;
+      glCanvas.hidden = true;
+      this.setMesh(this.mesh);
+      this.onFallback?.();
+    });
   }
 
   /** Matches the backing store to the element's CSS size and the device pixel ratio. */

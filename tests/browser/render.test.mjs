@@ -225,3 +225,24 @@ test('vertex numbers are drawn on demand for meshes small enough to read', async
   assert.deepEqual(errors, []);
   await page.close();
 });
+
+test('a lost WebGL context sends the page back to the 2D canvas', async () => {
+  const { page, errors } = await openPage(harness.context, `${harness.baseUrl}/web/?bench=1`);
+  assert.equal(await settle(page), 'done');
+  assert.equal(await page.evaluate(() => document.body.dataset.renderer), 'webgl');
+  await page.evaluate(() => window.ruppertBench.renderer.gl.gl.getExtension('WEBGL_lose_context').loseContext());
+  await page.waitForFunction(() => document.body.dataset.renderer === '2d');
+  assert.equal(await page.locator('#renderer-note').isVisible(), true);
+  assert.equal(await page.locator('#gl-canvas').isHidden(), true);
+  await page.waitForTimeout(100);
+  const coloured = await page.evaluate(() => {
+    const c = document.getElementById('canvas');
+    const data = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < data.length; i += 4) if (data[i + 3] > 200 && (data[i] < 240 || data[i + 1] < 240 || data[i + 2] < 240)) n++;
+    return n;
+  });
+  assert.ok(coloured > 10_000, `${coloured} pixels of mesh drawn in 2D`);
+  assert.deepEqual(errors.filter((e) => !/WebGL/.test(e)), []);
+  await page.close();
+});
