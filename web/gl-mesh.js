@@ -176,14 +176,20 @@ export class GlMesh {
     this.origin = [(minX + maxX) / 2, (minY + maxY) / 2];
     if (this.triangleCount <= DEFER_ABOVE) {
       this.buildGeometry();
+      this.geometryReady = true;
       return;
     }
     const generation = this.generation;
-    // Two tasks later: the first picture (drawn in the next animation frame) comes first.
-    this.deferred = setTimeout(() => {
-      this.deferred = setTimeout(() => {
-        if (generation !== this.generation) return;
-        this.buildGeometry();
+    const later = (step) => {
+      this.deferred = setTimeout(() => { if (generation === this.generation) step(); }, 0);
+    };
+    // After the first picture (drawn in the next animation frame), in two tasks so neither holds
+    // the page long: the triangles, then their colours and the sharp overview. Frames in between
+    // still come from the quick overview (geometryReady is set with the colours).
+    later(() => later(() => {
+      this.buildGeometry();
+      later(() => {
+        this.geometryReady = true;
         if (this.colouring) {
           this.colouring.classes ??= this.classesOf(this.colouring.classOf);
           this.applyColours();
@@ -191,8 +197,8 @@ export class GlMesh {
         this.warmUp();
         this.readyAt = performance.now();  // benchmarks: when the triangles were on the GPU
         onReady();
-      }, 0);
-    }, 0);
+      });
+    }));
   }
 
   /**
@@ -237,7 +243,6 @@ export class GlMesh {
       gl.bindBuffer(gl.ARRAY_BUFFER, this.corners);
       gl.bufferData(gl.ARRAY_BUFFER, bary, gl.STATIC_DRAW);
     }
-    this.geometryReady = true;
   }
 
   /**
