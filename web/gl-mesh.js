@@ -11,10 +11,11 @@
 //   in view, as contiguous ranges;
 // - a chunk whose triangles are below a few pixels on screen is not drawn as triangles but
 //   shown from an overview picture: the whole mesh rasterized once on the CPU (one sample per
-//   texel, the edges as the grey their density gives) into a texture, drawn as one quad.
+//   texel, the edges as the grey their density gives: mesh-overview.js) into a texture, drawn as
+//   one quad.
 // Positions are sent relative to the mesh's centre so float32 keeps the precision of a zoom.
 
-import { walk } from './mesh-index.js';
+import { parseColour, rasterizeOverview, walkOverview } from './mesh-overview.js';
 
 const MESH_VERTEX = `#version 300 es
 in vec2 position;
@@ -65,7 +66,6 @@ void main() { vec4 c = texture(picture, uv); outColour = vec4(c.rgb, c.a * alpha
 
 /** Chunks whose triangles' mean edge is below this many device pixels come from the overview. */
 export const OVERVIEW_BELOW_PX = 6;
-const OVERVIEW_TEXELS = 2560;
 /** Meshes above this many triangles are sent to the GPU after their first picture. */
 const DEFER_ABOVE = 200_000;
 const MAX_TEXTURE = 4096;
@@ -88,16 +88,6 @@ function link(gl, vertex, fragment, attributes, uniforms) {
   for (const a of attributes) at[a] = gl.getAttribLocation(program, a);
   for (const u of uniforms) at[u] = gl.getUniformLocation(program, u);
   return at;
-}
-
-/** '#rrggbb' or 'rgba(r, g, b, a)' as four numbers in 0..1. */
-export function parseColour(css) {
-  if (css.startsWith('#')) {
-    const n = parseInt(css.slice(1), 16);
-    return [(n >> 16 & 255) / 255, (n >> 8 & 255) / 255, (n & 255) / 255, 1];
-  }
-  const [r, g, b, a = 1] = css.replace(/[^\d.,]/g, '').split(',').map(Number);
-  return [r / 255, g / 255, b / 255, a];
 }
 
 function buffer(gl, program, name, data, size, type = gl.FLOAT, normalized = false) {
@@ -303,7 +293,7 @@ export class GlMesh {
     if (!this.geometryReady) {
       // A large mesh's first picture: only the triangles under the overview's texels are coloured.
       this.colouring = { palette, classOf, edgeColour, classes: null };
-      this.walkOverview(palette, classOf, edgeColour);
+      this.uploadOverview(walkOverview(this.source, this.overviewBox(), palette, classOf, edgeColour), false);
       return;
     }
     this.colouring = { palette, classOf, edgeColour, classes: this.classesOf(classOf) };
@@ -333,135 +323,7 @@ export class GlMesh {
       gl.bindBuffer(gl.ARRAY_BUFFER, this.colours);
       gl.bufferData(gl.ARRAY_BUFFER, packed, gl.STATIC_DRAW);
     }
-    this.rasterizeOverview(palette, classes, edgeColour);
-  }
-
-  /** The overview's size: texels across the box's longer side, capped by the GL's limit. */
-  overviewSize(texels) {
-    const { minX, minY, maxX, maxY } = this.box;
-    const w = Math.max(maxX - minX, 1e-300); const h = Math.max(maxY - minY, 1e-300);
-    const limit = Math.min(MAX_TEXTURE, this.gl.getParameter(this.gl.MAX_TEXTURE_SIZE));
-    const perUnit = Math.min(texels, limit) / Math.max(w, h);
-    return { w, h, perUnit, width: Math.max(1, Math.ceil(w * perUnit)), height: Math.max(1, Math.ceil(h * perUnit)) };
-  }
-
-  /** Texel colours of each class with an edge share of q / 16 blended in: shades[17 * class + q]. */
-  static shades(palette, edgeColour) {
-    const [er, eg, eb, ea] = parseColour(edgeColour);
-    const shades = new Uint32Array(palette.length * 17);
-    palette.forEach((css, c) => {
-      const [fr, fg, fb] = parseColour(css);
-      for (let q = 0; q <= 16; q++) {
-        const on = (q / 16) * ea;
-        const r = Math.round(255 * (fr + (er - fr) * on)); const g = Math.round(255 * (fg + (eg - fg) * on));
-        const b = Math.round(255 * (fb + (eb - fb) * on));
-        shades[17 * c + q] = ((255 << 24) | (b << 16) | (g << 8) | r) >>> 0;
-      }
-    });
-    return shades;
-  }
-
-  /**
-   * The quick overview of a large mesh (its first picture): one texel per device pixel at the
-   * scale that fits the mesh, each texel's triangle found by walking from the previous texel's
-   * (or the one above it), so only the triangles under texel centres are looked at. A texel whose
-   * walk meets the boundary from both starts (outside the domain, or behind a hole or a notch)
-   * stays transparent; the sharp overview made with the triangles fills it a moment later.
-   */
-  walkOverview(palette, classOf, edgeColour) {
-    const mesh = this.source;
-    const p = mesh.points;
-    const tri = mesh.triangles;
-    const { minX, minY } = this.box;
-    const fit = this.fitScale();
-    const size = this.overviewSize(Math.min(OVERVIEW_TEXELS, fit * this.longerSide()));
-    const shades = GlMesh.shades(palette, edgeColour);
-    const lineTexels = size.sx / fit;  // one device pixel at the scale that fits the mesh
-    const image = new Uint32Array(size.width * size.height);
-    const above = new Int32Array(size.width).fill(-1);
-    const seen = new Uint32Array(this.triangleCount);  // triangle -> its texel colour (0: not yet)
-    // The first walk starts at the triangle whose first corner is nearest the first texel.
-    let last = 0;
-    let best = Infinity;
-    const fx = minX + 0.5 / size.sx; const fy = minY + 0.5 / size.sy;
-    for (let t = 0; t < this.triangleCount; t++) {
-      const v = 2 * tri[3 * t];
-      const d = (p[v] - fx) * (p[v] - fx) + (p[v + 1] - fy) * (p[v + 1] - fy);
-      if (d < best) { best = d; last = t; }
-    }
-    for (let y = 0; y < size.height; y++) {
-      const wy = minY + (y + 0.5) / size.sy;
-      for (let x = 0; x < size.width; x++) {
-        const wx = minX + (x + 0.5) / size.sx;
-        let t = walk(mesh, last, wx, wy, 512);
-        if (t < 0 && above[x] >= 0) t = walk(mesh, above[x], wx, wy, 512);
-        above[x] = t;
-        if (t < 0) continue;
-        last = t;
-        let colour = seen[t];
-        if (colour === 0) {
-          const i = 2 * tri[3 * t]; const j = 2 * tri[3 * t + 1]; const k = 2 * tri[3 * t + 2];
-          const perimeter = Math.hypot(p[j] - p[i], p[j + 1] - p[i + 1]) + Math.hypot(p[k] - p[j], p[k + 1] - p[j + 1]) +
-            Math.hypot(p[i] - p[k], p[i + 1] - p[k + 1]);
-          const area2 = Math.abs((p[j] - p[i]) * (p[k + 1] - p[i + 1]) - (p[j + 1] - p[i + 1]) * (p[k] - p[i]));
-          const on = area2 > 0 ? (lineTexels * perimeter) / (area2 * size.sx) : 1;
-          colour = shades[17 * classOf(t) + (on >= 1 ? 16 : Math.round(on * 16))];
-          seen[t] = colour;
-        }
-        image[y * size.width + x] = colour;
-      }
-      last = above[0] >= 0 ? above[0] : last;
-    }
-    this.uploadOverview(image, size, false);
-  }
-
-  /**
-   * The sharp overview: every triangle rasterized (one sample per texel at its centre, found by
-   * scanning the triangle's texel box), OVERVIEW_TEXELS across the box's longer side: texels of
-   * at most 2 device pixels up to 1280 device pixels across the box. The edges are the share of
-   * a one-device-pixel line (at the scale that fits the mesh) they would cover in the triangle:
-   * half its perimeter times the line's width, over its area.
-   */
-  rasterizeOverview(palette, classes, edgeColour) {
-    const mesh = this.source;
-    const p = mesh.points;
-    const tri = mesh.triangles;
-    const { minX, minY } = this.box;
-    const size = this.overviewSize(OVERVIEW_TEXELS);
-    const { width, height, sx, sy } = size;
-    const lineTexels = sx / this.fitScale();
-    const shades = GlMesh.shades(palette, edgeColour);
-    const image = new Uint32Array(width * height);  // transparent where there is no triangle
-    for (let t = 0; t < this.triangleCount; t++) {
-      const i = 2 * tri[3 * t]; const j = 2 * tri[3 * t + 1]; const k = 2 * tri[3 * t + 2];
-      // Texel coordinates (texel centres at integer + 0.5).
-      const ax = (p[i] - minX) * sx; const ay = (p[i + 1] - minY) * sy;
-      const bx = (p[j] - minX) * sx; const by = (p[j + 1] - minY) * sy;
-      const cx = (p[k] - minX) * sx; const cy = (p[k + 1] - minY) * sy;
-      const x0 = Math.max(0, Math.ceil((ax < bx ? (ax < cx ? ax : cx) : (bx < cx ? bx : cx)) - 0.5));
-      const x1 = Math.min(width - 1, Math.floor((ax > bx ? (ax > cx ? ax : cx) : (bx > cx ? bx : cx)) - 0.5));
-      if (x0 > x1) continue;
-      const y0 = Math.max(0, Math.ceil((ay < by ? (ay < cy ? ay : cy) : (by < cy ? by : cy)) - 0.5));
-      const y1 = Math.min(height - 1, Math.floor((ay > by ? (ay > cy ? ay : cy) : (by > cy ? by : cy)) - 0.5));
-      if (y0 > y1) continue;
-      const area2 = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-      if (area2 <= 0) continue;
-      const perimeter = Math.sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay)) +
-        Math.sqrt((cx - bx) * (cx - bx) + (cy - by) * (cy - by)) + Math.sqrt((ax - cx) * (ax - cx) + (ay - cy) * (ay - cy));
-      const on = lineTexels * perimeter / area2;
-      const colour = shades[17 * classes[t] + (on >= 1 ? 16 : Math.round(on * 16))];
-      for (let y = y0; y <= y1; y++) {
-        const py = y + 0.5;
-        for (let x = x0; x <= x1; x++) {
-          const px = x + 0.5;
-          if ((bx - ax) * (py - ay) - (by - ay) * (px - ax) < 0) continue;
-          if ((cx - bx) * (py - by) - (cy - by) * (px - bx) < 0) continue;
-          if ((ax - cx) * (py - cy) - (ay - cy) * (px - cx) < 0) continue;
-          image[y * width + x] = colour;
-        }
-      }
-    }
-    this.uploadOverview(image, size, true);
+    this.uploadOverview(rasterizeOverview(this.source, this.overviewBox(), palette, classes, edgeColour), true);
   }
 
   /** Device pixels per world unit when the mesh's box fills the canvas. */
@@ -470,39 +332,16 @@ export class GlMesh {
     return Math.min(this.canvas.width / Math.max(maxX - minX, 1e-300), this.canvas.height / Math.max(maxY - minY, 1e-300));
   }
 
-  longerSide() {
-    const { minX, minY, maxX, maxY } = this.box;
-    return Math.max(maxX - minX, maxY - minY, 1e-300);
+  /** What the overview rasterizers need: the mesh's box, the fit scale and the texture limit. */
+  overviewBox() {
+    return {
+      ...this.box,
+      fit: this.fitScale(),
+      limit: Math.min(MAX_TEXTURE, this.gl.getParameter(this.gl.MAX_TEXTURE_SIZE)),
+    };
   }
 
-  /** The overview's texels: `texels` across the box's longer side, within the GL's limit. */
-  overviewSize(texels) {
-    const { minX, minY, maxX, maxY } = this.box;
-    const w = Math.max(maxX - minX, 1e-300); const h = Math.max(maxY - minY, 1e-300);
-    const limit = Math.min(MAX_TEXTURE, this.gl.getParameter(this.gl.MAX_TEXTURE_SIZE));
-    const perUnit = Math.max(1, Math.min(texels, limit)) / Math.max(w, h);
-    const width = Math.max(1, Math.min(limit, Math.ceil(w * perUnit)));
-    const height = Math.max(1, Math.min(limit, Math.ceil(h * perUnit)));
-    return { width, height, sx: width / w, sy: height / h };
-  }
-
-  /** Texel colours of each class with an edge share of q / 16 blended in: shades[17 * class + q]. */
-  static shades(palette, edgeColour) {
-    const [er, eg, eb, ea] = parseColour(edgeColour);
-    const shades = new Uint32Array(palette.length * 17);
-    palette.forEach((css, c) => {
-      const [fr, fg, fb] = parseColour(css);
-      for (let q = 0; q <= 16; q++) {
-        const on = (q / 16) * ea;
-        const r = Math.round(255 * (fr + (er - fr) * on)); const g = Math.round(255 * (fg + (eg - fg) * on));
-        const b = Math.round(255 * (fb + (eb - fb) * on));
-        shades[17 * c + q] = ((255 << 24) | (b << 16) | (g << 8) | r) >>> 0;  // little-endian RGBA bytes
-      }
-    });
-    return shades;
-  }
-
-  uploadOverview(image, { width, height, sx }, sharp) {
+  uploadOverview({ image, size: { width, height, sx } }, sharp) {
     const gl = this.gl;
     gl.bindTexture(gl.TEXTURE_2D, this.texture);
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
