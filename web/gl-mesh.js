@@ -402,7 +402,9 @@ export class GlMesh {
     gl.clearColor(br, bg, bb, 1);
     gl.clear(gl.COLOR_BUFFER_BIT);
     gl.enable(gl.BLEND);
-    gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
+    // Colours blend over what is there; the canvas's alpha stays 1 (it is composited as
+    // premultiplied: an alpha below 1 would wash a dimmed mesh out towards white).
+    gl.blendFuncSeparate(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA, gl.ZERO, gl.ONE);
     const sx = (2 * view.scale) / view.width;
     const sy = (2 * view.scale) / view.height;
     const [ox, oy] = this.origin;

@@ -246,3 +246,38 @@ test('a lost WebGL context sends the page back to the 2D canvas', async () => {
   assert.deepEqual(errors.filter((e) => !/WebGL/.test(e)), []);
   await page.close();
 });
+
+test('a step still on its way dims the mesh as the 2D path does, edges included', async () => {
+  // The same frame drawn dimmed by both renderers: the WebGL picture must not be washed out.
+  const picture = async (renderer) => {
+    const { page, errors } = await openPage(harness.context, `${harness.baseUrl}/web/?bench=1&renderer=${renderer}`);
+    assert.equal(await settle(page), 'done');
+    const mean = await page.evaluate(async () => {
+      const { renderer: r, view } = window.ruppertBench;
+      await new Promise(requestAnimationFrame);
+      // A step whose mesh has not arrived: drawn at 0.35 opacity (Renderer.showsStep is false).
+      r.draw({
+        view, drawing: { points: [], segments: [], holes: [], regions: [] }, colorMode: 'angle', snap: false,
+        selection: null, hoverItem: null, hoverTriangle: -1, pendingChain: null, keyCursor: null, notices: [],
+        step: { final: r.mesh, events: { count: 1 }, index: 0, shown: null },
+      });
+      const out = document.createElement('canvas');
+      const top = document.getElementById('canvas');
+      out.width = top.width; out.height = top.height;
+      const ctx = out.getContext('2d');
+      ctx.fillStyle = '#fff'; ctx.fillRect(0, 0, out.width, out.height);
+      if (r.gl) ctx.drawImage(document.getElementById('gl-canvas'), 0, 0);
+      ctx.drawImage(top, 0, 0);
+      const data = ctx.getImageData(0, 0, out.width, out.height).data;
+      let sum = 0;
+      for (let i = 0; i < data.length; i += 4) sum += data[i] + data[i + 1] + data[i + 2];
+      return sum / (data.length / 4) / 3;
+    });
+    assert.deepEqual(errors, []);
+    await page.close();
+    return mean;
+  };
+  const gl = await picture('webgl');
+  const canvas2d = await picture('2d');
+  assert.ok(Math.abs(gl - canvas2d) < 4, `mean brightness of the dimmed picture: WebGL ${gl.toFixed(1)}, 2D ${canvas2d.toFixed(1)}`);
+});
