@@ -1,9 +1,13 @@
 // Finding the triangle under the pointer without scanning the mesh: a short walk from the last
-// triangle hovered (the pointer moves a little between events), else a uniform grid of buckets
-// over the mesh's box, each listing the triangles whose bounding box meets it. The grid is built
-// on the first hover of a mesh (not on its arrival, so the first picture does not wait for it).
+// triangle hovered (the pointer moves a little between events); else a walk from the triangle
+// whose centroid lies in the point's cell of a coarse grid (one triangle a cell, built in one
+// pass); else, where that walk meets the boundary (a hole or a notch between), a uniform grid of
+// buckets over the mesh's box, each listing the triangles whose bounding box meets it. Both grids
+// are built when first needed (not on the mesh's arrival, so the first picture does not wait).
 
 const WALK_STEPS = 64;
+const SEED_WALK_STEPS = 1024;
+const seedGrids = new WeakMap();  // mesh -> SeedGrid
 const grids = new WeakMap();  // mesh -> TriangleGrid
 
 function inside(p, tri, t, x, y) {
@@ -28,6 +32,60 @@ export function walk(mesh, t, x, y, maxSteps = WALK_STEPS) {
     if (t < 0) return -1;
   }
   return -1;
+}
+
+/** Box of the mesh's points. */
+function boxOf(p) {
+  let minX = Infinity; let minY = Infinity; let maxX = -Infinity; let maxY = -Infinity;
+  for (let i = 0; i < p.length; i += 2) {
+    if (p[i] < minX) minX = p[i];
+    if (p[i] > maxX) maxX = p[i];
+    if (p[i + 1] < minY) minY = p[i + 1];
+    if (p[i + 1] > maxY) maxY = p[i + 1];
+  }
+  return { minX, minY, w: Math.max(maxX - minX, 1e-300), h: Math.max(maxY - minY, 1e-300) };
+}
+
+/** One triangle per cell (the last whose centroid falls in it), about four triangles a cell. */
+export class SeedGrid {
+  constructor(mesh) {
+    const p = mesh.points;
+    const tri = mesh.triangles;
+    const n = tri.length / 3;
+    Object.assign(this, boxOf(p));
+    const cells = Math.max(1, Math.ceil(n / 4));
+    this.nx = Math.max(1, Math.min(2048, Math.round(Math.sqrt(cells * this.w / this.h))));
+    this.ny = Math.max(1, Math.min(2048, Math.round(cells / this.nx)));
+    this.seeds = new Int32Array(this.nx * this.ny).fill(-1);
+    for (let t = 0; t < n; t++) {
+      const i = 2 * tri[3 * t]; const j = 2 * tri[3 * t + 1]; const k = 2 * tri[3 * t + 2];
+      this.seeds[this.cell((p[i] + p[j] + p[k]) / 3, (p[i + 1] + p[j + 1] + p[k + 1]) / 3)] = t;
+    }
+  }
+
+  cell(x, y) {
+    const cx = Math.min(this.nx - 1, Math.max(0, Math.floor(((x - this.minX) / this.w) * this.nx)));
+    const cy = Math.min(this.ny - 1, Math.max(0, Math.floor(((y - this.minY) / this.h) * this.ny)));
+    return cy * this.nx + cx;
+  }
+
+  /** A triangle near (x, y): its cell's seed, or the first seed of the cells around it. */
+  near(x, y) {
+    const c = this.cell(x, y);
+    if (this.seeds[c] >= 0) return this.seeds[c];
+    const cx = c % this.nx; const cy = (c - cx) / this.nx;
+    for (let r = 1; r < 4; r++) {
+      for (let dy = -r; dy <= r; dy++) {
+        for (let dx = -r; dx <= r; dx++) {
+          const x2 = cx + dx; const y2 = cy + dy;
+          if (x2 < 0 || y2 < 0 || x2 >= this.nx || y2 >= this.ny) continue;
+          const s = this.seeds[y2 * this.nx + x2];
+          if (s >= 0) return s;
+        }
+      }
+    }
+    return 0;
+  }
 }
 
 export class TriangleGrid {
@@ -89,6 +147,13 @@ export function locateTriangle(mesh, x, y, hint = -1) {
     const t = walk(mesh, hint, x, y);
     if (t >= 0) return t;
   }
+  let seeds = seedGrids.get(mesh);
+  if (!seeds) {
+    seeds = new SeedGrid(mesh);
+    seedGrids.set(mesh, seeds);
+  }
+  const t = walk(mesh, seeds.near(x, y), x, y, SEED_WALK_STEPS);
+  if (t >= 0) return t;
   let grid = grids.get(mesh);
   if (!grid) {
     grid = new TriangleGrid(mesh);

@@ -7,6 +7,10 @@
 //   triangles on the GPU (WebGL, meshes above 200k triangles): from the arrival until the task
 //     after the first picture has sent them (until then the view comes from the quick overview)
 //   frame: one pan or zoom step redrawn and finished (GPU readback / 2D pixel read), median of N
+//   hover (WebGL rounds): the triangle under 200 random points of the mesh's box, found from the
+//     spatial index (mesh-index.js; its first call builds its seed grid, timed apart) and by the
+//     page's former lookup (mesh-geometry.js findTriangle: a walk of up to 4096 steps from
+//     triangle 0, then a scan), both without a hint (a jump of the pointer)
 //
 //   node tests/bench/render-bench.mjs [--rounds 3] [--frames 20] [--max-area 6.5e-7] [--out FILE]
 import { writeFileSync } from 'node:fs';
@@ -56,13 +60,30 @@ async function round(harness, renderer) {
     const times = await run();
     view.zoomAt(view.width / 2, view.height / 2, 16);
     const zoomed = await run();
+    let hover = null;
+    if (renderer.gl) {
+      const { locateTriangle } = await import('./mesh-index.js');
+      const { findTriangle } = await import('./mesh-geometry.js');
+      const p = renderer.mesh.points;
+      let seed = 1;
+      const random = () => { seed = (seed * 16807) % 2147483647; return seed / 2147483647; };
+      const points = Array.from({ length: 200 }, () => [random(), random()]);
+      const timed = (find) => points.map(([x, y]) => { const t0 = performance.now(); find(x, y); return performance.now() - t0; });
+      const t0 = performance.now();
+      locateTriangle(renderer.mesh, 0.5, 0.5, -1);
+      const gridBuild = performance.now() - t0;  // the first lookup builds the seed grid
+      const grid = timed((x, y) => locateTriangle(renderer.mesh, x, y, -1));
+      const scan = timed((x, y) => findTriangle(renderer.mesh, x, y, -1)).slice(0, 40);
+      const mid = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
+      hover = { gridBuild, grid: mid(grid), scan: mid(scan), points: p.length / 2 };
+    }
     const ready = renderer.gl?.readyAt ? renderer.gl.readyAt - Number(document.body.dataset.meshArrivedAt) : null;
-    return { triangles, times, zoomed, ready, firstPicture: Number(document.body.dataset.firstPictureMs) };
+    return { triangles, times, zoomed, ready, hover, firstPicture: Number(document.body.dataset.firstPictureMs) };
   }, FRAMES);
   await page.close();
   if (errors.length) throw new Error(`console errors: ${errors.join('; ')}`);
   return {
-    renderer, triangles: result.triangles, firstPictureMs: result.firstPicture, onGpuMs: result.ready,
+    renderer, triangles: result.triangles, firstPictureMs: result.firstPicture, onGpuMs: result.ready, hover: result.hover,
     frameMs: median(result.times), zoomedFrameMs: median(result.zoomed),
   };
 }
@@ -75,6 +96,10 @@ try {
       const row = await round(harness, renderer);
       rows.push({ round: r, ...row });
       const gpu = row.onGpuMs === null ? '' : ` (triangles on the GPU after ${row.onGpuMs.toFixed(0)} ms)`;
+      if (row.hover) {
+        console.log(`round ${r} hover: ${row.hover.grid.toFixed(3)} ms from the index (its grid built in ${row.hover.gridBuild.toFixed(0)} ms on the first hover), ` +
+          `${row.hover.scan.toFixed(1)} ms by the former walk-then-scan (medians)`);
+      }
       console.log(`round ${r} ${renderer.padEnd(5)} ${row.triangles} triangles: first picture ${row.firstPictureMs.toFixed(0)} ms${gpu}, ` +
         `median frame ${row.frameMs.toFixed(1)} ms (whole mesh in view), ${row.zoomedFrameMs.toFixed(1)} ms (zoomed in 16x)`);
     }
@@ -90,6 +115,9 @@ for (const renderer of ['webgl', '2d']) {
     frameMs: median(mine.map((r) => r.frameMs)),
     zoomedFrameMs: median(mine.map((r) => r.zoomedFrameMs)),
     onGpuMs: renderer === 'webgl' ? median(mine.map((r) => r.onGpuMs)) : null,
+    hoverMs: renderer === 'webgl' ? median(mine.map((r) => r.hover.grid)) : null,
+    hoverScanMs: renderer === 'webgl' ? median(mine.map((r) => r.hover.scan)) : null,
+    gridBuildMs: renderer === 'webgl' ? median(mine.map((r) => r.hover.gridBuild)) : null,
   };
 }
 const speedup = summary['2d'].frameMs / summary.webgl.frameMs;
