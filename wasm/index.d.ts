@@ -202,7 +202,7 @@ export interface Events {
   b: Uint32Array;
   /** Encroaching vertex (SEGMENT_SPLIT), -1 if none. */
   by: Int32Array;
-  /** The skinny triangle's three vertices per event (CIRCUMCENTER, OFF_CENTER, REJECTED). */
+  /** The skinny triangle's three vertices per event (CIRCUMCENTER, OFF_CENTER, REJECTED, PETAL_POINT, OPTIMAL_POINT). */
   triangle: Uint32Array;
   /** Rejected circumcenter: x, y per event (REJECTED). */
   circumcenter: Float64Array;
@@ -298,7 +298,11 @@ export declare class MeshError extends Error {
 export declare const VertexKind: Readonly<{
   INPUT: 0; SEGMENT_SPLIT: 1; INTERIOR: 2; OFF_CENTER: 3; INTERSECTION: 4; UNUSED: 5;
 }>;
-export declare const EventKind: Readonly<{ SEGMENT_SPLIT: 0; CIRCUMCENTER: 1; OFF_CENTER: 2; REJECTED: 3 }>;
+export declare const EventKind: Readonly<{
+  SEGMENT_SPLIT: 0; CIRCUMCENTER: 1; OFF_CENTER: 2; REJECTED: 3;
+  /** The point placement 'petal' or 'optimal' chose instead of the off-center (never rejected). */
+  PETAL_POINT: 4; OPTIMAL_POINT: 5;
+}>;
 export declare const NO_NEIGHBOR: -1;
 export declare const NO_INPUT_SEGMENT: -1;
 

@@ -19,7 +19,11 @@ export const VertexKind = Object.freeze({
   INPUT: 0, SEGMENT_SPLIT: 1, INTERIOR: 2, OFF_CENTER: 3, INTERSECTION: 4, UNUSED: 5,
 });
 /** EventKind values in mesh.events.kind (ruppert::EventKind). */
-export const EventKind = Object.freeze({ SEGMENT_SPLIT: 0, CIRCUMCENTER: 1, OFF_CENTER: 2, REJECTED: 3 });
+export const EventKind = Object.freeze({
+  SEGMENT_SPLIT: 0, CIRCUMCENTER: 1, OFF_CENTER: 2, REJECTED: 3,
+  // The point placement 'petal' or 'optimal' chose instead of the off-center (never rejected).
+  PETAL_POINT: 4, OPTIMAL_POINT: 5,
+});
 /** mesh.neighbors entry for an edge on the domain boundary. */
 export const NO_NEIGHBOR = -1;
 /** mesh.segmentIds entry for a convex-hull edge that no input segment covers. */

@@ -8,10 +8,12 @@ import { isEditable, isEmbedded, listenToHost, postError, postMeshed, postSteppe
 import { canvasBlob, download, exportText, parseInput, parsePolyText } from './files.js';
 import { History } from './history.js';
 import { MeshScheduler } from './mesh-scheduler.js';
-import { findTriangle, triangleShape } from './mesh-geometry.js';
+import { triangleShape } from './mesh-geometry.js';
+import { locateTriangle } from './mesh-index.js';
 import { DEFAULT_PRESET, PRESETS, findPreset } from './presets.js';
-import { Renderer, legendEntries } from './render.js';
-import { showStats } from './stats-panel.js';
+import { Renderer, VERTEX_NUMBERS_UP_TO, exemptionLegend, legendEntries } from './render.js';
+import { findExemptions } from './exemptions.js';
+import { showEventCounts, showExemptions, showStats } from './stats-panel.js';
 import { StepReplay } from './step-replay.js';
 import { Stepper, describeEvent } from './stepper.js';
 import { MAX_HASH_LENGTH, decodeDrawing, decodePageState, encodeDrawing, encodePageState } from './url-state.js';
@@ -23,7 +25,24 @@ const PROGRESS_DELAY_MS = 200;
 
 const canvas = $('canvas');
 const view = new View();
-const renderer = new Renderer(canvas);
+// The mesh is drawn in WebGL when the browser has it (`?renderer=2d` asks for the 2D canvas).
+const wantGl = new URLSearchParams(location.search).get('renderer') !== '2d';
+const renderer = new Renderer(canvas, wantGl ? $('gl-canvas') : null);
+$('gl-canvas').hidden = renderer.gl === null;
+document.body.dataset.renderer = renderer.gl ? 'webgl' : '2d';
+$('renderer-note').hidden = renderer.gl !== null || !wantGl;
+// `?bench=1` (tests/bench/render-bench.mjs, tests/browser): the page's view, renderer and drawing, and the
+// time from a mesh's arrival to its first finished picture in body[data-first-picture-ms].
+renderer.onReady = () => scheduleDraw();
+renderer.onFallback = () => {
+  document.body.dataset.renderer = '2d';
+  $('renderer-note').textContent = 'The WebGL context was lost: the mesh is drawn with the 2D canvas now, slower, and above 200,000 triangles without its colours.';
+  $('renderer-note').hidden = false;
+  scheduleDraw();
+};
+const bench = new URLSearchParams(location.search).has('bench');
+let meshArrivedAt = null;
+if (bench) window.ruppertBench = { view, renderer, draw: () => draw(), exemptions: () => app.exemptions };
 const embedded = isEmbedded();
 if (embedded) document.body.classList.add('embed');
 const readOnly = !isEditable();
@@ -41,6 +60,7 @@ const app = {
   stepMesh: null,       // step mode: the mesh of the step on screen (StepReplay), else null
   pendingStep: null,    // a step to show once the mesh with its trace arrives (link, host)
   hoverTriangle: -1,
+  exemptions: null,     // triangles left skinny on purpose (§6.6) in app.mesh, or null
   writtenHash: '',
   viewMoved: false,     // set by the editor on pan and zoom
   changed: ({ commit }) => {
@@ -110,7 +130,14 @@ function draw() {
     keyCursor: editor.keyCursor,
     notices: app.notices,
     step,
+    exemptions: app.exemptions,
+    vertexNumbers: $('vertex-numbers').checked,
   });
+  if (meshArrivedAt !== null) {
+    renderer.finish();
+    document.body.dataset.firstPictureMs = (performance.now() - meshArrivedAt).toFixed(1);
+    meshArrivedAt = null;
+  }
 }
 
 function resize() {
@@ -234,6 +261,10 @@ const scheduler = new MeshScheduler({
       `Meshing… ${p.insertedVertices.toLocaleString('en-US')} vertices inserted, ${p.triangles.toLocaleString('en-US')} triangles, worst angle ${p.worstAngle.toFixed(1)}°`;
   },
   onResult(mesh, request) {
+    if (bench) {
+      meshArrivedAt = performance.now();
+      document.body.dataset.meshArrivedAt = String(meshArrivedAt);
+    }
     stopProgress();
     app.mesh = mesh;
     app.meshedPlc = request.plc;
@@ -242,6 +273,9 @@ const scheduler = new MeshScheduler({
     app.stepMesh = null;
     renderer.setMesh(mesh);
     showStats(statElements, mesh);
+    markExemptions(mesh, request);
+    vertexNumbersNote();
+    showEventCounts($('stat-events'), mesh);
     showNotices(mesh.notices);
     updateLegend();
     replay.reset(request.plc, request.options, app.stepMode ? mesh : null);
@@ -297,6 +331,9 @@ function clearMesh() {
   app.stepMesh = null;
   renderer.setMesh(null);
   showStats(statElements, null);
+  app.exemptions = null;
+  showExemptions($('stat-exempt'), null);
+  showEventCounts($('stat-events'), null);
   replay.clear();
   stepper.setEvents(null);
   updateLegend();
@@ -334,6 +371,19 @@ function showPendingStep() {
 
 $('cancel').addEventListener('click', () => scheduler.cancel());
 
+// Triangles left skinny on purpose (§6.6), found from the mesh and marked; not looked for in
+// meshes above EXEMPTIONS_UP_TO triangles (the search would hold up their first picture).
+const EXEMPTIONS_UP_TO = 200_000;
+function markExemptions(mesh, request) {
+  if (mesh.triangles.length / 3 > EXEMPTIONS_UP_TO) {
+    app.exemptions = null;
+    $('stat-exempt').textContent = `not looked for above ${EXEMPTIONS_UP_TO.toLocaleString('en-US')} triangles`;
+    return;
+  }
+  app.exemptions = { mesh, ...findExemptions(mesh, request.plc, request.options.minAngle) };
+  showExemptions($('stat-exempt'), app.exemptions);
+}
+
 // ---------------------------------------------------------------- hover
 function hover(world) {
   const info = $('hover-info');
@@ -345,7 +395,7 @@ function hover(world) {
   }
   // In step mode the mesh on screen is that of the step shown.
   const mesh = app.stepMesh ?? app.mesh;
-  const t = findTriangle(mesh, world.x, world.y, app.hoverTriangle);
+  const t = locateTriangle(mesh, world.x, world.y, app.hoverTriangle);
   app.hoverTriangle = t;
   if (t < 0) {
     info.hidden = true;
@@ -503,17 +553,29 @@ for (const id of ['region-attribute', 'region-max-area']) {
 
 // ---------------------------------------------------------------- display and step mode
 function updateLegend() {
-  const entries = legendEntries(app.colorMode, app.mesh);
-  $('legend').replaceChildren(...entries.map(({ colour, label }) => {
+  const entries = [...legendEntries(app.colorMode, app.mesh), ...exemptionLegend(app.exemptions)];
+  $('legend').replaceChildren(...entries.map(({ colour, label, hatched }) => {
     const item = document.createElement('span');
     item.className = 'legend-item';
     const swatch = document.createElement('span');
     swatch.className = 'swatch';
-    swatch.style.background = colour;
+    swatch.style.background = hatched ? `repeating-linear-gradient(135deg, ${colour} 0 2px, #fff 2px 5px)` : colour;
     item.append(swatch, label);
     return item;
   }));
 }
+// Vertex numbers on demand, for meshes small enough to read them.
+function vertexNumbersNote() {
+  const note = $('vertex-numbers-note');
+  const many = app.mesh && app.mesh.points.length / 2 > VERTEX_NUMBERS_UP_TO;
+  note.hidden = !($('vertex-numbers').checked && many);
+  note.textContent = `shown for meshes of up to ${VERTEX_NUMBERS_UP_TO.toLocaleString('en-US')} vertices`;
+}
+$('vertex-numbers').addEventListener('change', () => {
+  vertexNumbersNote();
+  scheduleDraw();
+});
+
 $('color-mode').addEventListener('change', () => {
   app.colorMode = $('color-mode').value;
   updateLegend();
@@ -702,7 +764,7 @@ async function exportAs(format) {
   try {
     if (format === 'png') {
       draw();
-      download(await canvasBlob(canvas), 'ruppert-mesh.png', 'png');
+      download(await canvasBlob(renderer.snapshot()), 'ruppert-mesh.png', 'png');
     } else {
       download(await exportText(format, app.mesh, app.meshedPlc), `ruppert-mesh.${format}`, format);
     }

@@ -51,6 +51,20 @@ export function minAngles(mesh) {
   return result;
 }
 
+/** Smallest angle (degrees) of triangle t alone (colouring a few triangles before all). */
+export function minAngleOf(mesh, t) {
+  const p = mesh.points;
+  const tri = mesh.triangles;
+  const i = 2 * tri[3 * t]; const j = 2 * tri[3 * t + 1]; const k = 2 * tri[3 * t + 2];
+  const ux = p[j] - p[i]; const uy = p[j + 1] - p[i + 1];
+  const vx = p[k] - p[j]; const vy = p[k + 1] - p[j + 1];
+  const wx = p[i] - p[k]; const wy = p[i + 1] - p[k + 1];
+  const a2 = ux * ux + uy * uy; const b2 = vx * vx + vy * vy; const c2 = wx * wx + wy * wy;
+  const cross = Math.abs(ux * vy - uy * vx);
+  const s = a2 <= b2 && a2 <= c2 ? cross / Math.sqrt(b2 * c2) : b2 <= c2 ? cross / Math.sqrt(a2 * c2) : cross / Math.sqrt(a2 * b2);
+  return Math.asin(Math.min(1, s)) * DEG;
+}
+
 function contains(mesh, t, x, y) {
   const p = mesh.points;
   const tri = mesh.triangles;

@@ -5,9 +5,12 @@
 // replay them. Beyond LARGE_MESH triangles, per-triangle fills cost more than they show: only
 // the edges are drawn, as one path.
 import { circumcircle, splitShell } from './event-geometry.js';
-import { minAngles } from './mesh-geometry.js';
+import { minAngleOf, minAngles } from './mesh-geometry.js';
+import { GlMesh } from './gl-mesh.js';
 
 export const LARGE_MESH = 200_000;
+/** Vertex numbers are drawn for meshes of up to this many vertices (more would not be legible). */
+export const VERTEX_NUMBERS_UP_TO = 1000;
 
 /** Min-angle classes for colouring: [upper bound in degrees, colour]. */
 export const ANGLE_CLASSES = [
@@ -38,11 +41,21 @@ export const COLOURS = {
   step: '#d6336c',
   stepSecondary: '#1d4ed8',
   newVertex: '#d6336c',
+  exempt: '#7048e8',     // triangles nestled in small input angles (§6.6), hatched
+  seditious: '#f76707',  // seditious edges and their triangles (§6.6)
 };
 
 function angleClass(angle) {
   for (let c = 0; c < ANGLE_CLASSES.length; c++) if (angle < ANGLE_CLASSES[c][0]) return c;
   return ANGLE_CLASSES.length - 1;
+}
+
+/** Legend rows of the exemptions marked on the canvas (exemptions.js). */
+export function exemptionLegend(exemptions) {
+  const rows = [];
+  if (exemptions?.nestled.length) rows.push({ colour: COLOURS.exempt, label: 'in a small input angle (exempt)', hatched: true });
+  if (exemptions?.seditious.length) rows.push({ colour: COLOURS.seditious, label: 'seditious edge (exempt)' });
+  return rows;
 }
 
 /** Legend rows for a colour mode: [{ colour, label }]. */
@@ -65,15 +78,53 @@ function regionValues(mesh) {
   return [...new Set(mesh.triangleAttributes)].sort((a, b) => a - b);
 }
 
+let ANGLE_TABLE = null;
+
+/**
+ * The fill of every triangle for a colour mode, as the legend states it: a palette of CSS colours
+ * and the palette index of triangle t.
+ */
+export function triangleColouring(mode, mesh, minAngle) {
+  if (mode === 'angle') {
+    // A table by hundredths of a degree (every class bound is a multiple of 0.01°): no search.
+    const table = ANGLE_TABLE ?? (ANGLE_TABLE = Uint8Array.from({ length: 6001 }, (_, k) => angleClass(k / 100)));
+    // Without the per-triangle array (WebGL: a large mesh's first picture needs only some), each on demand.
+    const angle = minAngle ? (t) => minAngle[t] : (t) => minAngleOf(mesh, t);
+    return { palette: ANGLE_CLASSES.map(([, c]) => c), classOf: (t) => table[Math.min(6000, Math.floor(angle(t) * 100))] };
+  }
+  if (mode === 'region') {
+    const values = regionValues(mesh);
+    const index = new Map(values.map((v, i) => [v, i]));
+    const attributes = mesh.triangleAttributes;
+    return { palette: values.map((v, i) => REGION_COLOURS[i % REGION_COLOURS.length]), classOf: (t) => index.get(attributes[t]) };
+  }
+  return { palette: ['#eef2f8'], classOf: () => 0 };
+}
+
 export class Renderer {
-  /** @param {HTMLCanvasElement} canvas */
-  constructor(canvas) {
+  /**
+   * @param {HTMLCanvasElement} canvas the 2D canvas (the overlays; everything when there is no WebGL)
+   * @param {HTMLCanvasElement} [glCanvas] a canvas under it for the mesh in WebGL, if the browser has it
+   */
+  constructor(canvas, glCanvas = null) {
     this.canvas = canvas;
     this.ctx = canvas.getContext('2d');
     this.dpr = 1;
     this.mesh = null;
     this.cache = null;  // paths of the current mesh for the current colour mode
     this.minAngle = null;  // per-triangle smallest angle
+    this.gl = glCanvas ? GlMesh.create(glCanvas) : null;  // null: the mesh is drawn in 2D
+    this.onReady = null;  // called when a large mesh's triangles reached the GPU (draw again)
+    this.onFallback = null;  // called when a lost WebGL context sends the page back to 2D
+    // A lost context (the GPU process gone, too many contexts) takes the buffers with it: the page
+    // goes on in 2D rather than showing an empty canvas.
+    glCanvas?.addEventListener('webglcontextlost', () => {
+      if (!this.gl) return;
+      this.gl = null;
+      glCanvas.hidden = true;
+      this.setMesh(this.mesh);
+      this.onFallback?.();
+    });
   }
 
   /** Matches the backing store to the element's CSS size and the device pixel ratio. */
@@ -85,12 +136,55 @@ export class Renderer {
       this.canvas.width = w;
       this.canvas.height = h;
     }
+    this.gl?.resize(w, h);
   }
 
   setMesh(mesh) {
     this.mesh = mesh;
     this.cache = null;
-    this.minAngle = mesh ? minAngles(mesh) : null;
+    // The 2D path colours from the array; WebGL asks triangle by triangle (triangleColouring).
+    this.minAngle = mesh && !this.gl ? minAngles(mesh) : null;
+    this.gl?.setMesh(mesh, () => this.onReady?.());
+  }
+
+  /** Waits until the frame is drawn (benchmarks). */
+  finish() {
+    if (this.gl) this.gl.finish();
+    else this.ctx.getImageData(0, 0, 1, 1);
+  }
+
+  /** The picture as one canvas (the WebGL mesh under the 2D overlays), for PNG export. */
+  snapshot() {
+    if (!this.gl) return this.canvas;
+    const out = document.createElement('canvas');
+    out.width = this.canvas.width;
+    out.height = this.canvas.height;
+    const ctx = out.getContext('2d');
+    ctx.drawImage(this.gl.canvas, 0, 0);
+    ctx.drawImage(this.canvas, 0, 0);
+    return out;
+  }
+
+  /** WebGL: background, grid and mesh under the (transparent) 2D canvas. */
+  drawGl(s) {
+    const { view } = s;
+    if (this.mesh) {
+      const { palette, classOf } = triangleColouring(s.colorMode, this.mesh, this.minAngle);
+      this.gl.setColours(`${s.colorMode}:${palette.join()}`, palette, classOf, COLOURS.edge);
+    }
+    const grid = [];
+    const b = view.visibleBounds();
+    const step = view.gridStep();
+    const lines = (every, colour) => {
+      const xy = [];
+      for (let x = Math.ceil(b.minX / every) * every; x <= b.maxX; x += every) xy.push(x, b.minY, x, b.maxY);
+      for (let y = Math.ceil(b.minY / every) * every; y <= b.maxY; y += every) xy.push(b.minX, y, b.maxX, y);
+      grid.push({ lines: new Float32Array(xy), colour });
+    };
+    if (s.snap) lines(step, COLOURS.grid);
+    lines(step * 5, COLOURS.gridStrong);
+    const alpha = this.mesh && s.step && !this.showsStep(s.step) ? 0.35 : 1;
+    this.gl.draw(view, this.dpr, { background: COLOURS.background, grid, edgeColour: COLOURS.edge, alpha });
   }
 
   buildPaths(mode) {
@@ -150,16 +244,29 @@ export class Renderer {
     const { ctx, dpr } = this;
     const view = s.view;
     ctx.setTransform(1, 0, 0, 1, 0, 0);
-    ctx.fillStyle = COLOURS.background;
-    ctx.fillRect(0, 0, this.canvas.width, this.canvas.height);
+    if (this.gl) {
+      ctx.clearRect(0, 0, this.canvas.width, this.canvas.height);
+      this.drawGl(s);
+    } else {
+      ctx.fillStyle = COLOURS.background;
+      ctx.fillRect(0, 0, this.canvas.width, this.canvas.height);
+    }
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-    this.drawGrid(view, s.snap);
+    if (!this.gl) this.drawGrid(view, s.snap);
 
     const px = 1 / view.scale;  // one CSS pixel in world units
     const world = () => ctx.setTransform(...view.matrix(dpr));
     const screen = () => ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
 
-    if (this.mesh) {
+    if (this.mesh && this.gl) {
+      if (s.hoverTriangle >= 0 && s.hoverTriangle < this.mesh.triangles.length / 3) {
+        world();
+        ctx.strokeStyle = COLOURS.hover;
+        ctx.lineWidth = 2.5 * px;
+        ctx.stroke(this.trianglePath(s.hoverTriangle));
+        screen();
+      }
+    } else if (this.mesh) {
       if (this.cache === null || this.cache.mode !== s.colorMode) this.buildPaths(s.colorMode);
       world();
       // Step mode: the mesh is that of the step (StepReplay); dimmed only while it is still on
@@ -181,8 +288,10 @@ export class Renderer {
       screen();
     }
 
+    if (s.exemptions && this.mesh === s.exemptions.mesh) this.drawExemptions(s.exemptions, view, world, screen, px);
     this.drawDrawing(s, world, screen, px);
     if (s.step) this.drawStep(s.step, view, world, screen, px);
+    if (s.vertexNumbers) this.drawVertexNumbers(view);
     this.drawNotices(s.notices ?? [], view);
   }
 
@@ -196,6 +305,67 @@ export class Renderer {
     path.lineTo(p[k], p[k + 1]);
     path.closePath();
     return path;
+  }
+
+  /**
+   * The triangles left skinny on purpose (§6.6, exemptions.js): those nestled in a small input
+   * angle hatched, those on a seditious edge outlined, the seditious edge itself thick, in orange.
+   */
+  drawExemptions(x, view, world, screen, px) {
+    const { ctx } = this;
+    const p = this.mesh.points;
+    const tri = this.mesh.triangles;
+    const path = (list, at) => {
+      const out = new Path2D();
+      for (const t of list) {
+        for (let c = 0; c < 3; c++) {
+          const q = at(tri[3 * t + c]);
+          if (c === 0) out.moveTo(q.x, q.y); else out.lineTo(q.x, q.y);
+        }
+        out.closePath();
+      }
+      return out;
+    };
+    if (x.nestled.length) {
+      // In screen coordinates, so the hatching keeps its pixel spacing at any zoom.
+      const nestled = path(x.nestled, (v) => view.toScreen(p[2 * v], p[2 * v + 1]));
+      ctx.fillStyle = this.hatch();
+      ctx.fill(nestled);
+      ctx.strokeStyle = COLOURS.exempt;
+      ctx.lineWidth = 1.2;
+      ctx.stroke(nestled);
+    }
+    world();
+    if (x.seditious.length) {
+      ctx.strokeStyle = COLOURS.seditious;
+      ctx.lineWidth = 1.2 * px;
+      ctx.setLineDash([4 * px, 3 * px]);
+      ctx.stroke(path(x.seditious, (v) => ({ x: p[2 * v], y: p[2 * v + 1] })));
+      ctx.setLineDash([]);
+      const edges = new Path2D();
+      for (let i = 0; i < x.seditiousEdges.length; i += 2) {
+        const a = x.seditiousEdges[i]; const b = x.seditiousEdges[i + 1];
+        edges.moveTo(p[2 * a], p[2 * a + 1]);
+        edges.lineTo(p[2 * b], p[2 * b + 1]);
+      }
+      ctx.lineWidth = 3.5 * px;
+      ctx.stroke(edges);
+    }
+    screen();
+  }
+
+  /** Diagonal violet lines for the triangles nestled in small input angles (screen-aligned). */
+  hatch() {
+    if (!this.hatchPattern) {
+      const tile = document.createElement('canvas');
+      tile.width = 8; tile.height = 8;
+      const t = tile.getContext('2d');
+      t.strokeStyle = COLOURS.exempt;
+      t.lineWidth = 1.5;
+      t.beginPath(); t.moveTo(0, 8); t.lineTo(8, 0); t.moveTo(-2, 2); t.lineTo(2, -2); t.moveTo(6, 10); t.lineTo(10, 6); t.stroke();
+      this.hatchPattern = this.ctx.createPattern(tile, 'repeat');
+    }
+    return this.hatchPattern;
   }
 
   drawGrid(view, snap) {
@@ -324,6 +494,36 @@ export class Renderer {
     });
   }
 
+  /**
+   * Each vertex of the mesh on screen with its number (the numbers the event texts use; in step
+   * mode those of the final mesh, the same in every step), for meshes of up to
+   * VERTEX_NUMBERS_UP_TO vertices and only those in view, one per small cell of the screen.
+   */
+  drawVertexNumbers(view) {
+    const { ctx } = this;
+    const p = this.mesh?.points;
+    if (!p || p.length / 2 > VERTEX_NUMBERS_UP_TO) return;
+    const used = new Uint8Array(p.length / 2);
+    for (const v of this.mesh.triangles) used[v] = 1;
+    ctx.font = '11px system-ui, sans-serif';
+    ctx.textAlign = 'left';
+    ctx.textBaseline = 'bottom';
+    ctx.lineJoin = 'round';
+    // One label per 18 x 12 pixel cell: where vertices crowd, the first takes the place (zoom in for the rest).
+    const taken = new Set();
+    for (let v = 0; v < p.length / 2; v++) {
+      if (!used[v]) continue;
+      const q = view.toScreen(p[2 * v], p[2 * v + 1]);
+      if (q.x < -20 || q.y < -20 || q.x > view.width + 20 || q.y > view.height + 20) continue;
+      const cell = `${Math.floor(q.x / 18)},${Math.floor(q.y / 12)}`;
+      if (taken.has(cell)) continue;
+      taken.add(cell);
+      ctx.lineWidth = 3; ctx.strokeStyle = '#fff'; ctx.strokeText(String(v), q.x + 3, q.y - 2);
+      ctx.fillStyle = '#111827'; ctx.fillText(String(v), q.x + 3, q.y - 2);
+    }
+    ctx.textBaseline = 'alphabetic';
+  }
+
   drawNotices(notices, view) {
     const { ctx } = this;
     for (const notice of notices) {
@@ -401,6 +601,12 @@ export class Renderer {
       if (by >= 0) marker(p[2 * by], p[2 * by + 1], COLOURS.stepSecondary, 5);  // the encroaching vertex
     } else if (kind === 1 || kind === 2) {  // CIRCUMCENTER, OFF_CENTER
       triangle(COLOURS.step);
+    } else if (kind === 4 || kind === 5) {  // PETAL_POINT, OPTIMAL_POINT: a diamond round the point chosen
+      triangle(COLOURS.step);
+      const q = view.toScreen(events.xy[2 * e], events.xy[2 * e + 1]);
+      ctx.beginPath();
+      ctx.moveTo(q.x, q.y - 12); ctx.lineTo(q.x + 12, q.y); ctx.lineTo(q.x, q.y + 12); ctx.lineTo(q.x - 12, q.y); ctx.closePath();
+      ctx.strokeStyle = COLOURS.stepSecondary; ctx.lineWidth = 2.5; ctx.stroke();
     } else if (kind === 3) {  // REJECTED
       triangle(COLOURS.stepSecondary);
       subsegment(COLOURS.step);

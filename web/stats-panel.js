@@ -1,4 +1,5 @@
 // The statistics panel: counts, angle range, completeness and the angle histogram.
+import { rejectedIsCircumcenter, splitShell } from './event-geometry.js';
 
 /**
  * Angles worth seeing against the histogram: Ruppert's guaranteed 20.7°, the 26.45° and 28.6°
@@ -77,4 +78,43 @@ export function drawHistogram(canvas, histogram) {
   for (const angle of [0, 30, 60, 90, 120, 150, 180]) {
     ctx.fillText(`${angle}°`, Math.min(Math.max(x(angle), 10), cssWidth - 12), cssHeight - 4);
   }
+}
+
+/** Event names, in the panel's order, and how to tell each from the trace (points: the final mesh's). */
+const EVENT_NAMES = [
+  ['midpoint split', (ev, e, p) => ev.kind[e] === 0 && splitShell(ev, e, p) === null],
+  ['shell split', (ev, e, p) => ev.kind[e] === 0 && splitShell(ev, e, p) !== null],
+  ['circumcenter', (ev, e) => ev.kind[e] === 1],
+  ['off-center', (ev, e) => ev.kind[e] === 2],
+  ['petal point', (ev, e) => ev.kind[e] === 4],
+  ['optimal point', (ev, e) => ev.kind[e] === 5],
+  ['rejected circumcenter', (ev, e, p) => ev.kind[e] === 3 && rejectedIsCircumcenter(ev, e, p)],
+  ['rejected off-center', (ev, e, p) => ev.kind[e] === 3 && !rejectedIsCircumcenter(ev, e, p)],
+];
+
+/** The count of each event kind: [[name, count], ...] (every kind, zeros included). */
+export function countEvents(events, points) {
+  const counts = EVENT_NAMES.map(([name]) => [name, 0]);
+  for (let e = 0; e < events.count; e++) {
+    const i = EVENT_NAMES.findIndex(([, is]) => is(events, e, points));
+    if (i >= 0) counts[i][1]++;
+  }
+  return counts;
+}
+
+/** The Events row: the nonzero counts, or why there are none. */
+export function showEventCounts(element, mesh) {
+  if (!mesh) { element.textContent = '–'; return; }
+  if (!mesh.events) { element.textContent = 'recorded in step mode'; return; }
+  const counts = countEvents(mesh.events, mesh.points).filter(([, n]) => n > 0);
+  element.textContent = counts.length === 0 ? 'none'
+    : counts.map(([name, n]) => `${n.toLocaleString('en-US')} ${name}${n === 1 ? '' : 's'}`).join(', ');
+}
+
+/** The Exempt row: triangles left skinny on purpose (exemptions.js), marked on the canvas. */
+export function showExemptions(element, exemptions) {
+  if (!exemptions) { element.textContent = '–'; return; }
+  const { nestled, seditious } = exemptions;
+  element.textContent = nestled.length + seditious.length === 0 ? 'none'
+    : `${nestled.length} in small input angles (hatched), ${seditious.length} on seditious edges (edge in orange)`;
 }

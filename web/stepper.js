@@ -5,8 +5,6 @@
 
 import { rejectedIsCircumcenter, splitShell } from './event-geometry.js';
 
-const KIND_NAMES = ['segment split', 'circumcenter', 'off-center', 'rejected circumcenter'];
-
 const fmt = (v) => (Math.abs(v) >= 1e4 || (Math.abs(v) < 1e-3 && v !== 0) ? v.toExponential(3) : Number(v.toFixed(4)).toString());
 
 /** The smallest angle, in degrees, of the triangle of vertices i, j, k of points. */
@@ -19,13 +17,11 @@ function smallestAngle(points, i, j, k) {
   return Math.min(corner(i, j, k), corner(j, k, i), corner(k, i, j)) * 180 / Math.PI;
 }
 
-// What the placement calls the point it tries first, when that point is not the circumcenter.
-const FIRST_CHOICE = { offcenter: 'off-center', petal: 'off-center or petal point', optimal: 'off-center or optimal point' };
-
 /**
  * One line describing event e. With `context` ({ points: the final mesh's, minAngle, placement }),
  * a triangle's smallest angle is given against the bound, a split off the midpoint is named by its
- * concentric shell, and a rejected point by what it is (circumcenter or off-center).
+ * concentric shell, and a rejected point by what it is (circumcenter or off-center; petal and
+ * optimal points are never rejected).
  */
 export function describeEvent(events, e, context = null) {
   const kind = events.kind[e];
@@ -52,10 +48,15 @@ export function describeEvent(events, e, context = null) {
       return `Inserted the off-center of skinny triangle ${triangle} at ${where}: vertex ${vertex}.`;
     case 3: {
       const circum = !context?.points || rejectedIsCircumcenter(events, e, context.points);
-      const what = circum ? 'circumcenter' : FIRST_CHOICE[context.placement] ?? 'off-center';
+      // Petal and optimal points are never rejected (they encroach nothing): what is, is the first choice.
+      const what = circum ? 'circumcenter' : 'off-center';
       return `The ${what} (${fmt(events.circumcenter[2 * e])}, ${fmt(events.circumcenter[2 * e + 1])}) of ${triangle} ` +
         `encroached subsegment (${events.a[e]}, ${events.b[e]}): rejected; split the subsegment at ${where} instead: vertex ${vertex}.`;
     }
+    case 4:
+      return `Inserted the petal point of skinny triangle ${triangle} at ${where} (its off-center would have made a skinny triangle): vertex ${vertex}.`;
+    case 5:
+      return `Inserted the optimal point of skinny triangle ${triangle} at ${where} (its off-center would have made a skinny triangle): vertex ${vertex}.`;
     default:
       return `Event of unknown kind ${kind}.`;
   }

@@ -46,6 +46,8 @@ const char* eventName(EventKind kind) {
     case EventKind::Circumcenter: return "circumcenter";
     case EventKind::OffCenter: return "offCenter";
     case EventKind::Rejected: return "rejected";
+    case EventKind::PetalPoint: return "petalPoint";
+    case EventKind::OptimalPoint: return "optimalPoint";
   }
   return "unknown";
 }

@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "bad_triangle_queue.h"
@@ -724,6 +725,8 @@ class Refiner {
       // A proposed point has a cavity of its own: insertAt computes it.
       target[0] = better[0], target[1] = better[1], loc = betterLoc;
       kind = VertexKind::OffCenter, known = {};
+      insertSteiner(bt, target, loc, kind, known, EventKind::PetalPoint);
+      return;
     }
     insertSteiner(bt, target, loc, kind, known);
   }
@@ -737,7 +740,7 @@ class Refiner {
     Location loc;
     switch (optimal_.propose(mesh_, st, cc, x, loc)) {
       case OptimalPlacement::Result::Found:
-        insertSteiner(bt, x, loc, VertexKind::OffCenter, {});
+        insertSteiner(bt, x, loc, VertexKind::OffCenter, {}, EventKind::OptimalPoint);
         return true;
       case OptimalPlacement::Result::FirstFine:
         return false;
@@ -817,8 +820,9 @@ class Refiner {
     return false;
   }
 
+  // `placed`: the event's kind when a placement other than the first choice chose the point.
   void insertSteiner(const BadTriangle& bt, const double* target, const Location& loc, VertexKind kind,
-                     const CavityRef& known) {
+                     const CavityRef& known, std::optional<EventKind> placed = std::nullopt) {
     if (!mayInsert()) return;
     const std::uint32_t v = m_.addVertex(target[0], target[1], kind, -1);
     corner_.push_back(0);
@@ -829,7 +833,7 @@ class Refiner {
     }
     if (o_.trace) {
       Event e;
-      e.kind = kind == VertexKind::OffCenter ? EventKind::OffCenter : EventKind::Circumcenter;
+      e.kind = placed ? *placed : kind == VertexKind::OffCenter ? EventKind::OffCenter : EventKind::Circumcenter;
       e.vertex = v, e.x = target[0], e.y = target[1], e.t0 = bt.a, e.t1 = bt.b, e.t2 = bt.c;
       out_.events.push_back(e);
     }

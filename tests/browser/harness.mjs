@@ -8,11 +8,18 @@ import { chromium } from 'playwright-core';
 import { startServer } from '../../web/serve.mjs';
 
 export const CHROMIUM = process.env.CHROMIUM_PATH ?? '/usr/bin/chromium';
-export const SCREENSHOTS = fileURLToPath(new URL('./screenshots/', import.meta.url));
+// Where the tests save their screenshots (each figure preset's among them): RUPPERT_SCREENSHOTS, else
+// tests/browser/screenshots/.
+export const SCREENSHOTS = process.env.RUPPERT_SCREENSHOTS
+  ? `${process.env.RUPPERT_SCREENSHOTS.replace(/\/+$/, '')}/`
+  : fileURLToPath(new URL('./screenshots/', import.meta.url));
 
 const ARGS = [
   '--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking',
   '--disable-component-update', '--disable-quic', '--no-first-run', '--disable-sync',
+  // WebGL in software (SwiftShader through ANGLE): Debian's Chromium 156 gives it without a GPU
+  // already; these keep it when a later Chromium stops falling back to it on its own.
+  '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
 ];
 
 /** Starts the server and the browser. Returns { baseUrl, context, close() }. */
@@ -95,7 +102,16 @@ export async function moveOnCanvas(page, x, y) {
 /** A cheap fingerprint of the canvas pixels, to see that the picture changed. */
 export function canvasFingerprint(page) {
   return page.evaluate(() => {
-    const url = document.getElementById('canvas').toDataURL('image/png');
+    // The picture as seen: the WebGL mesh (when the page draws with it) under the 2D overlays.
+    const top = document.getElementById('canvas');
+    const gl = document.getElementById('gl-canvas');
+    const both = document.createElement('canvas');
+    both.width = top.width;
+    both.height = top.height;
+    const ctx = both.getContext('2d');
+    if (gl && !gl.hidden) ctx.drawImage(gl, 0, 0);
+    ctx.drawImage(top, 0, 0);
+    const url = both.toDataURL('image/png');
     let hash = 0;
     for (let i = 0; i < url.length; i++) hash = (hash * 31 + url.charCodeAt(i)) | 0;
     return `${url.length}:${hash}`;

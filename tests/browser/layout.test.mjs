@@ -42,6 +42,26 @@ test('at 390 x 800 the panels stack under the canvas', async () => {
   await page.close();
 });
 
+test('at 390 x 844 the canvas comes right after the tools, before the toolbar\'s other rows', async () => {
+  const { page, errors } = await openPage(harness.context, `${harness.baseUrl}/web/`, { width: 390, height: 844 });
+  assert.equal(await settle(page), 'done');
+  const canvas = await box(page, '#canvas-wrap');
+  const tools = await box(page, '[data-tool="select"]');
+  assert.ok(tools.y + tools.height <= canvas.y, 'the tool buttons above the canvas');
+  for (const id of ['#undo', '#fit', '#preset', '#export-poly', '#copy-link']) {
+    const control = await box(page, id);
+    assert.ok(control.y >= canvas.y + canvas.height, `${id} under the canvas (y ${control.y}, canvas ends at ${canvas.y + canvas.height})`);
+  }
+  const panel = await box(page, '#panel');
+  const preset = await box(page, '#preset');
+  assert.ok(panel.y >= preset.y + preset.height, 'the panels after the toolbar\'s rows');
+  assert.ok(canvas.y < 844 / 3, `the canvas starts at ${canvas.y}, in the first third of the screen`);
+  assert.ok(await page.evaluate(() => document.documentElement.scrollWidth) <= 390, 'no sideways scrolling');
+  await page.screenshot({ path: `${SCREENSHOTS}layout-390x844.png` });
+  assert.deepEqual(errors, []);
+  await page.close();
+});
+
 test('every control has an accessible name', async () => {
   const { page } = await openPage(harness.context, `${harness.baseUrl}/web/`);
   const unnamed = await page.evaluate(() => [...document.querySelectorAll('button, input, select, canvas#canvas')]

@@ -27,5 +27,8 @@ if (!existsSync(`${root}wasm/dist/ruppert.wasm`)) {
   const status = run('node', ['wasm/build-wasm.mjs'], env);
   if (status !== 0) process.exit(status);
 }
-const files = readdirSync(here).filter((f) => f.endsWith('.test.mjs')).sort().map((f) => `tests/browser/${f}`);
+// `node tests/browser/run.mjs render steps`: only the files whose names contain one of the words.
+const only = process.argv.slice(2);
+const files = readdirSync(here).filter((f) => f.endsWith('.test.mjs'))
+  .filter((f) => only.length === 0 || only.some((word) => f.includes(word))).sort().map((f) => `tests/browser/${f}`);
 process.exit(run('node', ['--test', ...files]));

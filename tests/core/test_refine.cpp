@@ -502,3 +502,43 @@ TEST_CASE("optimal placement at 35, 38 and 40 degrees is valid on every shape fa
   }
   CHECK(completeAt38 >= 3);
 }
+
+// The trace names the point a placement chose: a petal point or an optimal point is its own event
+// kind (never Rejected: both choose only points that encroach nothing), at the vertex it inserted,
+// an off-center vertex; with off-centers and circumcenters neither kind appears. Not every input
+// needs them (a star's or the letters' first member has none): most shape families do.
+TEST_CASE("the trace names petal and optimal points as such", "[refine][events]") {
+  using ruppert::EventKind;
+  using ruppert::Placement;
+  int families = 0, withPetal = 0, withOptimal = 0;
+  for (const auto& family : ruppert_test::shapeFamilies()) {
+    ++families;
+    const ruppert_test::GeneratedPlc g = ruppert_test::familyMember(family, 1);
+    INFO(family.name);
+    for (Placement placement : {Placement::OffCenter, Placement::Circumcenter, Placement::Petal, Placement::Optimal}) {
+      Options o;
+      o.minAngle = placement == Placement::Optimal ? 33 : 30;
+      o.placement = placement;
+      o.maxSteiner = 6000;
+      o.trace = true;
+      const Mesh mesh = ruppert::triangulate(g.plc, o);
+      std::size_t petal = 0, optimal = 0;
+      for (const ruppert::Event& e : mesh.events) {
+        if (e.kind != EventKind::PetalPoint && e.kind != EventKind::OptimalPoint) continue;
+        (e.kind == EventKind::PetalPoint ? petal : optimal) += 1;
+        REQUIRE(e.vertex < mesh.vertexKinds.size());
+        CHECK(mesh.points[2 * e.vertex] == e.x);
+        CHECK(mesh.points[2 * e.vertex + 1] == e.y);
+        CHECK(mesh.vertexKinds[e.vertex] == static_cast<std::uint8_t>(ruppert::VertexKind::OffCenter));
+      }
+      INFO("placement " << int(placement) << ": " << petal << " petal points, " << optimal << " optimal points");
+      if (placement != Placement::Petal) CHECK(petal == 0);
+      if (placement != Placement::Optimal) CHECK(optimal == 0);
+      withPetal += petal > 0;
+      withOptimal += optimal > 0;
+    }
+  }
+  INFO(withPetal << " and " << withOptimal << " of " << families << " families with petal / optimal points");
+  CHECK(2 * withPetal > families);
+  CHECK(2 * withOptimal > families);
+}

@@ -260,6 +260,10 @@ enum class EventKind : std::uint8_t {
   Circumcenter = 1,  // circumcenter of skinny/large triangle (t0,t1,t2) inserted at (x, y)
   OffCenter = 2,     // off-center of triangle (t0,t1,t2) inserted at (x, y)
   Rejected = 3,      // circumcenter (cx, cy) of (t0,t1,t2) encroached subsegment (a,b): it was split at (x, y)
+  // Placement::Petal and Placement::Optimal: the point they chose for (t0,t1,t2) instead of the
+  // off-center, inserted at (x, y). Never rejected: both choose only points that encroach nothing.
+  PetalPoint = 4,
+  OptimalPoint = 5,
 };
 
 // Vertex ids are indices into Mesh::points, or kNoVertex for a vertex that is not in the output (in
