@@ -1,4 +1,7 @@
 #include "jettison.h"
+#include "cold_code.h"
+
+RUPPERT_COLD_BEGIN
 
 namespace ruppert::detail {
 
@@ -45,3 +48,4 @@ void jettisonUnused(Mesh& mesh, const std::vector<std::uint32_t>& mergedInto) {
 }
 
 }  // namespace ruppert::detail
+RUPPERT_COLD_END

@@ -8,6 +8,9 @@
 
 #include "mesh_neighbors.h"
 #include "ruppert/ruppert.h"
+#include "cold_code.h"
+
+RUPPERT_COLD_BEGIN
 
 namespace ruppert {
 namespace {
@@ -75,3 +78,4 @@ void addQuadraticNodes(Mesh& mesh) {
 }
 
 }  // namespace ruppert
+RUPPERT_COLD_END

@@ -23,6 +23,9 @@
 #include <vector>
 
 #include "ruppert/ruppert.h"
+#include "cold_code.h"
+
+RUPPERT_COLD_BEGIN
 
 namespace ruppert {
 namespace {
@@ -442,3 +445,4 @@ Plc readJson(std::istream& in, const std::string& name) {
 }
 
 }  // namespace ruppert
+RUPPERT_COLD_END

@@ -18,6 +18,9 @@
 
 #include "message.h"
 #include "ruppert/ruppert.h"
+#include "cold_code.h"
+
+RUPPERT_COLD_BEGIN
 
 namespace ruppert {
 namespace {
@@ -195,3 +198,4 @@ Plc readEleFiles(const std::string& elePath) {
 }
 
 }  // namespace ruppert
+RUPPERT_COLD_END

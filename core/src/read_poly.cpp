@@ -30,6 +30,9 @@
 #include <vector>
 
 #include "ruppert/ruppert.h"
+#include "cold_code.h"
+
+RUPPERT_COLD_BEGIN
 
 namespace ruppert {
 namespace {
@@ -440,3 +443,4 @@ Plc readFile(const std::string& path) {
 }
 
 }  // namespace ruppert
+RUPPERT_COLD_END

@@ -9,6 +9,9 @@
 #include "mesh_neighbors.h"
 #include "ruppert/ruppert.h"
 #include "text_out.h"
+#include "cold_code.h"
+
+RUPPERT_COLD_BEGIN
 
 namespace ruppert {
 
@@ -102,3 +105,4 @@ std::string toVoronoiNode(const Voronoi& v, const Mesh& mesh) { return toText([&
 std::string toVoronoiEdge(const Voronoi& v, const Mesh& mesh) { return toText([&](TextOut& t) { printEdge(t, v, mesh); }); }
 
 }  // namespace ruppert
+RUPPERT_COLD_END

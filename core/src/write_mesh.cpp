@@ -17,6 +17,9 @@
 #include "ruppert/ruppert.h"
 #include "boundary_markers.h"
 #include "text_out.h"
+#include "cold_code.h"
+
+RUPPERT_COLD_BEGIN
 
 namespace ruppert {
 namespace {
@@ -370,3 +373,4 @@ std::string toJson(const Mesh& mesh, const Plc& input) { return toText([&](TextO
 std::string toSvg(const Mesh& mesh) { return toText([&](TextOut& t) { printSvg(t, mesh); }); }
 
 }  // namespace ruppert
+RUPPERT_COLD_END
