@@ -2,6 +2,8 @@
 // edge's two triangles (found through mesh.neighbors, without a hash table: the wasm module stays
 // small). See addQuadraticNodes in ruppert.h for the numbering.
 #include <algorithm>
+#include <climits>
+#include <utility>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -53,9 +55,16 @@ void addQuadraticNodes(Mesh& mesh) {
     for (std::uint32_t v : mesh.segments)
       if (v < corners) mesh.pointMarkers[v] = 1;
   }
-  std::vector<std::uint64_t> subsegments;
-  for (std::size_t s = 0; s + 1 < mesh.segments.size(); s += 2) subsegments.push_back(edgeKey(mesh.segments[s], mesh.segments[s + 1]));
+  // Subsegments by their ends, with their markers (Mesh::segmentMarkers, else 1): a midpoint node on
+  // a subsegment takes its marker, as a vertex inserted on a segment does.
+  std::vector<std::pair<std::uint64_t, std::int32_t>> subsegments;
+  for (std::size_t s = 0; s + 1 < mesh.segments.size(); s += 2) {
+    const std::int32_t marker = s / 2 < mesh.segmentMarkers.size() ? mesh.segmentMarkers[s / 2] : 1;
+    subsegments.emplace_back(edgeKey(mesh.segments[s], mesh.segments[s + 1]), marker);
+  }
   std::sort(subsegments.begin(), subsegments.end());
+  const std::size_t k = mesh.attributesPerPoint;
+  const bool attributes = k > 0 && mesh.pointAttributes.size() == k * corners;
   mesh.triangles6.resize(6 * n);
   for (std::size_t t = 0; t < n; ++t) {
     for (int i = 0; i < 3; ++i) mesh.triangles6[6 * t + i] = mesh.triangles[3 * t + i];
@@ -71,8 +80,12 @@ void addQuadraticNodes(Mesh& mesh) {
       // Halving is exact (short of the subnormals), so this is the midpoint rounded once.
       mesh.points.push_back(0.5 * mesh.points[2 * std::size_t(a)] + 0.5 * mesh.points[2 * std::size_t(b)]);
       mesh.points.push_back(0.5 * mesh.points[2 * std::size_t(a) + 1] + 0.5 * mesh.points[2 * std::size_t(b) + 1]);
-      const bool boundary = g == kNoNeighbor || std::binary_search(subsegments.begin(), subsegments.end(), edgeKey(a, b));
-      mesh.pointMarkers.push_back(boundary ? 1 : 0);
+      const auto sub = std::lower_bound(subsegments.begin(), subsegments.end(), std::make_pair(edgeKey(a, b), INT32_MIN));
+      if (sub != subsegments.end() && sub->first == edgeKey(a, b)) mesh.pointMarkers.push_back(sub->second);
+      else mesh.pointMarkers.push_back(g == kNoNeighbor ? 1 : 0);
+      // Attributes interpolated linearly: the mean of the edge's ends.
+      for (std::size_t j = 0; attributes && j < k; ++j)
+        mesh.pointAttributes.push_back(0.5 * mesh.pointAttributes[k * a + j] + 0.5 * mesh.pointAttributes[k * b + j]);
     }
   }
 }

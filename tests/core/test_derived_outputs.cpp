@@ -84,11 +84,12 @@ TEST_CASE("quadratic nodes: exact midpoints, shared across interior edges, V + E
       // Where the midpoint is representable (the generated inputs' dyadic coordinates) it is exact.
       if (exactSum(a[0], b[0]) && exactSum(a[1], b[1]))
         CHECK(ruppert::detail::orient2d(a, b, p) == 0);
-      // 1 on the boundary and on subsegments, 0 inside.
-      bool subsegment = false;
+      // On a subsegment its marker (as a vertex inserted there gets), else 1 on the boundary, 0 inside.
+      int expected = sides.size() == 1 ? 1 : 0;
       for (std::size_t k = 0; k + 1 < corners.segments.size(); k += 2)
-        subsegment = subsegment || edgeOf(corners.segments[k], corners.segments[k + 1]) == edge;
-      CHECK(m.pointMarkers[node] == (sides.size() == 1 || subsegment ? 1 : 0));
+        if (edgeOf(corners.segments[k], corners.segments[k + 1]) == edge)
+          expected = k / 2 < corners.segmentMarkers.size() ? corners.segmentMarkers[k / 2] : 1;
+      CHECK(m.pointMarkers[node] == expected);
     }
     CHECK(used.size() == edges.size());
     for (std::size_t t = 0; 3 * t < m.triangles.size(); ++t)
@@ -195,4 +196,36 @@ TEST_CASE("cli: --order 2 and --voronoi write 6-node triangles and BASE.v.node /
   CHECK_THAT(slurp(dir / "err"), Catch::Contains("--order 2 writes Triangle's .node and .ele"));
   fs::remove_all(dir);
 #endif
+}
+
+// Midpoint nodes take the marker of the subsegment they split and attributes interpolated from the
+// edge's ends: a linear field stays linear at every node of a 6-node mesh.
+TEST_CASE("quadratic nodes carry segment markers and interpolated attributes", "[derived][markers][attributes]") {
+  ruppert::Plc plc;
+  plc.points = {0, 0, 4, 0, 4, 3, 0, 3, 1, 1, 3, 2};
+  plc.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5};
+  plc.segmentMarkers = {7, 0, 9, 0, 11};
+  plc.attributesPerPoint = 1;
+  for (std::size_t i = 0; i < plc.points.size() / 2; ++i)
+    plc.pointAttributes.push_back(2 * plc.points[2 * i] - 3 * plc.points[2 * i + 1] + 5);
+  ruppert::Options o;
+  o.maxArea = 0.5;
+  Mesh m = ruppert::triangulate(plc, o);
+  const Mesh corners = m;
+  ruppert::addQuadraticNodes(m);
+  REQUIRE(m.attributesPerPoint == 1);
+  REQUIRE(m.pointAttributes.size() == m.points.size() / 2);
+  std::set<int> seen;
+  for (std::size_t v = 0; v < m.points.size() / 2; ++v)
+    CHECK(m.pointAttributes[v] == Approx(2 * m.points[2 * v] - 3 * m.points[2 * v + 1] + 5).margin(1e-12));
+  for (std::size_t s = 0; s < corners.segmentIds.size(); ++s) {
+    const auto edge = edgeOf(corners.segments[2 * s], corners.segments[2 * s + 1]);
+    for (std::size_t t = 0; 3 * t < m.triangles.size(); ++t)
+      for (int i = 0; i < 3; ++i)
+        if (edgeOf(m.triangles[3 * t + (i + 1) % 3], m.triangles[3 * t + (i + 2) % 3]) == edge) {
+          CHECK(m.pointMarkers[m.triangles6[6 * t + 3 + i]] == corners.segmentMarkers[s]);
+          seen.insert(corners.segmentMarkers[s]);
+        }
+  }
+  CHECK(seen == std::set<int>{1, 7, 9, 11});  // 1: the unmarked boundary segments
 }

@@ -377,10 +377,12 @@ std::string toEdge(const Mesh& mesh);
 // the order the edges first appear in mesh.triangles (triangle by triangle, edges 0, 1, 2), one node
 // shared by the two triangles of an interior edge: V + E nodes in all. Fills mesh.triangles6: per
 // triangle its three corners (counter-clockwise, as in triangles), then the midpoints of the edges
-// opposite corners 0, 1 and 2 (Triangle's -o2 order). pointMarkers gets one marker per new node: 1
-// on a subsegment or boundary edge, 0 inside (first filled for the corners by Triangle's convention,
-// 1 on subsegments, when empty). vertexKinds, neighbors and stats stay about the corners. writeEle
-// writes 6-node triangles when triangles6 is filled. Call it once, on a mesh with its neighbors (as
+// opposite corners 0, 1 and 2 (Triangle's -o2 order). pointMarkers gets one marker per new node: a
+// subsegment's marker (segmentMarkers) on a subsegment, 1 on another boundary edge, 0 inside (first
+// filled for the corners by Triangle's convention, 1 on subsegments, when empty); pointAttributes
+// the mean of the edge's ends' (linear interpolation), when the mesh has attributes. vertexKinds,
+// neighbors and stats stay about the corners. writeEle writes 6-node triangles when triangles6 is
+// filled. Call it once, on a mesh with its neighbors (as
 // triangulate() returns it: the shared nodes are found through them).
 void addQuadraticNodes(Mesh& mesh);
 
