@@ -41,6 +41,27 @@ export async function exportText(format, mesh, plc) {
   }
 }
 
+// Numbers in the shortest text that reads back to the same double.
+const num = (v) => String(v);
+
+/**
+ * The drawing itself (points, segments, holes, regions), not its mesh, as Triangle's .poly: what the
+ * page was given, so that another program (or Triangle) can mesh the same PLC.
+ */
+export function drawingPolyText(plc) {
+  const n = plc.points.length / 2, m = plc.segments.length / 2, h = plc.holes.length / 2;
+  const lines = ['# A drawing from the ruppert page: the PLC as drawn (points, segments, holes, regions)',
+    `${n} 2 0 0`];
+  for (let i = 0; i < n; i++) lines.push(`${i} ${num(plc.points[2 * i])} ${num(plc.points[2 * i + 1])}`);
+  lines.push(`${m} 0`);
+  for (let i = 0; i < m; i++) lines.push(`${i} ${plc.segments[2 * i]} ${plc.segments[2 * i + 1]}`);
+  lines.push(`${h}`);
+  for (let i = 0; i < h; i++) lines.push(`${i} ${num(plc.holes[2 * i])} ${num(plc.holes[2 * i + 1])}`);
+  lines.push(`${plc.regions.length}`);
+  plc.regions.forEach((r, i) => lines.push(`${i} ${num(r.x)} ${num(r.y)} ${num(r.attribute ?? 0)} ${num(r.maxArea > 0 ? r.maxArea : -1)}`));
+  return `${lines.join('\n')}\n`;
+}
+
 const MIME = { poly: 'text/plain', json: 'application/json', svg: 'image/svg+xml', png: 'image/png',
   vtu: 'application/xml', geojson: 'application/geo+json' };
 

@@ -5,7 +5,7 @@
 import { DEFAULT_OPTIONS, cloneDrawing, drawingBounds, emptyDrawing, fromPlc, pointCount, toMeshOptions, toPlc, Item } from './drawing.js';
 import { Editor, TOOL_HINTS } from './editor.js';
 import { isEditable, isEmbedded, listenToHost, postError, postMeshed, postStepped } from './embed.js';
-import { canvasBlob, download, exportText, parseInput, parsePolyText } from './files.js';
+import { canvasBlob, download, drawingPolyText, exportText, parseInput, parsePolyText } from './files.js';
 import { History } from './history.js';
 import { MeshScheduler } from './mesh-scheduler.js';
 import { triangleShape } from './mesh-geometry.js';
@@ -774,6 +774,11 @@ async function exportAs(format) {
   }
 }
 for (const format of ['poly', 'json', 'svg', 'png', 'node', 'ele', 'msh', 'vtu', 'geojson']) $(`export-${format}`).addEventListener('click', () => exportAs(format));
+// The drawing needs no mesh: what was drawn, as a .poly another program can mesh.
+$('export-drawing').addEventListener('click', () => {
+  download(drawingPolyText(toPlc(app.drawing)), 'ruppert-drawing.poly', 'poly');
+  setStatus('Exported ruppert-drawing.poly (the drawing, not its mesh).', 'ok');
+});
 
 $('copy-link').addEventListener('click', async () => {
   writeHash();

@@ -131,6 +131,23 @@ test('exports .poly, .json, .svg and .png downloads of the mesh', async () => {
   assert.ok((await readStats(page)).vertices >= stats.vertices);
 });
 
+test('exports the drawing itself as a .poly that reads back to the same drawing', async () => {
+  await page.setInputFiles('#file-input', { name: 'pentagon-with-hole.poly', mimeType: 'text/plain', buffer: Buffer.from(PENTAGON) });
+  assert.equal(await settle(page), 'done');
+  const before = await page.evaluate(async () => (await import('./url-state.js')).decodeDrawing(location.hash));
+  const exported = await exportFile('#export-drawing');
+  assert.equal(exported.name, 'ruppert-drawing.poly');
+  const lines = exported.bytes.toString('utf8').split('\n').map((l) => l.replace(/#.*/, '').trim()).filter(Boolean);
+  // The input's points and segments, not the mesh's vertices and subsegments.
+  assert.equal(Number(lines[0].split(/\s+/)[0]), before.points.length / 2, `.poly header: ${lines[0]}`);
+  await page.setInputFiles('#file-input', { name: 'again.poly', mimeType: 'text/plain', buffer: exported.bytes });
+  assert.equal(await settle(page), 'done');
+  const after = await page.evaluate(async () => (await import('./url-state.js')).decodeDrawing(location.hash));
+  assert.deepEqual(after.points, before.points);
+  assert.deepEqual(after.segments, before.segments);
+  assert.deepEqual(after.holes, before.holes);
+});
+
 test('exports .node, .ele, .msh, .vtu and .geojson downloads whose headers match the mesh', async () => {
   await page.setInputFiles('#file-input', { name: 'pentagon-with-hole.poly', mimeType: 'text/plain', buffer: Buffer.from(PENTAGON) });
   assert.equal(await settle(page), 'done');
