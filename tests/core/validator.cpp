@@ -635,6 +635,15 @@ void checkSegmentCoverage(const Scaled& s, const EdgeMaps& maps, const ValidateO
       const double t = param(v);
       return withinTolerance(v) && t * len >= -tol && (t - 1) * len <= tol;
     };
+    // Another segment's subsegment carries this one only where the core merged them: within rounding
+    // (2^-48 of the coordinates' magnitude or the length, 2^-40 for a snapped crossing), here 2^-38.
+    // The looser `tol` let a partner 1e-6 rad away carry this segment 1.5e-10 off its line, across a
+    // third segment it had already crossed (careless-sweep seed 39953).
+    const double mergeTol =
+        0x1p-38 * std::max({std::fabs(ax), std::fabs(ay), std::fabs(s.p(b)[0]), std::fabs(s.p(b)[1]), len});
+    auto merged = [&](std::uint32_t v) {
+      return std::fabs((s.p(v)[0] - ax) * dy - (s.p(v)[1] - ay) * dx) / len <= mergeTol;
+    };
 
     for (std::uint32_t k : subsegmentsOf[seg])
       for (std::uint32_t v : {m.segments[2 * k], m.segments[2 * k + 1]})
@@ -663,6 +672,7 @@ void checkSegmentCoverage(const Scaled& s, const EdgeMaps& maps, const ValidateO
     for (std::uint32_t k : carriers) {
       const std::uint32_t u = m.segments[2 * k], w = m.segments[2 * k + 1];
       if (!onSegment(u) || !onSegment(w)) continue;
+      if (m.segmentIds[k] != std::int32_t(seg) && (!merged(u) || !merged(w))) continue;
       graph[u].push_back(w);
       graph[w].push_back(u);
       carrierEdges.insert(undirectedKey(u, w));

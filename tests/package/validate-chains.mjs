@@ -150,6 +150,12 @@ export function chainProblems(mesh, input, maxProblems = 20) {
     const param = (v) => ((p[2 * v] - ax) * dx + (p[2 * v + 1] - ay) * dy) / len2;
     const nearLine = (v) => Math.abs((p[2 * v] - ax) * dy - (p[2 * v + 1] - ay) * dx) / len <= tol;
     const onSegment = (v) => nearLine(v) && param(v) * len >= -tol && (param(v) - 1) * len <= tol;
+    // Another segment's subsegment carries this one only where the core merged them: within rounding
+    // (2^-48 of the coordinates' magnitude or the length, 2^-40 for a snapped crossing), here 2^-38.
+    // The looser `tol` let a partner 1e-6 rad away carry this segment 1.5e-10 off its line, across a
+    // third segment it had already crossed (careless-sweep seed 39953).
+    const mergeTol = 2 ** -38 * Math.max(Math.abs(ax), Math.abs(ay), Math.abs(p[2 * b]), Math.abs(p[2 * b + 1]), len);
+    const merged = (v) => Math.abs((p[2 * v] - ax) * dy - (p[2 * v + 1] - ay) * dx) / len <= mergeTol;
     // Candidate carriers: this segment's subsegments and those of segments sharing pieces with it.
     const group = new Set([id]);
     for (const todo = [id]; todo.length;) {
@@ -161,6 +167,7 @@ export function chainProblems(mesh, input, maxProblems = 20) {
       for (const k of bySegment.get(g) ?? []) {
         const u = s[2 * k], w = s[2 * k + 1];
         if (!onSegment(u) || !onSegment(w)) continue;
+        if (g !== id && (!merged(u) || !merged(w))) continue;
         if (!graph.has(u)) graph.set(u, []);
         if (!graph.has(w)) graph.set(w, []);
         graph.get(u).push(w), graph.get(w).push(u);
