@@ -83,7 +83,11 @@ void checkAttributes(const Plc& plc, std::size_t n) {
                                                formatNumber(a[i]) + " is not finite");
 }
 
-PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<Notice>& notices) {
+namespace {
+
+// The input's shape and values: lengths, finite coordinates, indices in range, sane regions.
+// Returns the largest coordinate magnitude, which sets the scale.
+double checkInput(const Plc& plc, const Options& options) {
   checkOptions(options);
   if (plc.points.size() % 2 != 0)
     fail(ErrorCode::MalformedInput,
@@ -133,7 +137,17 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
                                          " must be a positive area (or 0 for no bound)");
   }
 
-  PreparedInput out;
+  return maxAbs;
+}
+
+// Scales every coordinate by a power of two (exact) so that the largest magnitude lies in [1, 2):
+// sets out's exponent, holes, regions and area bound, and returns every input point, scaled, in
+// input order.
+std::vector<double> scaleInput(const Plc& plc, const Options& options, double maxAbs, PreparedInput& out) {
+  const std::size_t n = plc.points.size() / 2;
+  auto name = [](const char* array, std::size_t i, const char* field) {
+    return std::string(array) + "[" + std::to_string(i) + "]" + field;
+  };
   // Scale by 2^(1-e) where maxAbs = m * 2^e, m in [0.5, 1): the largest magnitude lands in [1, 2).
   if (maxAbs > 0) {
     int e = 0;
@@ -165,6 +179,14 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
   }
   out.maxArea = std::isinf(options.maxArea) ? 0 : out.areaToInternal(options.maxArea);
 
+  return xy;
+}
+
+// Merges identical points: representative[i] is the input index of the lowest point identical to
+// point i, `distinct` the representatives, one DuplicatePoint notice per merged point.
+void mergeDuplicates(const Plc& plc, const std::vector<double>& xy, std::vector<std::uint32_t>& representative,
+                     std::vector<std::uint32_t>& distinct, std::vector<Notice>& notices) {
+  const std::size_t n = plc.points.size() / 2;
   // One sort along a Hilbert curve serves two purposes: identical points share a key, so duplicates
   // are found within runs of equal keys; and the curve order keeps point-location walks short.
   double minX = HUGE_VAL, minY = HUGE_VAL, maxX = -HUGE_VAL, maxY = -HUGE_VAL;
@@ -191,8 +213,8 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
     if (a.y != b.y) return a.y < b.y;
     return a.index < b.index;
   });
-  std::vector<std::uint32_t> representative(n);  // input index of the lowest identical point
-  std::vector<std::uint32_t> distinct;
+  representative.assign(n, 0);
+  distinct.clear();
   distinct.reserve(n);
   std::size_t duplicateCount = 0;
   for (std::size_t k = 0; k < n;) {
@@ -215,6 +237,12 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
                              plc.points[2 * rep + 1], duplicateMessage(static_cast<std::uint32_t>(i), rep)});
   }
 
+}
+
+// Numbers the distinct points in insertion order (out.inputIndex, out.xy, out.representative).
+void orderForInsertion(const std::vector<double>& xy, const std::vector<std::uint32_t>& representative,
+                       const std::vector<std::uint32_t>& distinct, PreparedInput& out) {
+  const std::size_t n = representative.size();
   // Biased randomised insertion order (BRIO): each point joins round k with probability 2^-(k+1),
   // rounds are inserted from the smallest (highest k) to the largest; a stable split keeps every round
   // in curve order. Randomness bounds the expected work; the curve keeps walks short.
@@ -245,6 +273,17 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
   }
   out.representative.resize(n);
   for (std::size_t i = 0; i < n; ++i) out.representative[i] = internalOf[representative[i]];
+}
+
+}  // namespace
+
+PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<Notice>& notices) {
+  const double maxAbs = checkInput(plc, options);
+  PreparedInput out;
+  const std::vector<double> xy = scaleInput(plc, options, maxAbs, out);
+  std::vector<std::uint32_t> representative, distinct;
+  mergeDuplicates(plc, xy, representative, distinct, notices);
+  orderForInsertion(xy, representative, distinct, out);
   return out;
 }
 
