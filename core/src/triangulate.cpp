@@ -36,23 +36,28 @@ void copyAttributes(const MeshState& m, Mesh& mesh) {
   }
 }
 
-Mesh assemble(MeshState& m) {
-  Mesh mesh;
+// Output numbering (MeshState::outputMap): input points keep their indices (internal vertices of
+// input points are numbered in insertion order, see PreparedInput); Steiner vertices that some
+// triangle uses follow in creation order; box corners and Steiner vertices in no triangle (refused
+// insertions, or outside the domain in the bounding-box variant) are left out. Returns the count.
+std::uint32_t numberVertices(MeshState& m) {
   const Triangulation& t = m.tri;
-  const Plc& plc = *m.plc;
-  // Output numbering: input points keep their indices (internal vertices of input points are numbered
-  // in insertion order, see PreparedInput); Steiner vertices that some triangle uses follow in
-  // creation order; box corners and Steiner vertices in no triangle (refused insertions, or outside
-  // the domain in the bounding-box variant) are left out.
-  const std::uint32_t inputPoints = static_cast<std::uint32_t>(plc.points.size() / 2);
+  const std::uint32_t inputPoints = static_cast<std::uint32_t>(m.plc->points.size() / 2);
   m.outputMap.assign(t.vertexCount(), kNone);
   std::uint32_t outVertices = inputPoints;
   for (std::uint32_t v = 0; v < t.vertexCount(); ++v) {
     if (v < m.inputCount) m.outputMap[v] = m.input.inputIndex[v];
     else if (t.vtri[v] != kNone && m.kind[v] != VertexKind::Unused) m.outputMap[v] = outVertices++;
   }
-  auto outIndex = [&](std::uint32_t v) { return m.outputMap[v]; };
+  return outVertices;
+}
 
+// mesh.points and vertexKinds.
+void writeVertices(const MeshState& m, std::uint32_t outVertices, Mesh& mesh) {
+  const Triangulation& t = m.tri;
+  const Plc& plc = *m.plc;
+  const std::uint32_t inputPoints = static_cast<std::uint32_t>(plc.points.size() / 2);
+  auto outIndex = [&](std::uint32_t v) { return m.outputMap[v]; };
   mesh.points.resize(2 * std::size_t(outVertices));
   mesh.vertexKinds.resize(outVertices);
   // Every input point, duplicates included, keeps its coordinates bit-identical; only the lowest index
@@ -71,8 +76,13 @@ Mesh assemble(MeshState& m) {
     mesh.points[2 * std::size_t(o) + 1] = m.input.toUser(t.xy[2 * v + 1]);
     mesh.vertexKinds[o] = static_cast<std::uint8_t>(m.kind[v]);
   }
-  copyAttributes(m, mesh);
 
+}
+
+// mesh.triangles, neighbors, segments, segmentIds and triangleAttributes, and the angle statistics.
+void writeTriangles(const MeshState& m, Mesh& mesh) {
+  const Triangulation& t = m.tri;
+  auto outIndex = [&](std::uint32_t v) { return m.outputMap[v]; };
   std::vector<std::uint32_t> slotToTri(t.slotCount(), kNone);
   std::uint32_t count = 0;
   for (std::uint32_t s = 0; s < t.slotCount(); ++s)
@@ -103,6 +113,11 @@ Mesh assemble(MeshState& m) {
   st.minAngle = angles.minAngle();
   st.maxAngle = angles.maxAngle();
   st.triangles = count;
+}
+
+// Stats: the vertices by kind.
+void countVertexKinds(Mesh& mesh) {
+  Stats& st = mesh.stats;
   for (std::uint8_t k : mesh.vertexKinds) {
     switch (static_cast<VertexKind>(k)) {
       case VertexKind::Input: st.inputVertices++; break;
@@ -115,6 +130,16 @@ Mesh assemble(MeshState& m) {
   }
   st.vertices = st.inputVertices + st.segmentVertices + st.interiorVertices + st.offCenterVertices +
                 st.intersectionVertices;
+}
+
+Mesh assemble(MeshState& m) {
+  Mesh mesh;
+  const Plc& plc = *m.plc;
+  const std::uint32_t outVertices = numberVertices(m);
+  writeVertices(m, outVertices, mesh);
+  copyAttributes(m, mesh);
+  writeTriangles(m, mesh);
+  countVertexKinds(mesh);
   mesh.indexBase = plc.indexBase;
   mesh.notices = std::move(m.notices);
   assignMarkers(mesh, plc);
