@@ -1,10 +1,12 @@
 // Parsing of the `ruppert` command line. See helpText() for the options.
 #include "cli_args.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <initializer_list>
 
 namespace ruppert::cli {
 
@@ -107,106 +109,143 @@ Arg split(const std::string& text) {
 
 }  // namespace
 
+namespace {
+
+// One argument's value, read as its option needs it: the text after '=', or the next argument.
+class OptionValue {
+ public:
+  OptionValue(const Arg& arg, const std::vector<std::string>& args, std::size_t& i) : arg_(arg), args_(args), i_(i) {}
+  const std::string& name() const { return arg_.name; }
+  std::string text() {
+    if (arg_.hasInlineValue) return arg_.inlineValue;
+    if (i_ + 1 >= args_.size()) throw UsageError(name() + " needs a value");
+    return args_[++i_];
+  }
+  double number() {
+    const std::string v = text();
+    double d = 0;
+    if (!parseStrictDouble(v, d)) throw UsageError(name() + ": '" + v + "' is not a number");
+    return d;
+  }
+  bool flag() const {
+    if (arg_.hasInlineValue) throw UsageError(name() + " takes no value");
+    return true;
+  }
+  // One of the named choices; the message lists them in order.
+  template <class T>
+  T choice(std::initializer_list<std::pair<const char*, T>> choices) {
+    const std::string v = text();
+    std::string names;
+    for (const auto& [word, value] : choices) {
+      if (v == word) return value;
+      names += (names.empty() ? "" : ", ") + std::string(word);
+    }
+    throw UsageError(name() + ": '" + v + "' is not one of " + names);
+  }
+
+ private:
+  const Arg& arg_;
+  const std::vector<std::string>& args_;
+  std::size_t& i_;
+};
+
+using Handler = void (*)(OptionValue&, CliArgs&);
+
+// Every option: its spellings and what it sets.
+const std::vector<std::pair<std::vector<std::string>, Handler>>& optionTable() {
+  static const std::vector<std::pair<std::vector<std::string>, Handler>> table = {
+      {{"--min-angle"}, [](OptionValue& v, CliArgs& out) {
+         out.options.minAngle = v.number();
+         if (out.options.minAngle < 0 || out.options.minAngle > 60)
+           throw UsageError("--min-angle must be between 0 and 60 degrees");
+       }},
+      {{"--max-area"}, [](OptionValue& v, CliArgs& out) {
+         out.options.maxArea = v.number();
+         if (out.options.maxArea < 0) throw UsageError("--max-area must not be negative");
+       }},
+      {{"--max-steiner"}, [](OptionValue& v, CliArgs& out) {
+         const std::string text = v.text();
+         if (!parseStrictCount(text, out.options.maxSteiner))
+           throw UsageError("--max-steiner: '" + text + "' is not a non-negative integer");
+       }},
+      {{"-o", "--output"}, [](OptionValue& v, CliArgs& out) {
+         out.outputBase = v.text();
+         if (out.outputBase.empty()) throw UsageError(v.name() + " needs a non-empty BASE");
+       }},
+      {{"--format"}, [](OptionValue& v, CliArgs& out) {
+         out.format = v.choice<OutputFormat>({{"triangle", OutputFormat::Triangle}, {"json", OutputFormat::Json},
+                                             {"svg", OutputFormat::Svg}, {"msh", OutputFormat::Msh},
+                                             {"vtu", OutputFormat::Vtu}, {"geojson", OutputFormat::GeoJson}});
+       }},
+      {{"--input-format"}, [](OptionValue& v, CliArgs& out) {
+         out.inputFormat = v.choice<std::string>({{"poly", "poly"}, {"node", "node"}, {"json", "json"}, {"geojson", "geojson"}});
+       }},
+      {{"--encroachment"}, [](OptionValue& v, CliArgs& out) {
+         out.options.encroachment =
+             v.choice<Encroachment>({{"lens", Encroachment::DiametralLens}, {"disk", Encroachment::DiametralDisk}});
+       }},
+      {{"--placement"}, [](OptionValue& v, CliArgs& out) {
+         out.options.placement = v.choice<Placement>({{"offcenter", Placement::OffCenter},
+                                                      {"circumcenter", Placement::Circumcenter},
+                                                      {"petal", Placement::Petal}, {"optimal", Placement::Optimal}});
+       }},
+      {{"--variant"}, [](OptionValue& v, CliArgs& out) {
+         out.options.variant = v.choice<Variant>({{"cdt", Variant::Constrained}, {"box", Variant::BoundingBox}});
+       }},
+      {{"--trace"}, [](OptionValue& v, CliArgs& out) {
+         out.tracePath = v.text();
+         if (out.tracePath.empty()) throw UsageError("--trace needs a non-empty FILE");
+         out.options.trace = true;
+       }},
+      {{"--quiet", "-q"}, [](OptionValue& v, CliArgs& out) { out.quiet = v.flag(); }},
+      {{"--stats"}, [](OptionValue& v, CliArgs& out) { out.options.sizeMeasure = out.stats = v.flag(); }},
+      {{"--convex-hull"}, [](OptionValue& v, CliArgs& out) { out.options.convexHull = v.flag(); }},
+      {{"--auto-holes"}, [](OptionValue& v, CliArgs& out) { out.options.autoHoles = v.flag(); }},
+      {{"--order"}, [](OptionValue& v, CliArgs& out) {
+         const std::string text = v.text();
+         if (text != "1" && text != "2") throw UsageError("--order: '" + text + "' is not 1 or 2");
+         out.order = text == "2" ? 2 : 1;
+       }},
+      {{"--voronoi"}, [](OptionValue& v, CliArgs& out) { out.voronoi = v.flag(); }},
+      {{"--edges", "-e"}, [](OptionValue& v, CliArgs& out) { out.options.edges = v.flag(); }},
+      {{"--no-boundary-steiner"}, [](OptionValue& v, CliArgs& out) { out.options.noBoundarySteiner = v.flag(); }},
+      {{"--no-segment-steiner"}, [](OptionValue& v, CliArgs& out) { out.options.noSegmentSteiner = v.flag(); }},
+      {{"--jettison", "-j"}, [](OptionValue& v, CliArgs& out) { out.options.jettison = v.flag(); }},
+      {{"--help", "-h"}, [](OptionValue& v, CliArgs& out) { out.help = v.flag(); }},
+      {{"--version"}, [](OptionValue& v, CliArgs& out) { out.version = v.flag(); }},
+  };
+  return table;
+}
+
+Handler handlerOf(const std::string& name) {
+  for (const auto& [spellings, handler] : optionTable())
+    if (std::find(spellings.begin(), spellings.end(), name) != spellings.end()) return handler;
+  return nullptr;
+}
+
+// Options that cannot go together, and a missing INPUT.
+void checkCombination(const CliArgs& out) {
+  if (out.input.empty() && !out.help && !out.version) throw UsageError("missing INPUT");
+  if (out.outputBase == "-" && out.voronoi)
+    throw UsageError("--voronoi writes two files (BASE.v.node, BASE.v.edge): give -o BASE, not -o -");
+  if (out.outputBase == "-" && out.format == OutputFormat::Triangle) {
+    throw UsageError("-o - writes one file to standard output, but --format triangle writes three (BASE.node, "
+                     "BASE.ele, BASE.poly); choose --format json, svg, msh, vtu or geojson, or give -o BASE");
+  }
+  if (out.order == 2 && out.format != OutputFormat::Triangle)
+    throw UsageError("--order 2 writes Triangle's .node and .ele: use --format triangle");
+}
+
+}  // namespace
+
 CliArgs parseArgs(const std::vector<std::string>& args) {
   CliArgs out;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const Arg arg = split(args[i]);
     const std::string& name = arg.name;
-    auto value = [&]() -> std::string {
-      if (arg.hasInlineValue) return arg.inlineValue;
-      if (i + 1 >= args.size()) throw UsageError(name + " needs a value");
-      return args[++i];
-    };
-    auto number = [&]() {
-      const std::string v = value();
-      double d = 0;
-      if (!parseStrictDouble(v, d)) throw UsageError(name + ": '" + v + "' is not a number");
-      return d;
-    };
-    auto flag = [&]() {
-      if (arg.hasInlineValue) throw UsageError(name + " takes no value");
-      return true;
-    };
-
-    if (name == "--min-angle") {
-      out.options.minAngle = number();
-      if (out.options.minAngle < 0 || out.options.minAngle > 60) {
-        throw UsageError("--min-angle must be between 0 and 60 degrees");
-      }
-    } else if (name == "--max-area") {
-      out.options.maxArea = number();
-      if (out.options.maxArea < 0) throw UsageError("--max-area must not be negative");
-    } else if (name == "--max-steiner") {
-      const std::string v = value();
-      if (!parseStrictCount(v, out.options.maxSteiner)) {
-        throw UsageError("--max-steiner: '" + v + "' is not a non-negative integer");
-      }
-    } else if (name == "-o" || name == "--output") {
-      out.outputBase = value();
-      if (out.outputBase.empty()) throw UsageError(name + " needs a non-empty BASE");
-    } else if (name == "--format") {
-      const std::string v = value();
-      if (v == "triangle") out.format = OutputFormat::Triangle;
-      else if (v == "json") out.format = OutputFormat::Json;
-      else if (v == "svg") out.format = OutputFormat::Svg;
-      else if (v == "msh") out.format = OutputFormat::Msh;
-      else if (v == "vtu") out.format = OutputFormat::Vtu;
-      else if (v == "geojson") out.format = OutputFormat::GeoJson;
-      else throw UsageError("--format: '" + v + "' is not one of triangle, json, svg, msh, vtu, geojson");
-    } else if (name == "--input-format") {
-      const std::string v = value();
-      if (v != "poly" && v != "node" && v != "json" && v != "geojson") {
-        throw UsageError("--input-format: '" + v + "' is not one of poly, node, json, geojson");
-      }
-      out.inputFormat = v;
-    } else if (name == "--encroachment") {
-      const std::string v = value();
-      if (v == "lens") out.options.encroachment = Encroachment::DiametralLens;
-      else if (v == "disk") out.options.encroachment = Encroachment::DiametralDisk;
-      else throw UsageError("--encroachment: '" + v + "' is not one of lens, disk");
-    } else if (name == "--placement") {
-      const std::string v = value();
-      if (v == "offcenter") out.options.placement = Placement::OffCenter;
-      else if (v == "circumcenter") out.options.placement = Placement::Circumcenter;
-      else if (v == "petal") out.options.placement = Placement::Petal;
-      else if (v == "optimal") out.options.placement = Placement::Optimal;
-      else throw UsageError("--placement: '" + v + "' is not one of offcenter, circumcenter, petal, optimal");
-    } else if (name == "--variant") {
-      const std::string v = value();
-      if (v == "cdt") out.options.variant = Variant::Constrained;
-      else if (v == "box") out.options.variant = Variant::BoundingBox;
-      else throw UsageError("--variant: '" + v + "' is not one of cdt, box");
-    } else if (name == "--trace") {
-      out.tracePath = value();
-      if (out.tracePath.empty()) throw UsageError("--trace needs a non-empty FILE");
-      out.options.trace = true;
-    } else if (name == "--quiet" || name == "-q") {
-      out.quiet = flag();
-    } else if (name == "--stats") {
-      out.stats = flag();
-      out.options.sizeMeasure = out.stats;
-    } else if (name == "--convex-hull") {
-      out.options.convexHull = flag();
-    } else if (name == "--auto-holes") {
-      out.options.autoHoles = flag();
-    } else if (name == "--order") {
-      const std::string v = value();
-      if (v != "1" && v != "2") throw UsageError("--order: '" + v + "' is not 1 or 2");
-      out.order = v == "2" ? 2 : 1;
-    } else if (name == "--voronoi") {
-      out.voronoi = flag();
-    } else if (name == "--edges" || name == "-e") {
-      out.options.edges = flag();
-    } else if (name == "--no-boundary-steiner") {
-      out.options.noBoundarySteiner = flag();
-    } else if (name == "--no-segment-steiner") {
-      out.options.noSegmentSteiner = flag();
-    } else if (name == "--jettison" || name == "-j") {
-      out.options.jettison = flag();
-    } else if (name == "--help" || name == "-h") {
-      out.help = flag();
-    } else if (name == "--version") {
-      out.version = flag();
+    if (const Handler handler = handlerOf(name)) {
+      OptionValue value(arg, args, i);
+      handler(value, out);
     } else if (name.size() > 1 && name[0] == '-') {  // a lone "-" is INPUT: standard input
       throw UsageError("unknown option '" + name + "'");
     } else {
@@ -215,14 +254,7 @@ CliArgs parseArgs(const std::vector<std::string>& args) {
       out.input = args[i];
     }
   }
-  if (out.input.empty() && !out.help && !out.version) throw UsageError("missing INPUT");
-  if (out.outputBase == "-" && out.voronoi)
-    throw UsageError("--voronoi writes two files (BASE.v.node, BASE.v.edge): give -o BASE, not -o -");
-  if (out.outputBase == "-" && out.format == OutputFormat::Triangle) {
-    throw UsageError("-o - writes one file to standard output, but --format triangle writes three (BASE.node, "
-                     "BASE.ele, BASE.poly); choose --format json, svg, msh, vtu or geojson, or give -o BASE");
-  }
-  if (out.order == 2 && out.format != OutputFormat::Triangle) throw UsageError("--order 2 writes Triangle's .node and .ele: use --format triangle");
+  checkCombination(out);
   return out;
 }
 
