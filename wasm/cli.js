@@ -84,6 +84,28 @@ async function readEle(mesher, path, ele) {
   });
 }
 
+// On a terminal, a run that lasts over a second shows a progress line on standard error, rewritten
+// in place at most five times a second and cleared at the end, as the native CLI's (cli_progress.cpp).
+function progressLine(quiet) {
+  if (quiet || !process.stderr.isTTY) return null;
+  const start = performance.now();
+  let drawn = false, last = 0;
+  return {
+    draw(p) {
+      const now = performance.now(), seconds = (now - start) / 1000;
+      if (seconds < 1 || (drawn && now - last < 200)) return true;
+      process.stderr.write(`\rruppert: ${p.insertedVertices} vertices inserted, ${p.triangles} triangles, ` +
+        `worst angle ${p.worstAngle.toFixed(1)} deg, ${seconds.toFixed(1)} s\x1b[K`);
+      drawn = true, last = now;
+      return true;
+    },
+    clear() {
+      if (drawn) process.stderr.write('\r\x1b[K');
+      drawn = false;
+    },
+  };
+}
+
 async function write(path, text) {
   if (path.startsWith('-.')) {  // -o -: the one file of the format goes to standard output
     await new Promise((resolve, reject) => process.stdout.write(text, (error) => (error ? reject(error) : resolve())));
@@ -115,11 +137,14 @@ async function main(argv) {
 
   let plc;
   let mesh;
+  const progress = progressLine(args.quiet);
   try {
     plc = await readPlc(mesher, args.input, args.inputFormat);
-    mesh = mesher._triangulateWithReport(plc, args.options,
+    const options = progress ? { ...args.options, onProgress: progress.draw } : args.options;
+    mesh = mesher._triangulateWithReport(plc, options,
       { summary: !args.quiet, stats: args.stats, trace: args.tracePath !== '' });
   } catch (error) {
+    progress?.clear();
     if (!(error instanceof MeshError)) throw error;
     process.stderr.write(`error: ${error.message}\n`);
     if (error.code === 'INVALID_OPTION') {
@@ -129,6 +154,7 @@ async function main(argv) {
     return EXIT_INVALID_INPUT;
   }
 
+  progress?.clear();
   if (!args.quiet) {
     for (const notice of mesh.notices) process.stderr.write(`warning: ${notice.message}\n`);
   }

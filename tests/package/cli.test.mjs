@@ -67,3 +67,20 @@ test('exit statuses: 1 invalid input, 2 usage, 3 unwritable output', () => {
   assert.match(help.stdout, /--min-angle DEG/);
   assert.match(cli('--version').stdout, /^ruppert \d+\.\d+\.\d+\n$/);
 });
+
+// The progress line needs a terminal: script(1) gives the CLI one (and the test says so when it is
+// missing). A run of several seconds (about 5 million triangles) draws it; with standard error a
+// pipe, the same run draws nothing.
+const haveScript = spawnSync('script', ['--version'], { encoding: 'utf8' }).status === 0;
+test('a progress line on a terminal for runs over a second, none otherwise', { skip: !haveScript && 'script(1) not found' }, () => {
+  const typescript = join(dir, 'typescript');
+  const command = `'${bin}' --max-area 3e-7 in.poly`;
+  const run = spawnSync('script', ['-qec', command, typescript], { cwd: dir, encoding: 'utf8' });
+  assert.equal(run.status, 0, run.stderr);
+  const seen = readFileSync(typescript, 'utf8');
+  assert.match(seen, /\rruppert: \d+ vertices inserted, \d+ triangles, worst angle [\d.]+ deg, [\d.]+ s\x1b\[K/);
+  assert.match(seen, /\r\x1b\[K/, 'cleared at the end');
+  const plain = cli('--max-area', '3e-7', 'in.poly');
+  assert.equal(plain.status, 0, plain.stderr);
+  assert.doesNotMatch(plain.stderr, /vertices inserted/);
+});
