@@ -8,8 +8,9 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 # Native build and core tests: cmake g++ make catch2 libgmp-dev.
 # WebAssembly build and browser tests: emscripten chromium, plus Node.js and npm.
 # Sanitizer and fuzz runs: clang with its runtime libraries (libFuzzer), which clang only recommends.
+# The code-shape check (tests/run-code-shape.sh): clang-tidy.
 # Consumers of the .msh and .vtu output (tests/core/test_consumers.cpp): python3-meshio and gmsh.
-debian_packages=(cmake g++ make catch2 libgmp-dev emscripten chromium clang libclang-rt-14-dev python3-meshio gmsh)
+debian_packages=(cmake g++ make catch2 libgmp-dev emscripten chromium clang libclang-rt-14-dev python3-meshio gmsh clang-tidy)
 
 missing=()
 for package in "${debian_packages[@]}"; do
