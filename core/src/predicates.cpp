@@ -277,8 +277,24 @@ double orient2d(double ax, double ay, double bx, double by, double cx, double cy
 //         |cx' cy' cx'^2+cy'^2|
 // which is positive when d is inside the circle through counter-clockwise a, b, c.
 
+// True when the four values split into two equal pairs (all four equal included).
+inline bool twoEqualPairs(double p, double q, double r, double s) {
+  return (p == q && r == s) || (p == r && q == s) || (p == s && q == r);
+}
+
+// Four points whose x-coordinates form two equal pairs, and whose y-coordinates do too, all lie in a
+// grid {x0, x1} x {y0, y1}. Either two of them coincide (two equal rows of the determinant, or a row
+// of zero differences when d is one of a, b, c) or they are the four distinct corners of an
+// axis-aligned rectangle, which are cocircular. Either way the determinant is exactly zero.
+// Refining long straight strips (combs, slots, perforated plates, skylines) makes such rectangles
+// all the time: 97% of the exact evaluations of a 200-tooth comb at 30 degrees were rectangles.
+inline bool axisAlignedRectangle(const double* a, const double* b, const double* c, const double* d) {
+  return twoEqualPairs(a[0], b[0], c[0], d[0]) && twoEqualPairs(a[1], b[1], c[1], d[1]);
+}
+
 RUPPERT_NOINLINE double incircleExact(const double* a, const double* b, const double* c,
                                       const double* d) {
+  if (axisAlignedRectangle(a, b, c, d)) return 0.0;
   // Each difference is exact as an expansion of <= 2 components (a single one whenever the subtraction
   // happens to be exact, which zero elimination exploits automatically).
   const Expansion<2> adx = difference(a[0], d[0]), ady = difference(a[1], d[1]);

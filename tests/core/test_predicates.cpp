@@ -387,6 +387,38 @@ TEST_CASE("exact stages match GMP on inputs whose differences are not representa
   CHECK(checked == 24000);
 }
 
+TEST_CASE("incircle on axis-aligned rectangles and grids of two by two values", "[predicates]") {
+  // The exact stage answers zero at once when the x-coordinates form two equal pairs and the
+  // y-coordinates do too. Every arrangement of such points (the four corners in any order, a query
+  // point on a vertex, repeated points) must agree with GMP, and a corner moved by one ulp, which
+  // leaves the pattern, must get its exact nonzero sign.
+  std::mt19937_64 rng(2718);
+  int zeros = 0, moved = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const int lo = -40 + static_cast<int>(rng() % 80);
+    const double x0 = randomDouble(rng, lo, lo + 3), x1 = randomDouble(rng, lo, lo + 3);
+    const double y0 = randomDouble(rng, lo, lo + 3), y1 = randomDouble(rng, lo, lo + 3);
+    const std::array<Point, 4> grid{Point{x0, y0}, Point{x1, y0}, Point{x1, y1}, Point{x0, y1}};
+    // Four picks from the grid, with repetition: corners in every order, and repeated points.
+    const Point a = grid[rng() % 4], b = grid[rng() % 4], c = grid[rng() % 4], d = grid[rng() % 4];
+    REQUIRE(exactIncircleSign(a, b, c, d) == 0);
+    REQUIRE(incircleSign(a, b, c, d) == 0);
+    REQUIRE(incircleExact(a.data(), b.data(), c.data(), d.data()) == 0.0);
+    ++zeros;
+
+    Point e = d;
+    const std::size_t axis = rng() % 2;
+    e[axis] = std::nextafter(e[axis], (rng() & 1) ? 1e300 : -1e300);
+    if (!allSafe({a, b, c, e})) continue;
+    const int expected = exactIncircleSign(a, b, c, e);
+    REQUIRE(incircleSign(a, b, c, e) == expected);
+    REQUIRE(signOf(incircleExact(a.data(), b.data(), c.data(), e.data())) == expected);
+    if (expected != 0) ++moved;
+  }
+  CHECK(zeros == 2000);
+  CHECK(moved > 100);
+}
+
 TEST_CASE("extreme coordinates at both ends of the safe range", "[predicates]") {
   // Values at and next to 0, 2^-128 and 2^64 combined freely: the smallest differences are 2^-180 and
   // the largest products near 2^260, the limits the safe range is designed around.
