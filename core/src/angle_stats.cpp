@@ -27,9 +27,11 @@ struct Tables {
       edge[k] = c * std::fabs(c);
     }
     edge[0] = 1, edge[90] = 0, edge[kBins] = -1;
+    // top falls as b rises, so each bucket's bin is at or after the previous one's: one sweep.
+    // (Searching from bin 0 for each bucket cost 5.3 M instructions, most of a small CLI run.)
+    int k = 0;
     for (int b = 0; b <= kIndex; ++b) {
       const double top = 1 - b * (2.0 / kIndex);
-      int k = 0;
       while (k + 1 < kBins && edge[k + 1] >= top) ++k;
       start[b] = static_cast<std::int16_t>(k);
     }
