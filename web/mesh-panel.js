@@ -1,5 +1,7 @@
-// The statistics panel: counts, angle range, completeness and the angle histogram.
+// The Mesh panel: counts, angle range, completeness with reasons, the angle histogram, the event
+// counts and the triangles left skinny on purpose.
 import { rejectedIsCircumcenter, splitShell } from './event-geometry.js';
+import { findExemptions } from './exemptions.js';
 
 /**
  * Angles worth seeing against the histogram: Ruppert's guaranteed 20.7°, the 26.45° and 28.6°
@@ -117,4 +119,48 @@ export function showExemptions(element, exemptions) {
   const { nestled, seditious } = exemptions;
   element.textContent = nestled.length + seditious.length === 0 ? 'none'
     : `${nestled.length} in small input angles (hatched), ${seditious.length} on seditious edges (edge in orange)`;
+}
+
+// Triangles left skinny on purpose (§6.6) are not looked for in meshes above this many triangles
+// (the search would hold up their first picture).
+const EXEMPTIONS_UP_TO = 200_000;
+
+/** The panel's rows in the page (index.html). */
+export function createMeshPanel() {
+  const $ = (id) => document.getElementById(id);
+  const elements = {
+    vertices: $('stat-vertices'), triangles: $('stat-triangles'), minAngle: $('stat-min-angle'),
+    maxAngle: $('stat-max-angle'), complete: $('stat-complete'), time: $('stat-time'),
+    reasons: $('reasons'), histogram: $('histogram'),
+  };
+
+  /** The triangles left skinny on purpose in the mesh, marked in the panel: the exemptions or null. */
+  function markExemptions(mesh, request) {
+    if (mesh.triangles.length / 3 > EXEMPTIONS_UP_TO) {
+      $('stat-exempt').textContent = `not looked for above ${EXEMPTIONS_UP_TO.toLocaleString('en-US')} triangles`;
+      return null;
+    }
+    const exemptions = { mesh, ...findExemptions(mesh, request.plc, request.options.minAngle) };
+    showExemptions($('stat-exempt'), exemptions);
+    return exemptions;
+  }
+
+  return {
+    /** A new mesh of request.plc: every row; returns its exemptions (or null) for the canvas. */
+    show(mesh, request) {
+      showStats(elements, mesh);
+      showEventCounts($('stat-events'), mesh);
+      return markExemptions(mesh, request);
+    },
+    clear() {
+      showStats(elements, null);
+      showExemptions($('stat-exempt'), null);
+      showEventCounts($('stat-events'), null);
+    },
+    /** A cancel: the mesh on screen is an older one, and the panel must not claim it answers. */
+    cancelled() {
+      $('stat-complete').textContent = 'cancelled: the mesh shown is of the previous drawing or parameters';
+      $('stat-complete').className = 'bad';
+    },
+  };
 }
