@@ -1,9 +1,12 @@
 // The line over the canvas about the triangle under the pointer: its angles, radius-edge ratio,
 // area, vertices with their kinds, and region attribute.
+import { VertexKind } from '../wasm/index.js';
+import { VERTEX_KIND_LABELS } from './labels.js';
 import { triangleShape } from './mesh-geometry.js';
 import { locateTriangle } from './mesh-index.js';
 
-const VERTEX_KINDS = ['input', 'segment split', 'interior (circumcenter)', 'off-center', 'intersection', 'unused'];
+// mesh.vertexKinds holds VertexKind values; the labels are keyed by their names.
+const VERTEX_KIND_NAMES = Object.fromEntries(Object.entries(VertexKind).map(([name, value]) => [value, name]));
 
 /**
  * @param {object} app the page's state (mesh, stepMesh, hoverTriangle)
@@ -27,7 +30,7 @@ export function createHoverInfo({ app, scheduleDraw }) {
       info.hidden = true;
     } else {
       const shape = triangleShape(mesh, t);
-      const kinds = shape.vertices.map((v) => `${v} ${VERTEX_KINDS[mesh.vertexKinds[v]] ?? '?'}`);
+      const kinds = shape.vertices.map((v) => `${v} ${VERTEX_KIND_LABELS[VERTEX_KIND_NAMES[mesh.vertexKinds[v]]] ?? '?'}`);
       const attribute = mesh.triangleAttributes[t];
       info.textContent = `Triangle ${t}: angles ${shape.angles.map((a) => `${a.toFixed(2)}°`).join(', ')}; ` +
         `radius-edge ratio ${shape.radiusEdge.toFixed(3)}; area ${shape.area.toPrecision(4)}; ` +

@@ -2,6 +2,7 @@
 // encroachment, Steiner budget, and the region seed fields (for new seeds, or the selected one).
 // Each field writes app.drawing.options and reports the change; sync() shows a drawing's options.
 import { DEFAULT_OPTIONS, Item } from './drawing.js';
+import { ENCROACHMENT_LABELS, PLACEMENT_LABELS, VARIANT_LABELS } from './labels.js';
 import { setStatus } from './status-line.js';
 
 const $ = (id) => document.getElementById(id);
@@ -13,12 +14,25 @@ function readNumber(input) {
   return Number.isFinite(value) ? value : null;
 }
 
+/** A select's entries from a table of labels keyed by the option's values (labels.js). */
+function fillSelect(select, labels) {
+  for (const [value, label] of Object.entries(labels)) {
+    const option = document.createElement('option');
+    option.value = value;
+    option.textContent = label;
+    select.append(option);
+  }
+}
+
 /**
  * @param {object} app the page's state (drawing)
  * @param {object} editor the Editor (its selection: the region seed the fields edit)
  * @param {(commit: boolean) => void} changed an option changed; `commit` records an undo step
  */
 export function createParametersPanel({ app, editor, changed }) {
+  fillSelect($('placement'), PLACEMENT_LABELS);
+  fillSelect($('variant'), VARIANT_LABELS);
+  fillSelect($('encroachment'), ENCROACHMENT_LABELS);
   const minAngleRange = $('min-angle-range');
   const minAngleNumber = $('min-angle');
 

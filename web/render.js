@@ -6,6 +6,7 @@
 // the edges are drawn, as one path.
 import { minAngleOf, minAngles } from './mesh-geometry.js';
 import { GlMesh } from './gl-mesh.js';
+import { EXEMPTION_LABELS } from './labels.js';
 import { drawStep, showsStep } from './step-overlay.js';
 
 export const LARGE_MESH = 200_000;
@@ -50,8 +51,8 @@ function angleClass(angle) {
 /** Legend rows of the exemptions marked on the canvas (exemptions.js). */
 export function exemptionLegend(exemptions) {
   const rows = [];
-  if (exemptions?.nestled.length) rows.push({ colour: COLOURS.exempt, label: 'in a small input angle (exempt)', hatched: true });
-  if (exemptions?.seditious.length) rows.push({ colour: COLOURS.seditious, label: 'seditious edge (exempt)' });
+  if (exemptions?.nestled.length) rows.push({ colour: COLOURS.exempt, label: EXEMPTION_LABELS.SMALL_INPUT_ANGLE.legend, hatched: true });
+  if (exemptions?.seditious.length) rows.push({ colour: COLOURS.seditious, label: EXEMPTION_LABELS.SEDITIOUS_EDGE.legend });
   return rows;
 }
 
