@@ -233,10 +233,11 @@ export class Renderer {
 
   /**
    * @param {object} s what to draw:
-   *   view, drawing, colorMode, showGrid, snap, selection, hoverItem, hoverTriangle,
-   *   pendingChain: { from: pointIndex, to: {x,y} } | null, keyCursor: {x,y} | null (keyboard cursor),
+   *   view, drawing, colorMode, snap (the fine grid too), selection, hoverItem, hoverTriangle,
+   *   pendingChain: { from: pointIndex, to: {x,y}, first } | null, keyCursor: {x,y} | null (keyboard cursor),
    *   notices, step: { final, events, index, shown } | null: `final` the full mesh (its points
-   *   number every vertex of every step), `index` the step wanted, `shown` the mesh on screen
+   *   number every vertex of every step), `index` the step wanted, `shown` the mesh on screen;
+   *   exemptions (exemptions.js, of `exemptions.mesh`) | null, vertexNumbers: whether to number the vertices
    */
   draw(s) {
     const { ctx, dpr } = this;
