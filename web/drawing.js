@@ -9,6 +9,7 @@
 //   regions  [{ x, y, attribute, maxArea }]
 //   options  { minAngle, maxArea, placement, maxSteiner, variant, encroachment }
 //            maxArea/maxSteiner: null = none/automatic; variant 'cdt' | 'box'; encroachment 'lens' | 'disk'
+import { boundsOf, hasBounds, includePoint } from './bounds.js';
 
 export const DEFAULT_OPTIONS = Object.freeze({
   minAngle: 30, maxArea: null, placement: 'offcenter', maxSteiner: null, variant: 'cdt', encroachment: 'lens',
@@ -184,16 +185,7 @@ export function hitTest(d, x, y, radius, kinds = [Item.HOLE, Item.REGION, Item.P
 
 /** Axis-aligned bounds of everything drawn, or null when empty. */
 export function drawingBounds(d) {
-  let minX = Infinity;
-  let minY = Infinity;
-  let maxX = -Infinity;
-  let maxY = -Infinity;
-  const add = (x, y) => {
-    minX = Math.min(minX, x); minY = Math.min(minY, y);
-    maxX = Math.max(maxX, x); maxY = Math.max(maxY, y);
-  };
-  for (let i = 0; i < d.points.length; i += 2) add(d.points[i], d.points[i + 1]);
-  for (let i = 0; i < d.holes.length; i += 2) add(d.holes[i], d.holes[i + 1]);
-  for (const r of d.regions) add(r.x, r.y);
-  return minX <= maxX ? { minX, minY, maxX, maxY } : null;
+  const box = boundsOf(d.holes, boundsOf(d.points));
+  for (const r of d.regions) includePoint(box, r.x, r.y);
+  return hasBounds(box) ? box : null;
 }

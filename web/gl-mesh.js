@@ -15,6 +15,7 @@
 //   one quad.
 // Positions are sent relative to the mesh's centre so float32 keeps the precision of a zoom.
 
+import { boundsOf, emptyBounds, includePoint } from './bounds.js';
 import { parseColour, rasterizeOverview, walkOverview } from './mesh-overview.js';
 
 const MESH_VERTEX = `#version 300 es
@@ -155,15 +156,9 @@ export class GlMesh {
     clearTimeout(this.deferred);
     if (!this.source) return;
     const p = mesh.points;
-    let minX = Infinity; let minY = Infinity; let maxX = -Infinity; let maxY = -Infinity;
-    for (let i = 0; i < p.length; i += 2) {
-      if (p[i] < minX) minX = p[i];
-      if (p[i] > maxX) maxX = p[i];
-      if (p[i + 1] < minY) minY = p[i + 1];
-      if (p[i + 1] > maxY) maxY = p[i + 1];
-    }
-    this.box = { minX, minY, maxX, maxY };
-    this.origin = [(minX + maxX) / 2, (minY + maxY) / 2];
+    const box = boundsOf(p);
+    this.box = box;
+    this.origin = [(box.minX + box.maxX) / 2, (box.minY + box.maxY) / 2];
     if (this.triangleCount <= DEFER_ABOVE) {
       this.buildGeometry();
       this.geometryReady = true;
@@ -262,17 +257,12 @@ export class GlMesh {
     for (let c = 0; c < side * side; c++) {
       const start = count[c]; const end = count[c + 1];
       if (start === end) continue;
-      const chunk = { start, count: end - start, minX: Infinity, minY: Infinity, maxX: -Infinity, maxY: -Infinity, meanEdge: 0 };
+      const chunk = { start, count: end - start, ...emptyBounds(), meanEdge: 0 };
       let area = 0;
       for (let s = start; s < end; s++) {
         const t = order[s];
         const i = 2 * tri[3 * t]; const j = 2 * tri[3 * t + 1]; const k = 2 * tri[3 * t + 2];
-        for (const v of [i, j, k]) {
-          if (p[v] < chunk.minX) chunk.minX = p[v];
-          if (p[v] > chunk.maxX) chunk.maxX = p[v];
-          if (p[v + 1] < chunk.minY) chunk.minY = p[v + 1];
-          if (p[v + 1] > chunk.maxY) chunk.maxY = p[v + 1];
-        }
+        for (const v of [i, j, k]) includePoint(chunk, p[v], p[v + 1]);
         area += Math.abs((p[j] - p[i]) * (p[k + 1] - p[i + 1]) - (p[j + 1] - p[i + 1]) * (p[k] - p[i])) / 2;
       }
       // The edge of an equilateral triangle of the chunk's mean area.

@@ -4,6 +4,7 @@
 // pass); else, where that walk meets the boundary (a hole or a notch between), a uniform grid of
 // buckets over the mesh's box, each listing the triangles whose bounding box meets it. Both grids
 // are built when first needed (not on the mesh's arrival, so the first picture does not wait).
+import { boundsOf } from './bounds.js';
 
 const WALK_STEPS = 64;
 const SEED_WALK_STEPS = 1024;
@@ -34,15 +35,9 @@ export function walk(mesh, t, x, y, maxSteps = WALK_STEPS) {
   return -1;
 }
 
-/** Box of the mesh's points. */
+/** Box of the mesh's points, as the grids use it: corner and (nonzero) size. */
 function boxOf(p) {
-  let minX = Infinity; let minY = Infinity; let maxX = -Infinity; let maxY = -Infinity;
-  for (let i = 0; i < p.length; i += 2) {
-    if (p[i] < minX) minX = p[i];
-    if (p[i] > maxX) maxX = p[i];
-    if (p[i + 1] < minY) minY = p[i + 1];
-    if (p[i + 1] > maxY) maxY = p[i + 1];
-  }
+  const { minX, minY, maxX, maxY } = boundsOf(p);
   return { minX, minY, w: Math.max(maxX - minX, 1e-300), h: Math.max(maxY - minY, 1e-300) };
 }
 
@@ -93,12 +88,7 @@ export class TriangleGrid {
     const p = mesh.points;
     const tri = mesh.triangles;
     const n = tri.length / 3;
-    let minX = Infinity; let minY = Infinity; let maxX = -Infinity; let maxY = -Infinity;
-    for (let i = 0; i < p.length; i += 2) {
-      minX = Math.min(minX, p[i]); maxX = Math.max(maxX, p[i]);
-      minY = Math.min(minY, p[i + 1]); maxY = Math.max(maxY, p[i + 1]);
-    }
-    const w = Math.max(maxX - minX, 1e-300); const h = Math.max(maxY - minY, 1e-300);
+    const { minX, minY, w, h } = boxOf(p);
     // About one triangle per cell, the cells square-ish.
     const cells = Math.max(1, n);
     this.nx = Math.max(1, Math.min(4096, Math.round(Math.sqrt(cells * w / h))));

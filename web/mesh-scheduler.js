@@ -17,7 +17,7 @@ export const ABORT_AFTER_MS = 400;
 export class MeshScheduler {
   /**
    * @param {{ onStart?: () => void, onResult: (mesh, request) => void, onError: (error, request) => void,
-   *           onProgress?: (progress) => void, onIdle?: () => void }} handlers
+   *           onProgress?: (progress) => void }} handlers
    */
   constructor(handlers) {
     this.handlers = handlers;

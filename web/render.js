@@ -4,9 +4,10 @@
 // class, one for all edges) and drawn under the view's transform, so panning and zooming only
 // replay them. Beyond LARGE_MESH triangles, per-triangle fills cost more than they show: only
 // the edges are drawn, as one path.
-import { circumcircle, splitShell } from './event-geometry.js';
 import { minAngleOf, minAngles } from './mesh-geometry.js';
 import { GlMesh } from './gl-mesh.js';
+import { EXEMPTION_LABELS } from './labels.js';
+import { drawStep, showsStep } from './step-overlay.js';
 
 export const LARGE_MESH = 200_000;
 /** Vertex numbers are drawn for meshes of up to this many vertices (more would not be legible). */
@@ -38,9 +39,6 @@ export const COLOURS = {
   hole: '#c92a2a',
   region: '#5f3dc4',
   notice: '#e8590c',
-  step: '#d6336c',
-  stepSecondary: '#1d4ed8',
-  newVertex: '#d6336c',
   exempt: '#7048e8',     // triangles nestled in small input angles (§6.6), hatched
   seditious: '#f76707',  // seditious edges and their triangles (§6.6)
 };
@@ -53,8 +51,8 @@ function angleClass(angle) {
 /** Legend rows of the exemptions marked on the canvas (exemptions.js). */
 export function exemptionLegend(exemptions) {
   const rows = [];
-  if (exemptions?.nestled.length) rows.push({ colour: COLOURS.exempt, label: 'in a small input angle (exempt)', hatched: true });
-  if (exemptions?.seditious.length) rows.push({ colour: COLOURS.seditious, label: 'seditious edge (exempt)' });
+  if (exemptions?.nestled.length) rows.push({ colour: COLOURS.exempt, label: EXEMPTION_LABELS.SMALL_INPUT_ANGLE.legend, hatched: true });
+  if (exemptions?.seditious.length) rows.push({ colour: COLOURS.seditious, label: EXEMPTION_LABELS.SEDITIOUS_EDGE.legend });
   return rows;
 }
 
@@ -183,7 +181,7 @@ export class Renderer {
     };
     if (s.snap) lines(step, COLOURS.grid);
     lines(step * 5, COLOURS.gridStrong);
-    const alpha = this.mesh && s.step && !this.showsStep(s.step) ? 0.35 : 1;
+    const alpha = this.mesh && s.step && !showsStep(s.step, this.mesh) ? 0.35 : 1;
     this.gl.draw(view, this.dpr, { background: COLOURS.background, grid, edgeColour: COLOURS.edge, alpha });
   }
 
@@ -235,10 +233,11 @@ export class Renderer {
 
   /**
    * @param {object} s what to draw:
-   *   view, drawing, colorMode, showGrid, snap, selection, hoverItem, hoverTriangle,
-   *   pendingChain: { from: pointIndex, to: {x,y} } | null, keyCursor: {x,y} | null (keyboard cursor),
+   *   view, drawing, colorMode, snap (the fine grid too), selection, hoverItem, hoverTriangle,
+   *   pendingChain: { from: pointIndex, to: {x,y}, first } | null, keyCursor: {x,y} | null (keyboard cursor),
    *   notices, step: { final, events, index, shown } | null: `final` the full mesh (its points
-   *   number every vertex of every step), `index` the step wanted, `shown` the mesh on screen
+   *   number every vertex of every step), `index` the step wanted, `shown` the mesh on screen;
+   *   exemptions (exemptions.js, of `exemptions.mesh`) | null, vertexNumbers: whether to number the vertices
    */
   draw(s) {
     const { ctx, dpr } = this;
@@ -271,7 +270,7 @@ export class Renderer {
       world();
       // Step mode: the mesh is that of the step (StepReplay); dimmed only while it is still on
       // its way, when the picture under the event is the previous step's.
-      ctx.globalAlpha = s.step && !this.showsStep(s.step) ? 0.35 : 1;
+      ctx.globalAlpha = s.step && !showsStep(s.step, this.mesh) ? 0.35 : 1;
       for (const { colour, path } of this.cache.fills) {
         ctx.fillStyle = colour;
         ctx.fill(path);
@@ -290,7 +289,7 @@ export class Renderer {
 
     if (s.exemptions && this.mesh === s.exemptions.mesh) this.drawExemptions(s.exemptions, view, world, screen, px);
     this.drawDrawing(s, world, screen, px);
-    if (s.step) this.drawStep(s.step, view, world, screen, px);
+    if (s.step) drawStep(ctx, this.mesh, s.step, view, world, screen, px);
     if (s.vertexNumbers) this.drawVertexNumbers(view);
     this.drawNotices(s.notices ?? [], view);
   }
@@ -533,111 +532,5 @@ export class Renderer {
       ctx.beginPath(); ctx.arc(q.x, q.y, 10, 0, 2 * Math.PI);
       ctx.strokeStyle = COLOURS.notice; ctx.lineWidth = 2.5; ctx.stroke();
     }
-  }
-
-  /** Whether the mesh on screen is that of step s.index (it arrives from a worker). */
-  showsStep(step) {
-    return step.shown !== null && step.shown === this.mesh
-      && step.shown.points.length === step.final.points.length - 2 * (step.events.count - step.index);
-  }
-
-  /**
-   * Step mode: the event that made step `index` (the index-th insertion) drawn over that step's
-   * mesh: its new triangles (the star of the new vertex: the cavity it retriangulated), the
-   * skinny triangle and its circumcircle, the encroached subsegment and its diametral circle, the
-   * rejected point. Vertex numbers are those of the final mesh, the same in every step.
-   */
-  drawStep(step, view, world, screen, px) {
-    const { ctx } = this;
-    const { final, events, index } = step;
-    if (!events || events.count === 0 || index === 0) return;
-    const e = index - 1;
-    const p = final.points;
-    const at = (v) => view.toScreen(p[2 * v], p[2 * v + 1]);
-    if (this.showsStep(step)) this.drawNewTriangles(step.shown, events.vertex[e], world, screen, px);
-
-    const circle = (cx, cy, r, colour) => {
-      world();
-      ctx.beginPath(); ctx.arc(cx, cy, r, 0, 2 * Math.PI);
-      ctx.strokeStyle = colour; ctx.lineWidth = 1.5 * px; ctx.setLineDash([6 * px, 4 * px]); ctx.stroke();
-      ctx.setLineDash([]);
-      screen();
-    };
-    const line = (a, b, colour, width) => {
-      const qa = at(a); const qb = at(b);
-      ctx.beginPath(); ctx.moveTo(qa.x, qa.y); ctx.lineTo(qb.x, qb.y);
-      ctx.strokeStyle = colour; ctx.lineWidth = width; ctx.stroke();
-    };
-    // The triangle split is gone from this step's mesh: drawn as an outline where it was.
-    const triangle = (colour) => {
-      const [i, j, k] = [events.triangle[3 * e], events.triangle[3 * e + 1], events.triangle[3 * e + 2]];
-      const qi = at(i); const qj = at(j); const qk = at(k);
-      ctx.beginPath(); ctx.moveTo(qi.x, qi.y); ctx.lineTo(qj.x, qj.y); ctx.lineTo(qk.x, qk.y); ctx.closePath();
-      ctx.strokeStyle = colour; ctx.lineWidth = 2.5; ctx.setLineDash([5, 3]); ctx.stroke(); ctx.setLineDash([]);
-      const c = circumcircle(p, i, j, k);
-      if (c) circle(c.x, c.y, c.r, colour);
-    };
-    const subsegment = (colour) => {
-      const a = events.a[e]; const b = events.b[e];
-      line(a, b, colour, 4);
-      // The diametral circle: centred at the midpoint, through both endpoints.
-      const mx = (p[2 * a] + p[2 * b]) / 2; const my = (p[2 * a + 1] + p[2 * b + 1]) / 2;
-      circle(mx, my, Math.hypot(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]) / 2, colour);
-    };
-    const marker = (x, y, colour, r = 6) => {
-      const q = view.toScreen(x, y);
-      ctx.beginPath(); ctx.arc(q.x, q.y, r, 0, 2 * Math.PI);
-      ctx.fillStyle = colour; ctx.fill();
-      ctx.strokeStyle = '#fff'; ctx.lineWidth = 2; ctx.stroke();
-    };
-
-    const kind = events.kind[e];
-    if (kind === 0) {  // SEGMENT_SPLIT
-      subsegment(COLOURS.step);
-      // A concentric-shell split (§6.6): the shell around the corner vertex, through the new vertex.
-      const shell = splitShell(events, e, p);
-      if (shell !== null) circle(p[2 * shell.center], p[2 * shell.center + 1], shell.radius, COLOURS.stepSecondary);
-      const by = events.by[e];
-      if (by >= 0) marker(p[2 * by], p[2 * by + 1], COLOURS.stepSecondary, 5);  // the encroaching vertex
-    } else if (kind === 1 || kind === 2) {  // CIRCUMCENTER, OFF_CENTER
-      triangle(COLOURS.step);
-    } else if (kind === 4 || kind === 5) {  // PETAL_POINT, OPTIMAL_POINT: a diamond round the point chosen
-      triangle(COLOURS.step);
-      const q = view.toScreen(events.xy[2 * e], events.xy[2 * e + 1]);
-      ctx.beginPath();
-      ctx.moveTo(q.x, q.y - 12); ctx.lineTo(q.x + 12, q.y); ctx.lineTo(q.x, q.y + 12); ctx.lineTo(q.x - 12, q.y); ctx.closePath();
-      ctx.strokeStyle = COLOURS.stepSecondary; ctx.lineWidth = 2.5; ctx.stroke();
-    } else if (kind === 3) {  // REJECTED
-      triangle(COLOURS.stepSecondary);
-      subsegment(COLOURS.step);
-      const q = view.toScreen(events.circumcenter[2 * e], events.circumcenter[2 * e + 1]);
-      ctx.beginPath();
-      ctx.moveTo(q.x - 6, q.y - 6); ctx.lineTo(q.x + 6, q.y + 6);
-      ctx.moveTo(q.x + 6, q.y - 6); ctx.lineTo(q.x - 6, q.y + 6);
-      ctx.strokeStyle = COLOURS.stepSecondary; ctx.lineWidth = 3; ctx.stroke();
-    }
-    marker(events.xy[2 * e], events.xy[2 * e + 1], COLOURS.newVertex, 6);
-  }
-
-  /** The triangles of `mesh` around vertex v, filled: what the insertion of v created. */
-  drawNewTriangles(mesh, v, world, screen, px) {
-    const { ctx } = this;
-    const tri = mesh.triangles;
-    const p = mesh.points;
-    const path = new Path2D();
-    for (let t = 0; t < tri.length; t += 3) {
-      if (tri[t] !== v && tri[t + 1] !== v && tri[t + 2] !== v) continue;
-      path.moveTo(p[2 * tri[t]], p[2 * tri[t] + 1]);
-      path.lineTo(p[2 * tri[t + 1]], p[2 * tri[t + 1] + 1]);
-      path.lineTo(p[2 * tri[t + 2]], p[2 * tri[t + 2] + 1]);
-      path.closePath();
-    }
-    world();
-    ctx.fillStyle = 'rgba(250, 204, 21, 0.45)';
-    ctx.fill(path);
-    ctx.strokeStyle = COLOURS.newVertex;
-    ctx.lineWidth = 1.5 * px;
-    ctx.stroke(path);
-    screen();
   }
 }

@@ -3,7 +3,9 @@
 // event being the one that made it; position 0 is the constrained Delaunay triangulation before
 // refinement. StepReplay (step-replay.js) provides each position's mesh.
 
+import { EventKind } from '../wasm/index.js';
 import { rejectedIsCircumcenter, splitShell } from './event-geometry.js';
+import { EVENT_KIND_LABELS as L } from './labels.js';
 
 const fmt = (v) => (Math.abs(v) >= 1e4 || (Math.abs(v) < 1e-3 && v !== 0) ? v.toExponential(3) : Number(v.toFixed(4)).toString());
 
@@ -29,34 +31,34 @@ export function describeEvent(events, e, context = null) {
   const vertex = events.vertex[e];
   const [i, j, k] = [events.triangle[3 * e], events.triangle[3 * e + 1], events.triangle[3 * e + 2]];
   let triangle = `(${i}, ${j}, ${k})`;
-  if (context?.points && i >= 0 && events.kind[e] !== 0) {
+  if (context?.points && i >= 0 && events.kind[e] !== EventKind.SEGMENT_SPLIT) {
     const angle = smallestAngle(context.points, i, j, k);
     const bound = context.minAngle ?? 0;
     triangle += ` (smallest angle ${angle.toFixed(2)}°${angle < bound ? ` < ${bound}°` : ''})`;
   }
   switch (kind) {
-    case 0: {
+    case EventKind.SEGMENT_SPLIT: {
       const by = events.by[e];
       const shell = context?.points ? splitShell(events, e, context.points) : null;
       const at = shell === null ? `at its midpoint ${where}`
         : `on the concentric shell of radius ${fmt(shell.radius)} around vertex ${shell.center} (a power of two, §6.6), at ${where}`;
       return `Split subsegment (${events.a[e]}, ${events.b[e]})${by >= 0 ? `, encroached by vertex ${by},` : ''} ${at}: vertex ${vertex}.`;
     }
-    case 1:
-      return `Inserted the circumcenter of skinny or large triangle ${triangle} at ${where}: vertex ${vertex}.`;
-    case 2:
-      return `Inserted the off-center of skinny triangle ${triangle} at ${where}: vertex ${vertex}.`;
-    case 3: {
+    case EventKind.CIRCUMCENTER:
+      return `Inserted the ${L.CIRCUMCENTER} of skinny or large triangle ${triangle} at ${where}: vertex ${vertex}.`;
+    case EventKind.OFF_CENTER:
+      return `Inserted the ${L.OFF_CENTER} of skinny triangle ${triangle} at ${where}: vertex ${vertex}.`;
+    case EventKind.REJECTED: {
       const circum = !context?.points || rejectedIsCircumcenter(events, e, context.points);
       // Petal and optimal points are never rejected (they encroach nothing): what is, is the first choice.
-      const what = circum ? 'circumcenter' : 'off-center';
+      const what = circum ? L.CIRCUMCENTER : L.OFF_CENTER;
       return `The ${what} (${fmt(events.circumcenter[2 * e])}, ${fmt(events.circumcenter[2 * e + 1])}) of ${triangle} ` +
         `encroached subsegment (${events.a[e]}, ${events.b[e]}): rejected; split the subsegment at ${where} instead: vertex ${vertex}.`;
     }
-    case 4:
-      return `Inserted the petal point of skinny triangle ${triangle} at ${where} (its off-center would have made a skinny triangle): vertex ${vertex}.`;
-    case 5:
-      return `Inserted the optimal point of skinny triangle ${triangle} at ${where} (its off-center would have made a skinny triangle): vertex ${vertex}.`;
+    case EventKind.PETAL_POINT:
+      return `Inserted the ${L.PETAL_POINT} of skinny triangle ${triangle} at ${where} (its off-center would have made a skinny triangle): vertex ${vertex}.`;
+    case EventKind.OPTIMAL_POINT:
+      return `Inserted the ${L.OPTIMAL_POINT} of skinny triangle ${triangle} at ${where} (its off-center would have made a skinny triangle): vertex ${vertex}.`;
     default:
       return `Event of unknown kind ${kind}.`;
   }

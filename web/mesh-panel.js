@@ -1,5 +1,9 @@
-// The statistics panel: counts, angle range, completeness and the angle histogram.
+// The Mesh panel: counts, angle range, completeness with reasons, the angle histogram, the event
+// counts and the triangles left skinny on purpose.
+import { EventKind } from '../wasm/index.js';
 import { rejectedIsCircumcenter, splitShell } from './event-geometry.js';
+import { findExemptions } from './exemptions.js';
+import { EVENT_KIND_LABELS, EXEMPTION_LABELS } from './labels.js';
 
 /**
  * Angles worth seeing against the histogram: Ruppert's guaranteed 20.7°, the 26.45° and 28.6°
@@ -80,16 +84,19 @@ export function drawHistogram(canvas, histogram) {
   }
 }
 
+const { SEGMENT_SPLIT, CIRCUMCENTER, OFF_CENTER, REJECTED, PETAL_POINT, OPTIMAL_POINT } = EventKind;
+const L = EVENT_KIND_LABELS;
+
 /** Event names, in the panel's order, and how to tell each from the trace (points: the final mesh's). */
 const EVENT_NAMES = [
-  ['midpoint split', (ev, e, p) => ev.kind[e] === 0 && splitShell(ev, e, p) === null],
-  ['shell split', (ev, e, p) => ev.kind[e] === 0 && splitShell(ev, e, p) !== null],
-  ['circumcenter', (ev, e) => ev.kind[e] === 1],
-  ['off-center', (ev, e) => ev.kind[e] === 2],
-  ['petal point', (ev, e) => ev.kind[e] === 4],
-  ['optimal point', (ev, e) => ev.kind[e] === 5],
-  ['rejected circumcenter', (ev, e, p) => ev.kind[e] === 3 && rejectedIsCircumcenter(ev, e, p)],
-  ['rejected off-center', (ev, e, p) => ev.kind[e] === 3 && !rejectedIsCircumcenter(ev, e, p)],
+  [L.SEGMENT_SPLIT.midpoint, (ev, e, p) => ev.kind[e] === SEGMENT_SPLIT && splitShell(ev, e, p) === null],
+  [L.SEGMENT_SPLIT.shell, (ev, e, p) => ev.kind[e] === SEGMENT_SPLIT && splitShell(ev, e, p) !== null],
+  [L.CIRCUMCENTER, (ev, e) => ev.kind[e] === CIRCUMCENTER],
+  [L.OFF_CENTER, (ev, e) => ev.kind[e] === OFF_CENTER],
+  [L.PETAL_POINT, (ev, e) => ev.kind[e] === PETAL_POINT],
+  [L.OPTIMAL_POINT, (ev, e) => ev.kind[e] === OPTIMAL_POINT],
+  [L.REJECTED.circumcenter, (ev, e, p) => ev.kind[e] === REJECTED && rejectedIsCircumcenter(ev, e, p)],
+  [L.REJECTED.offCenter, (ev, e, p) => ev.kind[e] === REJECTED && !rejectedIsCircumcenter(ev, e, p)],
 ];
 
 /** The count of each event kind: [[name, count], ...] (every kind, zeros included). */
@@ -116,5 +123,49 @@ export function showExemptions(element, exemptions) {
   if (!exemptions) { element.textContent = '–'; return; }
   const { nestled, seditious } = exemptions;
   element.textContent = nestled.length + seditious.length === 0 ? 'none'
-    : `${nestled.length} in small input angles (hatched), ${seditious.length} on seditious edges (edge in orange)`;
+    : `${nestled.length} ${EXEMPTION_LABELS.SMALL_INPUT_ANGLE.row}, ${seditious.length} ${EXEMPTION_LABELS.SEDITIOUS_EDGE.row}`;
+}
+
+// Triangles left skinny on purpose (§6.6) are not looked for in meshes above this many triangles
+// (the search would hold up their first picture).
+const EXEMPTIONS_UP_TO = 200_000;
+
+/** The panel's rows in the page (index.html). */
+export function createMeshPanel() {
+  const $ = (id) => document.getElementById(id);
+  const elements = {
+    vertices: $('stat-vertices'), triangles: $('stat-triangles'), minAngle: $('stat-min-angle'),
+    maxAngle: $('stat-max-angle'), complete: $('stat-complete'), time: $('stat-time'),
+    reasons: $('reasons'), histogram: $('histogram'),
+  };
+
+  /** The triangles left skinny on purpose in the mesh, marked in the panel: the exemptions or null. */
+  function markExemptions(mesh, request) {
+    if (mesh.triangles.length / 3 > EXEMPTIONS_UP_TO) {
+      $('stat-exempt').textContent = `not looked for above ${EXEMPTIONS_UP_TO.toLocaleString('en-US')} triangles`;
+      return null;
+    }
+    const exemptions = { mesh, ...findExemptions(mesh, request.plc, request.options.minAngle) };
+    showExemptions($('stat-exempt'), exemptions);
+    return exemptions;
+  }
+
+  return {
+    /** A new mesh of request.plc: every row; returns its exemptions (or null) for the canvas. */
+    show(mesh, request) {
+      showStats(elements, mesh);
+      showEventCounts($('stat-events'), mesh);
+      return markExemptions(mesh, request);
+    },
+    clear() {
+      showStats(elements, null);
+      showExemptions($('stat-exempt'), null);
+      showEventCounts($('stat-events'), null);
+    },
+    /** A cancel: the mesh on screen is an older one, and the panel must not claim it answers. */
+    cancelled() {
+      $('stat-complete').textContent = 'cancelled: the mesh shown is of the previous drawing or parameters';
+      $('stat-complete').className = 'bad';
+    },
+  };
 }

@@ -1,0 +1,49 @@
+// Opening files: the file picker and drag-and-drop onto the canvas (files.js reads them with the
+// package's readers).
+import { fromPlc } from './drawing.js';
+import { parseInput } from './files.js';
+import { loading } from './meshing.js';
+import { setStatus, showNotices } from './status-line.js';
+
+const $ = (id) => document.getElementById(id);
+
+/**
+ * @param {object} app the page's state (drawing: its options carry over to the file's)
+ * @param {(drawing) => void} setDrawing
+ * @param {() => void} notPreset the presets box no longer names the drawing
+ */
+export function createFilePanel({ app, setDrawing, notPreset }) {
+  async function loadFile(file) {
+    const failed = loading();
+    try {
+      const text = await file.text();
+      const plc = await parseInput(text, file.name);
+      notPreset();
+      setDrawing(fromPlc(plc, app.drawing.options));
+      setStatus(`Loaded ${file.name}: ${plc.points.length / 2} points, ${plc.segments.length / 2} segments.`, 'ok');
+    } catch (error) {
+      failed();
+      setStatus(`Could not load ${file.name}: ${error.message}`, 'error');
+      showNotices([], error);
+    }
+  }
+  $('file-input').addEventListener('change', () => {
+    const file = $('file-input').files[0];
+    if (file) loadFile(file);
+    $('file-input').value = '';
+  });
+
+  const wrap = $('canvas-wrap');
+  wrap.addEventListener('dragover', (e) => {
+    if (![...(e.dataTransfer?.types ?? [])].includes('Files')) return;
+    e.preventDefault();
+    $('drop-hint').hidden = false;
+  });
+  wrap.addEventListener('dragleave', () => { $('drop-hint').hidden = true; });
+  wrap.addEventListener('drop', (e) => {
+    e.preventDefault();
+    $('drop-hint').hidden = true;
+    const file = e.dataTransfer?.files?.[0];
+    if (file) loadFile(file);
+  });
+}

@@ -1,0 +1,58 @@
+// What the page calls the names that come from the core: plain objects keyed by the core's own
+// names (the package's VertexKind and EventKind keys, its reason kinds, the values of the
+// placement, variant and encroachment options), so that the page's words live in one file and a
+// test can check these keys against the names the package exports. No DOM here: Node imports it.
+
+/** mesh.vertexKinds (VertexKind), in the hover line. */
+export const VERTEX_KIND_LABELS = {
+  INPUT: 'input',
+  SEGMENT_SPLIT: 'segment split',
+  INTERIOR: 'interior (circumcenter)',
+  OFF_CENTER: 'off-center',
+  INTERSECTION: 'intersection',
+  UNUSED: 'unused',
+};
+
+/**
+ * mesh.events.kind (EventKind), in the Events row (in this order) and the step texts. The page
+ * tells two splits and two rejected points apart by measuring (event-geometry.js): a split off its
+ * subsegment's midpoint is a concentric-shell split, and a rejected point is the circumcenter or
+ * the off-center (petal and optimal points are never rejected).
+ */
+export const EVENT_KIND_LABELS = {
+  SEGMENT_SPLIT: { midpoint: 'midpoint split', shell: 'shell split' },
+  CIRCUMCENTER: 'circumcenter',
+  OFF_CENTER: 'off-center',
+  PETAL_POINT: 'petal point',
+  OPTIMAL_POINT: 'optimal point',
+  REJECTED: { circumcenter: 'rejected circumcenter', offCenter: 'rejected off-center' },
+};
+
+/**
+ * The reasons (mesh.reasons' kinds) whose triangles the page finds and marks itself
+ * (exemptions.js): their legend rows and their part of the Mesh panel's Exempt row.
+ */
+export const EXEMPTION_LABELS = {
+  SMALL_INPUT_ANGLE: { legend: 'in a small input angle (exempt)', row: 'in small input angles (hatched)' },
+  SEDITIOUS_EDGE: { legend: 'seditious edge (exempt)', row: 'on seditious edges (edge in orange)' },
+};
+
+/** options.placement, the Steiner placement box's entries (in this order). */
+export const PLACEMENT_LABELS = {
+  offcenter: 'off-center',
+  circumcenter: 'circumcenter',
+  petal: 'petal (fewest triangles)',
+  optimal: 'optimal points (for 35-40°)',
+};
+
+/** options.variant, the Algorithm box's entries. */
+export const VARIANT_LABELS = {
+  cdt: 'Constrained Delaunay (CDT)',
+  box: "Delaunay in a bounding box (Ruppert's original)",
+};
+
+/** options.encroachment, the Encroachment box's entries. */
+export const ENCROACHMENT_LABELS = {
+  lens: 'Diametral lens',
+  disk: 'Diametral disk',
+};

@@ -1,0 +1,121 @@
+// Meshing the drawing: the requests to the worker (MeshScheduler, mesh-scheduler.js), and what a
+// result or an error changes on the page (the mesh panel, the display panel's legend, step mode,
+// the status line, the host). body[data-mesh-state] tells tests and hosts where it stands:
+// 'queued', 'meshing', 'done', 'cancelled', 'error', 'empty', or 'loading' while a file is read.
+import { pointCount, toMeshOptions, toPlc } from './drawing.js';
+import { postError, postMeshed } from './embed.js';
+import { MeshScheduler } from './mesh-scheduler.js';
+import { setStatus, showNotices, showProgress, startProgress, stopProgress } from './status-line.js';
+
+const $ = (id) => document.getElementById(id);
+
+/** Marks the page busy while a file or message is read, so that nothing waits on an old mesh. */
+export function loading() {
+  const previous = document.body.dataset.meshState;
+  document.body.dataset.meshState = 'loading';
+  return () => { if (document.body.dataset.meshState === 'loading') document.body.dataset.meshState = previous; };
+}
+
+/**
+ * @param {object} app the page's state (drawing, stepMode; mesh, meshedPlc, notices,
+ *   hoverTriangle, stepMesh, exemptions are set here)
+ * @param {object} renderer the Renderer
+ * @param {object} meshPanel, display, steps the panels a mesh changes
+ * @param {() => void} scheduleDraw
+ * @param {(() => void) | null} onArrival called first when a mesh arrives (`?bench=1`)
+ */
+export function createMeshing({ app, renderer, meshPanel, display, steps, scheduleDraw, onArrival = null }) {
+  const scheduler = new MeshScheduler({
+    onStart() {
+      document.body.dataset.meshState = 'meshing';
+      startProgress();
+    },
+    onProgress: showProgress,
+    onResult(mesh, request) {
+      onArrival?.();
+      stopProgress();
+      app.mesh = mesh;
+      app.meshedPlc = request.plc;
+      app.notices = mesh.notices;
+      app.hoverTriangle = -1;
+      app.stepMesh = null;
+      renderer.setMesh(mesh);
+      app.exemptions = meshPanel.show(mesh, request);
+      display.vertexNumbersNote();
+      showNotices(mesh.notices);
+      display.updateLegend();
+      steps.meshed(mesh, request);
+      const s = mesh.stats;
+      const summary = `${s.triangles.toLocaleString('en-US')} triangles, ${s.vertices.toLocaleString('en-US')} vertices, ` +
+        `min angle ${s.minAngle.toFixed(2)}° in ${s.milliseconds.toFixed(1)} ms`;
+      if (mesh.notices.length) setStatus(`Meshed with ${mesh.notices.length} repair(s) of the input: ${summary}.`, 'warn');
+      else if (!mesh.complete) setStatus(`Meshed, not complete (see Mesh panel): ${summary}.`, 'warn');
+      else setStatus(`Meshed: ${summary}.`, 'ok');
+      // A result that a newer, still debounced request will replace is shown, but not 'done'.
+      document.body.dataset.meshState = scheduler.queued ? 'queued' : 'done';
+      document.body.dataset.meshCount = String(Number(document.body.dataset.meshCount ?? 0) + 1);
+      postMeshed(mesh, request.id);
+      steps.showPending();
+      scheduleDraw();
+    },
+    onError(error, request) {
+      stopProgress();
+      if (error?.code === 'CANCELLED') {
+        setStatus('Meshing cancelled. Change the drawing or a parameter to mesh again.', 'warn');
+        if (app.mesh) meshPanel.cancelled();
+        document.body.dataset.meshState = scheduler.queued ? 'queued' : 'cancelled';
+        return;
+      }
+      clear();
+      setStatus(`Cannot mesh this drawing: ${error?.message ?? error}`, 'error');
+      showNotices([], error);
+      document.body.dataset.meshState = scheduler.queued ? 'queued' : 'error';
+      postError(error, request?.id ?? null);
+      scheduleDraw();
+    },
+  });
+  $('cancel').addEventListener('click', () => scheduler.cancel());
+
+  /** No mesh on the page (an error, or too few points). */
+  function clear() {
+    app.mesh = null;
+    app.meshedPlc = null;
+    app.notices = [];
+    app.hoverTriangle = -1;
+    $('hover-info').hidden = true;
+    app.stepMesh = null;
+    renderer.setMesh(null);
+    app.exemptions = null;
+    meshPanel.clear();
+    steps.clear();
+    display.updateLegend();
+  }
+
+  // The id of a host's 'ruppert:load', given to the mesh request it causes (and echoed in the reply).
+  let hostId = null;
+
+  /** Meshes the drawing after `delay` ms (the scheduler's own throttle when undefined). */
+  function remesh(delay) {
+    if (pointCount(app.drawing) < 3) {
+      scheduler.clear();
+      stopProgress();
+      clear();
+      showNotices([]);
+      setStatus(pointCount(app.drawing) === 0
+        ? 'Empty drawing: pick a tool and click on the canvas, or choose a preset.'
+        : 'Add at least three points (not all on one line) to mesh.', 'info');
+      document.body.dataset.meshState = 'empty';
+      return;
+    }
+    // 'queued' until the result of this very request arrives (tests and hosts can wait for 'done').
+    document.body.dataset.meshState = 'queued';
+    scheduler.request(toPlc(app.drawing), toMeshOptions(app.drawing, { trace: app.stepMode }), delay, hostId);
+    hostId = null;
+  }
+
+  return {
+    remesh,
+    /** The next request answers a host's load with this id. */
+    forHost(id) { hostId = id; },
+  };
+}

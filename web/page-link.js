@@ -1,0 +1,59 @@
+// The page's link: the drawing, its options, the step, the colouring and the view written into
+// the URL hash (url-state.js encodes them), read back when the page opens or the hash changes.
+import { MAX_HASH_LENGTH, decodeDrawing, encodeDrawing, encodePageState } from './url-state.js';
+import { setStatus } from './status-line.js';
+
+const $ = (id) => document.getElementById(id);
+
+/**
+ * @param {object} app the page's state (drawing, stepMode, colorMode, viewMoved, writtenHash)
+ * @param {object} view the View on screen
+ * @param {() => number} stepIndex the step shown in step mode
+ * @param {(drawing) => void} onLinkChanged a drawing from a hash the page did not write itself
+ */
+export function createPageLink({ app, view, stepIndex, onLinkChanged }) {
+  function write() {
+    const state = encodePageState({
+      step: app.stepMode ? stepIndex() : null,
+      color: app.colorMode,
+      view: app.viewMoved ? { x: view.centerX, y: view.centerY, scale: view.scale } : null,
+    });
+    const hash = `${encodeDrawing(app.drawing)}${state}`;
+    const base = `${location.pathname}${location.search}`;
+    // The embed's link to the full page carries the same state.
+    $('open-full').href = `${location.pathname}#${hash}`;
+    if (hash.length > MAX_HASH_LENGTH) {
+      app.writtenHash = '';
+      window.history.replaceState(null, '', base);
+      return;
+    }
+    app.writtenHash = `#${hash}`;
+    if (location.hash !== app.writtenHash) window.history.replaceState(null, '', `${base}#${hash}`);
+  }
+
+  // Steps, pans and zooms change the link too, but at most a few times a second (browsers
+  // throttle history.replaceState calls).
+  let timer = null;
+  function writeSoon() {
+    if (timer !== null) return;
+    timer = setTimeout(() => { timer = null; write(); }, 300);
+  }
+
+  /** The link's drawing, or null (none, or unreadable: the status line says so). */
+  function read() {
+    try {
+      return decodeDrawing(location.hash);
+    } catch (error) {
+      setStatus(`The link's drawing could not be read (${error.message}); showing the default drawing.`, 'error');
+      return null;
+    }
+  }
+
+  window.addEventListener('hashchange', () => {
+    if (location.hash === app.writtenHash) return;
+    const drawing = read();
+    if (drawing) onLinkChanged(drawing);
+  });
+
+  return { write, writeSoon, read };
+}

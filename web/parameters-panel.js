@@ -1,0 +1,125 @@
+// The Parameters panel: min angle (slider and number), max area, Steiner placement, algorithm,
+// encroachment, Steiner budget, and the region seed fields (for new seeds, or the selected one).
+// Each field writes app.drawing.options and reports the change; sync() shows a drawing's options.
+import { DEFAULT_OPTIONS, Item } from './drawing.js';
+import { ENCROACHMENT_LABELS, PLACEMENT_LABELS, VARIANT_LABELS } from './labels.js';
+import { setStatus } from './status-line.js';
+
+const $ = (id) => document.getElementById(id);
+
+/** The field's number, or null when it is empty or not a number. */
+function readNumber(input) {
+  if (input.value.trim() === '') return null;
+  const value = Number(input.value);
+  return Number.isFinite(value) ? value : null;
+}
+
+/** A select's entries from a table of labels keyed by the option's values (labels.js). */
+function fillSelect(select, labels) {
+  for (const [value, label] of Object.entries(labels)) {
+    const option = document.createElement('option');
+    option.value = value;
+    option.textContent = label;
+    select.append(option);
+  }
+}
+
+/**
+ * @param {object} app the page's state (drawing)
+ * @param {object} editor the Editor (its selection: the region seed the fields edit)
+ * @param {(commit: boolean) => void} changed an option changed; `commit` records an undo step
+ */
+export function createParametersPanel({ app, editor, changed }) {
+  fillSelect($('placement'), PLACEMENT_LABELS);
+  fillSelect($('variant'), VARIANT_LABELS);
+  fillSelect($('encroachment'), ENCROACHMENT_LABELS);
+  const minAngleRange = $('min-angle-range');
+  const minAngleNumber = $('min-angle');
+
+  /** Shows the drawing's options in the fields. */
+  function sync() {
+    const o = app.drawing.options;
+    minAngleRange.value = String(o.minAngle);
+    minAngleNumber.value = String(o.minAngle);
+    $('min-angle-warning').hidden = !(o.minAngle > 34);
+    $('max-area').value = o.maxArea > 0 ? String(o.maxArea) : '';
+    $('placement').value = o.placement;
+    $('max-steiner').value = Number.isInteger(o.maxSteiner) ? String(o.maxSteiner) : '';
+    $('variant').value = o.variant ?? DEFAULT_OPTIONS.variant;
+    $('encroachment').value = o.encroachment ?? DEFAULT_OPTIONS.encroachment;
+  }
+
+  function setMinAngle(value, commit) {
+    if (value === null || value < 0 || value > 60) {
+      minAngleNumber.setAttribute('aria-invalid', 'true');
+      setStatus('Min angle must be a number from 0 to 60 degrees.', 'error');
+      return;
+    }
+    minAngleNumber.removeAttribute('aria-invalid');
+    app.drawing.options.minAngle = value;
+    $('min-angle-warning').hidden = !(value > 34);
+    changed(commit);
+  }
+  // The slider re-meshes while it moves and records an undo step once it rests (browsers differ
+  // in when they fire 'change' for keyboard input, so a short quiet period also commits).
+  let sliderCommit = null;
+  minAngleRange.addEventListener('input', () => {
+    minAngleNumber.value = minAngleRange.value;
+    setMinAngle(Number(minAngleRange.value), false);
+    clearTimeout(sliderCommit);
+    sliderCommit = setTimeout(() => changed(true), 600);
+  });
+  minAngleRange.addEventListener('change', () => {
+    clearTimeout(sliderCommit);
+    setMinAngle(Number(minAngleRange.value), true);
+  });
+  minAngleNumber.addEventListener('input', () => {
+    const value = readNumber(minAngleNumber);
+    if (value !== null && value >= 0 && value <= 60) minAngleRange.value = String(value);
+    setMinAngle(value, false);
+  });
+  minAngleNumber.addEventListener('change', () => setMinAngle(readNumber(minAngleNumber), true));
+
+  $('max-area').addEventListener('change', () => {
+    const value = readNumber($('max-area'));
+    app.drawing.options.maxArea = value !== null && value > 0 ? value : null;
+    changed(true);
+  });
+  for (const name of ['placement', 'variant', 'encroachment']) {
+    $(name).addEventListener('change', () => {
+      app.drawing.options[name] = $(name).value;
+      changed(true);
+    });
+  }
+  $('max-steiner').addEventListener('change', () => {
+    const value = readNumber($('max-steiner'));
+    app.drawing.options.maxSteiner = value !== null && value >= 0 ? Math.floor(value) : null;
+    changed(true);
+  });
+
+  /** The region seed fields' values: those of a new seed. */
+  function regionSeed() {
+    const attribute = readNumber($('region-attribute')) ?? 0;
+    const maxArea = readNumber($('region-max-area'));
+    return { attribute, maxArea: maxArea !== null && maxArea > 0 ? maxArea : null };
+  }
+  /** Shows the selected region seed's values in the fields (nothing when no seed is selected). */
+  function syncRegion() {
+    const item = editor.selection;
+    if (item?.kind !== Item.REGION) return;
+    const region = app.drawing.regions[item.index];
+    if (!region) return;
+    $('region-attribute').value = String(region.attribute ?? 0);
+    $('region-max-area').value = region.maxArea > 0 ? String(region.maxArea) : '';
+  }
+  for (const id of ['region-attribute', 'region-max-area']) {
+    $(id).addEventListener('change', () => {
+      const item = editor.selection;
+      if (item?.kind !== Item.REGION || !app.drawing.regions[item.index]) return;
+      Object.assign(app.drawing.regions[item.index], regionSeed());
+      changed(true);
+    });
+  }
+
+  return { sync, syncRegion, regionSeed };
+}
