@@ -340,7 +340,7 @@ export interface Mesher {
   toEdge(mesh: Mesh): string;
   toPoly(mesh: Mesh, input?: Plc): string;
   toJson(mesh: Mesh, input?: Plc): string;
-  toSVG(mesh: Mesh): string;
+  toSvg(mesh: Mesh): string;
   /** GeoJSON Polygon/MultiPolygon/Feature/FeatureCollection to a PLC; inner rings get hole seeds. */
   parseGeoJson(text: string, name?: string): ParsedPlc;
   /** Gmsh MSH 4.1 ASCII; `input` gives the segment markers that name the lines' physical groups. */
@@ -371,7 +371,7 @@ export declare function toNode(mesh: Mesh): string;
 export declare function toEle(mesh: Mesh): string;
 export declare function toEdge(mesh: Mesh): string;
 export declare function toJson(mesh: Mesh, input?: Plc): string;
-export declare function toSVG(mesh: Mesh): string;
+export declare function toSvg(mesh: Mesh): string;
 export declare function parseGeoJson(text: string, name?: string): ParsedPlc;
 export declare function toMsh(mesh: Mesh, input?: Plc): string;
 export declare function toVtu(mesh: Mesh): string;

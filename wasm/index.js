@@ -98,7 +98,7 @@ export const toEdge = (mesh) => loaded('toEdge').toEdge(mesh);
 /** JSON text of a mesh (the input format plus triangles etc.). */
 export const toJson = (mesh, input) => loaded('toJson').toJson(mesh, input);
 /** SVG text drawing a mesh. */
-export const toSVG = (mesh) => loaded('toSVG').toSVG(mesh);
+export const toSvg = (mesh) => loaded('toSvg').toSvg(mesh);
 /** Reads GeoJSON polygons (Polygon, MultiPolygon, Feature, FeatureCollection) into a PLC with hole seeds. */
 export const parseGeoJson = (text, name) => loaded('parseGeoJson').parseGeoJson(text, name);
 /** Gmsh MSH 4.1 text: triangles, subsegment lines, physical groups from markers and region attributes. */

@@ -311,7 +311,7 @@ export function checkOptions(options) {
   };
 }
 
-/** Light check of a mesh handed back to the writers (toPoly, toSVG, ...). */
+/** Light check of a mesh handed back to the writers (toPoly, toSvg, ...). */
 export function checkMesh(mesh) {
   if (mesh === null || typeof mesh !== 'object') {
     throw invalid(`expected a mesh returned by triangulate(), got ${describe(mesh)}`);

@@ -192,7 +192,7 @@ export function createMesher(compiled, firstModule) {
     toEdge: (mesh) => write(mesh, null, 'edge'),
     toPoly: (mesh, input) => write(mesh, input, 'poly'),
     toJson: (mesh, input) => write(mesh, input, 'json'),
-    toSVG: (mesh) => write(mesh, null, 'svg'),
+    toSvg: (mesh) => write(mesh, null, 'svg'),
     parseGeoJson: (text, name = '<geojson>') => read(text, 'geojson', name, 'parseGeoJson'),
     toMsh: (mesh, input) => write(mesh, input, 'msh'),
     toVtu: (mesh) => write(mesh, null, 'vtu'),
