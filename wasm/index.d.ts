@@ -137,6 +137,9 @@ export interface Voronoi {
   meshEdges: Uint32Array;
 }
 
+// The names in these unions (and in ErrorCode, VertexKind, EventKind and Options' placement,
+// encroachment and variant) are the core's, written once in core/include/ruppert/ruppert.h; TypeScript
+// needs them literally, so tests/package/names.test.mjs fails when one here differs from the binding's.
 export type ReasonKind = 'SMALL_INPUT_ANGLE' | 'SEDITIOUS_EDGE' | 'STEINER_BUDGET' | 'PRECISION_FLOOR' | 'CANCELLED'
   // minAngle above 34 degrees that refinement could not reach: the mesh is the best one reached
   // (stats.reachedAngle): the 33-degree mesh, or better, from raising its bound a degree at a time
