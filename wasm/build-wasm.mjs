@@ -1,10 +1,12 @@
 #!/usr/bin/env node
 // `npm run build:wasm`: configure and build the WebAssembly target with Emscripten into
-// build-wasm/, then copy ruppert.mjs + ruppert.wasm into wasm/dist/ (what the package ships).
+// build-wasm/, then copy ruppert.mjs + ruppert.wasm into wasm/dist/ (what the package ships) and
+// write wasm/dist/names.js: the core's enum names as the binding exports them (describe.cpp), for
+// the package's constants and option checks, which need them before any module is instantiated.
 // Debian's emcc needs NODE_PATH=/usr/share/nodejs to find its JS optimizer's `acorn`.
 import { spawnSync } from 'node:child_process';
-import { copyFileSync, mkdirSync, readFileSync, statSync } from 'node:fs';
-import { fileURLToPath } from 'node:url';
+import { copyFileSync, mkdirSync, readFileSync, statSync, writeFileSync } from 'node:fs';
+import { fileURLToPath, pathToFileURL } from 'node:url';
 import { gzipSync } from 'node:zlib';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
@@ -29,3 +31,24 @@ for (const file of ['ruppert.mjs', 'ruppert.wasm']) {
 const wasm = `${distDir}ruppert.wasm`;
 const gzipped = gzipSync(readFileSync(wasm), { level: 9 }).length;
 console.log(`wasm/dist/ruppert.wasm: ${statSync(wasm).size} bytes, ${gzipped} bytes gzipped`);
+
+// Instantiated here without wasm/loader.js, which imports what this writes.
+const { readDescription } = await import('./describe.js');
+const { default: createRuppertModule } = await import(pathToFileURL(`${distDir}ruppert.mjs`).href);
+const instance = {
+  wasmBinary: readFileSync(wasm),
+  instantiateWasm(imports, receive) {
+    WebAssembly.instantiate(this.wasmBinary, imports).then((r) => receive(r.instance, r.module));
+    return {};
+  },
+  locateFile: (file) => file,
+};
+await createRuppertModule(instance);
+const { names } = readDescription(instance);
+writeFileSync(`${distDir}names.js`, `// Written by wasm/build-wasm.mjs from the binding (wasm/describe.cpp): the names of the core's
+// enums (core/include/ruppert/ruppert.h), each list in its enum's order. Do not edit.
+export const NAMES = Object.freeze({
+${Object.entries(names).map(([key, list]) => `  ${key}: Object.freeze(${JSON.stringify(list)}),`).join('\n')}
+});
+`);
+console.log(`wasm/dist/names.js: ${Object.keys(names).join(', ')}`);

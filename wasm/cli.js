@@ -179,7 +179,7 @@ async function main(argv) {
       } else if (args.format === 'geojson') {
         await write(`${base}.geojson`, mesher.toGeoJson(mesh));
       } else {
-        await write(`${base}.svg`, mesher.toSVG(mesh));
+        await write(`${base}.svg`, mesher.toSvg(mesh));
       }
     }
     if (args.tracePath !== '') await write(args.tracePath, mesh.report.trace);

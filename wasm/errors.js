@@ -1,26 +1,12 @@
 // MeshError: the one error type the package throws for bad input or a failed mesh.
 //
-// `code` is stable and meant for branching. The codes are ruppert::errorCodeName's
-// (core/src/errors.cpp); values of the wrong JavaScript type are MALFORMED_INPUT.
+// `code` is stable and meant for branching. The codes are ruppert::ErrorCode's names
+// (kErrorCodeNames in core/include/ruppert/ruppert.h, as the binding exports them into
+// dist/names.js); values of the wrong JavaScript type are MALFORMED_INPUT.
+import { NAMES } from './dist/names.js';
 
-/** Every code a MeshError can carry: ruppert::ErrorCode's names, in enum order. */
-export const ERROR_CODES = Object.freeze([
-  'EMPTY_INPUT',
-  'NON_FINITE_COORDINATE',
-  'COORDINATE_RANGE',
-  'INDEX_OUT_OF_RANGE',
-  'DEGENERATE_INPUT',
-  'HOLE_ON_SEGMENT',
-  'INVALID_REGION',
-  'INVALID_OPTION',
-  'PARSE_ERROR',
-  'IO_ERROR',
-  'TOO_LARGE',
-  'CANCELLED',
-  'MALFORMED_INPUT',
-  'EMPTY_DOMAIN',
-  'INTERNAL',
-]);
+/** Every code a MeshError can carry: ruppert::ErrorCode's names, in enum order (from the binding). */
+export const ERROR_CODES = NAMES.errorCodes;
 
 export class MeshError extends Error {
   /**

@@ -137,6 +137,9 @@ export interface Voronoi {
   meshEdges: Uint32Array;
 }
 
+// The names in these unions (and in ErrorCode, VertexKind, EventKind and Options' placement,
+// encroachment and variant) are the core's, written once in core/include/ruppert/ruppert.h; TypeScript
+// needs them literally, so tests/package/names.test.mjs fails when one here differs from the binding's.
 export type ReasonKind = 'SMALL_INPUT_ANGLE' | 'SEDITIOUS_EDGE' | 'STEINER_BUDGET' | 'PRECISION_FLOOR' | 'CANCELLED'
   // minAngle above 34 degrees that refinement could not reach: the mesh is the best one reached
   // (stats.reachedAngle): the 33-degree mesh, or better, from raising its bound a degree at a time
@@ -340,7 +343,7 @@ export interface Mesher {
   toEdge(mesh: Mesh): string;
   toPoly(mesh: Mesh, input?: Plc): string;
   toJson(mesh: Mesh, input?: Plc): string;
-  toSVG(mesh: Mesh): string;
+  toSvg(mesh: Mesh): string;
   /** GeoJSON Polygon/MultiPolygon/Feature/FeatureCollection to a PLC; inner rings get hole seeds. */
   parseGeoJson(text: string, name?: string): ParsedPlc;
   /** Gmsh MSH 4.1 ASCII; `input` gives the segment markers that name the lines' physical groups. */
@@ -371,7 +374,7 @@ export declare function toNode(mesh: Mesh): string;
 export declare function toEle(mesh: Mesh): string;
 export declare function toEdge(mesh: Mesh): string;
 export declare function toJson(mesh: Mesh, input?: Plc): string;
-export declare function toSVG(mesh: Mesh): string;
+export declare function toSvg(mesh: Mesh): string;
 export declare function parseGeoJson(text: string, name?: string): ParsedPlc;
 export declare function toMsh(mesh: Mesh, input?: Plc): string;
 export declare function toVtu(mesh: Mesh): string;

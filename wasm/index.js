@@ -6,6 +6,7 @@
 //
 // Results are plain objects of typed arrays owned by JavaScript: nothing to free, nothing that
 // goes stale when the wasm heap grows. See index.d.ts for every field.
+import { NAMES } from './dist/names.js';
 import { MeshError, ERROR_CODES } from './errors.js';
 import { compileWasm, instantiate } from './loader.js';
 import { rejectUnknownKeys } from './known-keys.js';
@@ -14,16 +15,20 @@ import { createMesher } from './mesher.js';
 export { MeshError, ERROR_CODES };
 export { createMeshWorker } from './worker-client.js';
 
-/** VertexKind values in mesh.vertexKinds (ruppert::VertexKind). */
-export const VertexKind = Object.freeze({
-  INPUT: 0, SEGMENT_SPLIT: 1, INTERIOR: 2, OFF_CENTER: 3, INTERSECTION: 4, UNUSED: 5,
-});
-/** EventKind values in mesh.events.kind (ruppert::EventKind). */
-export const EventKind = Object.freeze({
-  SEGMENT_SPLIT: 0, CIRCUMCENTER: 1, OFF_CENTER: 2, REJECTED: 3,
-  // The point placement 'petal' or 'optimal' chose instead of the off-center (never rejected).
-  PETAL_POINT: 4, OPTIMAL_POINT: 5,
-});
+// { NAME: value } of one of the core's enums, from its names in enum order.
+const enumObject = (names) => Object.freeze(Object.fromEntries(names.map((name, value) => [name, value])));
+
+/**
+ * VertexKind values in mesh.vertexKinds (ruppert::VertexKind): INPUT 0, SEGMENT_SPLIT 1, INTERIOR 2,
+ * OFF_CENTER 3, INTERSECTION 4, UNUSED 5.
+ */
+export const VertexKind = enumObject(NAMES.vertexKinds);
+/**
+ * EventKind values in mesh.events.kind (ruppert::EventKind): SEGMENT_SPLIT 0, CIRCUMCENTER 1,
+ * OFF_CENTER 2, REJECTED 3, and the point placement 'petal' or 'optimal' chose instead of the
+ * off-center (never rejected): PETAL_POINT 4, OPTIMAL_POINT 5.
+ */
+export const EventKind = enumObject(NAMES.events);
 /** mesh.neighbors entry for an edge on the domain boundary. */
 export const NO_NEIGHBOR = -1;
 /** mesh.segmentIds entry for a convex-hull edge that no input segment covers. */
@@ -93,7 +98,7 @@ export const toEdge = (mesh) => loaded('toEdge').toEdge(mesh);
 /** JSON text of a mesh (the input format plus triangles etc.). */
 export const toJson = (mesh, input) => loaded('toJson').toJson(mesh, input);
 /** SVG text drawing a mesh. */
-export const toSVG = (mesh) => loaded('toSVG').toSVG(mesh);
+export const toSvg = (mesh) => loaded('toSvg').toSvg(mesh);
 /** Reads GeoJSON polygons (Polygon, MultiPolygon, Feature, FeatureCollection) into a PLC with hole seeds. */
 export const parseGeoJson = (text, name) => loaded('parseGeoJson').parseGeoJson(text, name);
 /** Gmsh MSH 4.1 text: triangles, subsegment lines, physical groups from markers and region attributes. */

@@ -8,7 +8,7 @@ import { MeshError } from './errors.js';
 import { triangulateInHeap } from './heap-call.js';
 import { instantiate, instantiateSync } from './loader.js';
 import { rejectUnknownKeys } from './known-keys.js';
-import { normalizeMesh, normalizeOptions, normalizePlc } from './validate.js';
+import { checkMesh, checkOptions, checkPlc } from './input-checks.js';
 
 function describeReturn(value) {
   if (typeof value === 'string') return JSON.stringify(value);
@@ -79,8 +79,8 @@ export function createMesher(compiled, firstModule) {
   }
 
   function triangulate(plc, options, report = null) {
-    const input = normalizePlc(plc);
-    const opts = normalizeOptions(options);
+    const input = checkPlc(plc);
+    const opts = checkOptions(options);
     // The wrappers never throw into wasm (that would skip the core's destructors): they keep the
     // first error and tell the binding to unwind (NaN / -1), and we rethrow it below.
     let callbackError = null;
@@ -143,9 +143,9 @@ export function createMesher(compiled, firstModule) {
   }
 
   function write(mesh, input, format) {
-    const normalized = normalizeMesh(mesh);
-    const plc = input == null ? null : normalizePlc(input);
-    return check(call('writeMesh', normalized, plc, format)).text;
+    const checked = checkMesh(mesh);
+    const plc = input == null ? null : checkPlc(input);
+    return check(call('writeMesh', checked, plc, format)).text;
   }
 
   // Issue 16, refining a mesh: Triangle's .ele text with { node, poly?, area?, names } texts.
@@ -192,7 +192,7 @@ export function createMesher(compiled, firstModule) {
     toEdge: (mesh) => write(mesh, null, 'edge'),
     toPoly: (mesh, input) => write(mesh, input, 'poly'),
     toJson: (mesh, input) => write(mesh, input, 'json'),
-    toSVG: (mesh) => write(mesh, null, 'svg'),
+    toSvg: (mesh) => write(mesh, null, 'svg'),
     parseGeoJson: (text, name = '<geojson>') => read(text, 'geojson', name, 'parseGeoJson'),
     toMsh: (mesh, input) => write(mesh, input, 'msh'),
     toVtu: (mesh) => write(mesh, null, 'vtu'),

@@ -6,7 +6,7 @@
 import { MeshError, deserializeError } from './errors.js';
 import { absoluteUrl, classicScriptUrl, getNodeHost } from './host.js';
 import { rejectUnknownKeys } from './known-keys.js';
-import { normalizeOptions, normalizePlc } from './validate.js';
+import { checkOptions, checkPlc } from './input-checks.js';
 
 // The bundled default: the literal pattern that vite and webpack turn into a worker entry. Both
 // rewrite only this exact form (`new Worker(new URL('...', import.meta.url), { type: 'module' })`).
@@ -145,8 +145,8 @@ export function createMeshWorker(options = {}) {
     triangulate(plc, options = {}, control = {}) {
       try {
         // Check here so that mistakes surface with a stack trace in the caller's code.
-        normalizePlc(plc);
-        const opts = normalizeOptions(options);
+        checkPlc(plc);
+        const opts = checkOptions(options);
         if (opts.sizeFunction || opts.onProgress) {
           throw new MeshError('INVALID_OPTION',
             'sizeFunction and onProgress cannot be sent to a worker: use maxArea/regions, and control.onProgress');

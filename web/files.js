@@ -31,7 +31,7 @@ export async function exportText(format, mesh, plc) {
   switch (format) {
     case 'poly': return m.toPoly(mesh, plc);
     case 'json': return m.toJson(mesh, plc);
-    case 'svg': return m.toSVG(mesh);
+    case 'svg': return m.toSvg(mesh);
     case 'node': return m.toNode(mesh);
     case 'ele': return m.toEle(mesh);
     case 'msh': return m.toMsh(mesh, plc);

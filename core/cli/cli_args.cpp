@@ -143,6 +143,18 @@ class OptionValue {
     throw UsageError(name() + ": '" + v + "' is not one of " + names);
   }
 
+  // One of the core's enum values, by its name (ruppert.h's tables), listed in the message in this order.
+  template <class T>
+  T named(std::initializer_list<T> values) {
+    const std::string v = text();
+    std::string names;
+    for (T value : values) {
+      if (v == enumName(value)) return value;
+      names += (names.empty() ? "" : ", ") + std::string(enumName(value));
+    }
+    throw UsageError(name() + ": '" + v + "' is not one of " + names);
+  }
+
  private:
   const Arg& arg_;
   const std::vector<std::string>& args_;
@@ -181,16 +193,14 @@ const std::vector<std::pair<std::vector<std::string>, Handler>>& optionTable() {
          out.inputFormat = v.choice<std::string>({{"poly", "poly"}, {"node", "node"}, {"json", "json"}, {"geojson", "geojson"}});
        }},
       {{"--encroachment"}, [](OptionValue& v, CliArgs& out) {
-         out.options.encroachment =
-             v.choice<Encroachment>({{"lens", Encroachment::DiametralLens}, {"disk", Encroachment::DiametralDisk}});
+         out.options.encroachment = v.named({Encroachment::DiametralLens, Encroachment::DiametralDisk});
        }},
       {{"--placement"}, [](OptionValue& v, CliArgs& out) {
-         out.options.placement = v.choice<Placement>({{"offcenter", Placement::OffCenter},
-                                                      {"circumcenter", Placement::Circumcenter},
-                                                      {"petal", Placement::Petal}, {"optimal", Placement::Optimal}});
+         out.options.placement =
+             v.named({Placement::OffCenter, Placement::Circumcenter, Placement::Petal, Placement::Optimal});
        }},
       {{"--variant"}, [](OptionValue& v, CliArgs& out) {
-         out.options.variant = v.choice<Variant>({{"cdt", Variant::Constrained}, {"box", Variant::BoundingBox}});
+         out.options.variant = v.named({Variant::Constrained, Variant::BoundingBox});
        }},
       {{"--trace"}, [](OptionValue& v, CliArgs& out) {
          out.tracePath = v.text();

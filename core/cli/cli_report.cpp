@@ -40,16 +40,19 @@ const char* reasonLabel(ReasonKind kind) {
   return "unknown";
 }
 
-const char* eventName(EventKind kind) {
-  switch (kind) {
-    case EventKind::SegmentSplit: return "segmentSplit";
-    case EventKind::Circumcenter: return "circumcenter";
-    case EventKind::OffCenter: return "offCenter";
-    case EventKind::Rejected: return "rejected";
-    case EventKind::PetalPoint: return "petalPoint";
-    case EventKind::OptimalPoint: return "optimalPoint";
+// The --trace file's kind: the event's name (kEventKindNames) in camelCase, "SEGMENT_SPLIT" -> "segmentSplit".
+std::string eventName(EventKind kind) {
+  std::string out;
+  bool upper = false;
+  for (const char* c = enumName(kind); *c != '\0'; ++c) {
+    if (*c == '_') {
+      upper = true;
+      continue;
+    }
+    out += upper ? *c : static_cast<char>(*c - 'A' + 'a');
+    upper = false;
   }
-  return "unknown";
+  return out;
 }
 
 void summaryTo(TextOut& out, const Mesh& mesh) {

@@ -4,7 +4,7 @@ import { existsSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { test } from 'node:test';
 import { gzipSync } from 'node:zlib';
-import { init, MeshError, ERROR_CODES, VertexKind, parsePoly, toPoly, toSVG } from 'ruppert';
+import { init, MeshError, ERROR_CODES, VertexKind, parsePoly, toPoly, toSvg } from 'ruppert';
 import { validateMesh, triangleArea } from './validate-mesh.mjs';
 
 const dataDir = process.env.RUPPERT_SHARED_DATA;
@@ -164,7 +164,7 @@ test("placement 'optimal' gives valid meshes that meet 38 degrees where off-cent
   assert.ok(optimal > offCenter, `complete at 38 degrees: optimal ${optimal} of 6, off-centers ${offCenter}`);
 });
 
-test('parsePoly / toPoly / toSVG round trip through the C++ readers and writers', async () => {
+test('parsePoly / toPoly / toSvg round trip through the C++ readers and writers', async () => {
   const mesher = await init();
   const text = '# a square\n4 2 0 1\n1 0 0 1\n2 1 0 1\n3 1 1 1\n4 0 1 1\n4 1\n1 1 2 5\n2 2 3 5\n3 3 4 5\n4 4 1 5\n0\n';
   const plc = parsePoly(text);
@@ -176,7 +176,7 @@ test('parsePoly / toPoly / toSVG round trip through the C++ readers and writers'
   const again = parsePoly(poly);
   assert.equal(again.points.length, mesh.points.length);
   assert.equal(again.segments.length, mesh.segments.length);
-  const svg = toSVG(mesh);
+  const svg = toSvg(mesh);
   assert.match(svg, /^<\?xml|^<svg/);
   assert.match(svg, /<\/svg>\s*$/);
   const node = mesher.toNode(mesh);
@@ -363,7 +363,7 @@ test('the heap does not grow over 10,000 calls (successes and every failure path
       case 1: try { mesher.triangulate({ points: [0, 0, 1, 1, 2, 2] }, { minAngle: 0 }); } catch { /* C++ throw */ } return null;
       case 2: try { mesher.parsePoly('3 2 0 0\n1 0 0\n'); } catch { /* parse error */ } return null;
       case 3: try { mesher.triangulate(tiny, { minAngle: 0, sizeFunction: () => { throw new Error('x'); } }); } catch { /* callback */ } return null;
-      default: return mesher.toSVG(mesher.triangulate(tiny, { minAngle: 20, maxArea: 0.05 }));
+      default: return mesher.toSvg(mesher.triangulate(tiny, { minAngle: 20, maxArea: 0.05 }));
     }
   };
   for (let i = 0; i < 200; i++) round(i);

@@ -2,7 +2,7 @@
 // the declarations must accept the documented usage and reject obvious misuse.
 import {
   init, createMeshWorker, MeshError, ERROR_CODES, VertexKind, EventKind, NO_NEIGHBOR,
-  parsePoly, toPoly, toSVG,
+  parsePoly, toPoly, toSvg,
   parseGeoJson, toMsh, toVtu, toGeoJson,
   type Mesh, type Mesher, type Plc, type TriangulateOptions, type ErrorCode, type Progress,
 } from 'ruppert';
@@ -29,7 +29,7 @@ async function example(): Promise<number> {
   const boundary = neighbors.filter((n) => n === NO_NEIGHBOR).length;
   const interior = kinds.filter((k) => k === VertexKind.INTERIOR).length;
   const splits = mesh.events ? mesh.events.kind.filter((k) => k === EventKind.SEGMENT_SPLIT).length : 0;
-  const text: string = toPoly(mesh, plc) + toSVG(mesh) + mesher.toNode(mesh) + mesher.toEle(mesh);
+  const text: string = toPoly(mesh, plc) + toSvg(mesh) + mesher.toNode(mesh) + mesher.toEle(mesh);
   const parsed = parsePoly(text);
   // Formats solvers, viewers and GIS read (issue 16).
   const solverText: string = toMsh(mesh, plc) + toVtu(mesh) + toGeoJson(mesh) + mesher.toMsh(mesh) + mesher.toVtu(mesh);

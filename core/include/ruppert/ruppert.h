@@ -14,6 +14,7 @@
 // Chapter references (Cheng, Dey & Shewchuk, "Delaunay Mesh Generation", ch. 6) are given as §6.x.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <iosfwd>
@@ -31,6 +32,24 @@ inline constexpr std::int32_t kNoNeighbor = -1;      // neighbors[]: edge on the
 inline constexpr std::int32_t kNoInputSegment = -1;  // segmentIds[]: convex-hull edge added by us
 inline constexpr std::uint32_t kNoVertex = 0xFFFFFFFFu;  // Event vertex ids not in the output
 inline constexpr std::uint64_t kAutoSteinerBudget = std::numeric_limits<std::uint64_t>::max();
+
+// ---------------------------------------------------------------------------------------------
+// Names
+// ---------------------------------------------------------------------------------------------
+// Every enum below has its names written once, in a table beside it (k...Names, in the enum's order)
+// and read through enumName(). The CLI prints them, and the WebAssembly binding exports the tables to
+// the npm package (wasm/describe.cpp), whose constants, option checks and index.d.ts use the same
+// names (tests/package/names.test.mjs compares them). A published name never changes; a new
+// enumerator gets a new name at the end of its table.
+namespace detail {
+template <class Enum, std::size_t N>
+constexpr const char* nameIn(const char* const (&names)[N], Enum value, int first = 0) {
+  const int i = static_cast<int>(value) - first;
+  return i >= 0 && i < static_cast<int>(N) ? names[i] : "UNKNOWN";  // never null, even for a bad cast
+}
+template <std::size_t N>
+constexpr std::size_t countOf(const char* const (&)[N]) { return N; }
+}  // namespace detail
 
 // ---------------------------------------------------------------------------------------------
 // Errors
@@ -52,8 +71,15 @@ enum class ErrorCode : int {
   EmptyDomain,             // hole seeds remove everything (a hole's boundary is not closed)
   Internal,                // a bug: please report the input
 };
+// ErrorCode's names, from EmptyInput (1) on.
+inline constexpr const char* kErrorCodeNames[] = {
+    "EMPTY_INPUT", "NON_FINITE_COORDINATE", "COORDINATE_RANGE", "INDEX_OUT_OF_RANGE", "DEGENERATE_INPUT",
+    "HOLE_ON_SEGMENT", "INVALID_REGION", "INVALID_OPTION", "PARSE_ERROR", "IO_ERROR", "TOO_LARGE", "CANCELLED",
+    "MALFORMED_INPUT", "EMPTY_DOMAIN", "INTERNAL"};
+static_assert(detail::countOf(kErrorCodeNames) == static_cast<std::size_t>(ErrorCode::Internal));
+constexpr const char* enumName(ErrorCode code) { return detail::nameIn(kErrorCodeNames, code, 1); }
 
-// Stable upper-case name, e.g. "INDEX_OUT_OF_RANGE"; used as MeshError.code in JavaScript.
+// Stable upper-case name, e.g. "INDEX_OUT_OF_RANGE" (enumName(code)); used as MeshError.code in JavaScript.
 const char* errorCodeName(ErrorCode code);
 
 class Error : public std::runtime_error {
@@ -116,6 +142,10 @@ enum class Placement : std::uint8_t {
                      // locally optimal Steiner point), if that angle meets the bound: for bounds of
                      // 35-40 degrees, which off-centers rarely reach
 };
+// The CLI's --placement and JavaScript's options.placement.
+inline constexpr const char* kPlacementNames[] = {"circumcenter", "offcenter", "petal", "optimal"};
+static_assert(detail::countOf(kPlacementNames) == 1 + static_cast<std::size_t>(Placement::Optimal));
+constexpr const char* enumName(Placement p) { return detail::nameIn(kPlacementNames, p); }
 
 // When a vertex v encroaches a subsegment ab (and so ab is split, or v rejected).
 enum class Encroachment : std::uint8_t {
@@ -124,11 +154,17 @@ enum class Encroachment : std::uint8_t {
                       // (Chew; §6.8). Fewer segment splits: fewer triangles, and refinement completes at
                       // higher angles in practice.
 };
+inline constexpr const char* kEncroachmentNames[] = {"disk", "lens"};  // --encroachment, options.encroachment
+static_assert(detail::countOf(kEncroachmentNames) == 1 + static_cast<std::size_t>(Encroachment::DiametralLens));
+constexpr const char* enumName(Encroachment e) { return detail::nameIn(kEncroachmentNames, e); }
 
 enum class Variant : std::uint8_t {
   Constrained = 0,   // constrained Delaunay refinement (§6.7): no triangles outside the domain
   BoundingBox = 1,   // Ruppert's original: conforming Delaunay mesh of an enclosing box (§6.3, Fig 6.16)
 };
+inline constexpr const char* kVariantNames[] = {"cdt", "box"};  // --variant, options.variant
+static_assert(detail::countOf(kVariantNames) == 1 + static_cast<std::size_t>(Variant::BoundingBox));
+constexpr const char* enumName(Variant v) { return detail::nameIn(kVariantNames, v); }
 
 struct Progress {
   std::uint64_t insertedVertices = 0;
@@ -180,6 +216,11 @@ enum class VertexKind : std::uint8_t {
   Intersection = 4,  // where two input segments cross (repair of the input)
   Unused = 5,        // an input point no triangle uses: a merged duplicate, or outside the domain
 };
+// JavaScript's VertexKind keys.
+inline constexpr const char* kVertexKindNames[] = {"INPUT", "SEGMENT_SPLIT", "INTERIOR", "OFF_CENTER",
+                                                   "INTERSECTION", "UNUSED"};
+static_assert(detail::countOf(kVertexKindNames) == 1 + static_cast<std::size_t>(VertexKind::Unused));
+constexpr const char* enumName(VertexKind k) { return detail::nameIn(kVertexKindNames, k); }
 
 // What the input repair did; the mesh is valid, but the caller should know. The rules:
 //   * Duplicate points are merged; zero-length and duplicate segments are dropped.
@@ -206,6 +247,12 @@ enum class NoticeKind : std::uint8_t {
   RegionOutsideDomain, // a = region index
   NothingEnclosed,     // the segments enclose no region: the convex hull was meshed instead
 };
+// Notice::kind in JavaScript.
+inline constexpr const char* kNoticeKindNames[] = {
+    "DUPLICATE_POINT", "ZERO_LENGTH_SEGMENT", "DUPLICATE_SEGMENT", "VERTEX_ON_SEGMENT", "SEGMENTS_CROSS",
+    "SEGMENTS_OVERLAP", "HOLE_OUTSIDE_DOMAIN", "REGION_OUTSIDE_DOMAIN", "NOTHING_ENCLOSED"};
+static_assert(detail::countOf(kNoticeKindNames) == 1 + static_cast<std::size_t>(NoticeKind::NothingEnclosed));
+constexpr const char* enumName(NoticeKind k) { return detail::nameIn(kNoticeKindNames, k); }
 
 struct Notice {
   NoticeKind kind;
@@ -229,6 +276,12 @@ enum class ReasonKind : std::uint8_t {
                           // the only cure was a vertex on a subsegment that may not be split (count:
                           // those triangles; the message also says how many splits were refused)
 };
+// Reason::kind in JavaScript.
+inline constexpr const char* kReasonKindNames[] = {
+    "SMALL_INPUT_ANGLE", "SEDITIOUS_EDGE", "STEINER_BUDGET", "PRECISION_FLOOR", "CANCELLED", "ANGLE_UNREACHABLE",
+    "SEGMENT_SPLIT_FORBIDDEN"};
+static_assert(detail::countOf(kReasonKindNames) == 1 + static_cast<std::size_t>(ReasonKind::SegmentSplitForbidden));
+constexpr const char* enumName(ReasonKind k) { return detail::nameIn(kReasonKindNames, k); }
 
 struct Reason {
   ReasonKind kind;
@@ -265,6 +318,11 @@ enum class EventKind : std::uint8_t {
   PetalPoint = 4,
   OptimalPoint = 5,
 };
+// JavaScript's EventKind keys; the CLI's --trace file spells them in camelCase ("segmentSplit").
+inline constexpr const char* kEventKindNames[] = {"SEGMENT_SPLIT", "CIRCUMCENTER", "OFF_CENTER", "REJECTED",
+                                                  "PETAL_POINT", "OPTIMAL_POINT"};
+static_assert(detail::countOf(kEventKindNames) == 1 + static_cast<std::size_t>(EventKind::OptimalPoint));
+constexpr const char* enumName(EventKind k) { return detail::nameIn(kEventKindNames, k); }
 
 // Vertex ids are indices into Mesh::points, or kNoVertex for a vertex that is not in the output (in
 // the bounding-box variant, vertices inserted outside the domain are removed with it).

@@ -1,10 +1,13 @@
-// Checks and normalises what users pass to triangulate() before anything crosses into wasm.
+// Checks what users pass to triangulate() and the writers, and converts it into what the binding
+// takes (typed arrays of the exact element type, enums as the core's numbers), before anything
+// crosses into wasm.
 //
 // Why here and not only in C++: embind would silently coerce a string or a sparse array into
 // numbers (NaN, 0), and a fractional index would be truncated into a different, valid-looking
 // vertex. Every message names the item and its value, e.g. "segments[7] = 2.5 is not an integer".
 // Value checks that need geometry (non-finite coordinates, duplicate points, hole placement) stay
 // in the core, which reports them with the same codes.
+import { NAMES } from './dist/names.js';
 import { MeshError } from './errors.js';
 import { nearestKey, rejectUnknownKeys } from './known-keys.js';
 
@@ -132,7 +135,7 @@ function oldMesh(plc, pointCount) {
  * @param {unknown} plc { points, segments?, holes?, regions?, pointMarkers?, segmentMarkers?, indexBase? }
  * @returns the same data as exact typed arrays; regions flattened to x, y, attribute, maxArea.
  */
-export function normalizePlc(plc) {
+export function checkPlc(plc) {
   if (plc === null || typeof plc !== 'object' || Array.isArray(plc) || ArrayBuffer.isView(plc)) {
     throw invalid(`the input must be an object { points, segments, holes, regions }, got ${describe(plc)}`);
   }
@@ -178,14 +181,14 @@ export function normalizePlc(plc) {
   const indexBase = plc.indexBase ?? 0;
   if (indexBase !== 0 && indexBase !== 1) throw invalid(`indexBase = ${describe(indexBase)} must be 0 or 1`);
   const { triangles, triangleMaxArea } = oldMesh(plc, pointCount);
-  const { pointAttributes, attributesPerPoint } = normalizeAttributes(plc, pointCount);
+  const { pointAttributes, attributesPerPoint } = checkAttributes(plc, pointCount);
   return { points, segments, holes, regions, pointMarkers, segmentMarkers, indexBase, triangles, triangleMaxArea,
     pointAttributes, attributesPerPoint };
 }
 
 // pointAttributes: flat, attributesPerPoint values per point; without attributesPerPoint the count is
 // the length divided by the number of points (which must divide it).
-function normalizeAttributes(plc, pointCount) {
+function checkAttributes(plc, pointCount) {
   const pointAttributes = plc.pointAttributes == null ? new Float64Array(0)
     : toFloat64(plc.pointAttributes, 'pointAttributes', { pairs: false });
   let attributesPerPoint = plc.attributesPerPoint;
@@ -206,9 +209,10 @@ function normalizeAttributes(plc, pointCount) {
   return { pointAttributes, attributesPerPoint: pointAttributes.length === 0 ? 0 : attributesPerPoint };
 }
 
-const PLACEMENTS = { circumcenter: 0, offcenter: 1, petal: 2, optimal: 3 };
-const ENCROACHMENTS = { disk: 0, lens: 1 };
-const VARIANTS = { cdt: 0, box: 1 };
+// The core's names of its enums' values (ruppert.h), in enum order: a name's index is its value.
+const PLACEMENTS = NAMES.placements;
+const ENCROACHMENTS = NAMES.encroachments;
+const VARIANTS = NAMES.variants;
 const OPTION_KEYS = ['minAngle', 'maxArea', 'maxSteiner', 'sizeFunction', 'onProgress', 'trace',
   'placement', 'encroachment', 'variant', 'convexHull', 'autoHoles', 'sizeMeasure',
   'order', 'voronoi', 'edges', 'noBoundarySteiner', 'noSegmentSteiner', 'jettison'];
@@ -233,13 +237,12 @@ function booleanOption(options, key) {
   return v;
 }
 
-function enumOption(options, key, table, fallback) {
+function enumOption(options, key, names, fallback) {
   const v = options[key];
-  if (v === undefined) return table[fallback];
-  if (typeof v !== 'string' || !Object.hasOwn(table, v)) {
-    throw badOption(`${key} = ${describe(v)} must be one of ${Object.keys(table).map((k) => `'${k}'`).join(', ')}`);
-  }
-  return table[v];
+  if (v === undefined) return names.indexOf(fallback);
+  const value = typeof v === 'string' ? names.indexOf(v) : -1;
+  if (value < 0) throw badOption(`${key} = ${describe(v)} must be one of ${names.map((k) => `'${k}'`).join(', ')}`);
+  return value;
 }
 
 function functionOption(options, key) {
@@ -260,7 +263,7 @@ function orderOption(options) {
  * @returns { minAngle, maxArea, maxSteiner (-1: automatic), placement, encroachment, variant, convexHull,
  *            autoHoles, trace, sizeFunction?, onProgress? } with enums as the core's integers.
  */
-export function normalizeOptions(options) {
+export function checkOptions(options) {
   if (options === undefined || options === null) options = {};
   if (typeof options !== 'object' || Array.isArray(options)) {
     throw invalid(`options must be an object, got ${describe(options)}`);
@@ -308,8 +311,8 @@ export function normalizeOptions(options) {
   };
 }
 
-/** Light check of a mesh handed back to the writers (toPoly, toSVG, ...). */
-export function normalizeMesh(mesh) {
+/** Light check of a mesh handed back to the writers (toPoly, toSvg, ...). */
+export function checkMesh(mesh) {
   if (mesh === null || typeof mesh !== 'object') {
     throw invalid(`expected a mesh returned by triangulate(), got ${describe(mesh)}`);
   }
@@ -335,7 +338,7 @@ export function normalizeMesh(mesh) {
   const edges = toIndices(mesh.edges ?? [], 'mesh.edges', n, 'point');
   if (edges.length % 2 !== 0) throw invalid(`mesh.edges has odd length ${edges.length}`);
   const edgeMarkers = toMarkers(mesh.edgeMarkers, 'mesh.edgeMarkers');
-  const { pointAttributes, attributesPerPoint } = normalizeAttributes(
+  const { pointAttributes, attributesPerPoint } = checkAttributes(
     { pointAttributes: mesh.pointAttributes, attributesPerPoint: mesh.attributesPerPoint || undefined }, n);
   return { points, triangles, neighbors, segments, segmentIds, vertexKinds, triangleAttributes,
     pointMarkers, indexBase, triangles6, segmentMarkers, edges, edgeMarkers, pointAttributes, attributesPerPoint };

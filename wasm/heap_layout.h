@@ -1,0 +1,64 @@
+// The layout of the tables through which triangulate() passes its input and mesh
+// (heap_triangulate.cpp), written once: the binding exports these lists (describe.cpp) and
+// wasm/heap-call.js reads the tables by them, so neither side copies an offset or a count.
+//
+// A table is a run of doubles. A field "name:type" is an array: its address (in the input tables),
+// or its (address, length) pair (in the output tables), with the element type f64, u32, i32 or u8. A
+// field "name" without a type is one number. "stats.vertices" goes to mesh.stats.vertices.
+#pragma once
+
+#include <cstddef>
+
+namespace ruppert_wasm {
+
+// rp_stage_input's arrays (it takes their lengths in this order), then the options (optionsFromTable).
+inline constexpr const char* kInputFields[] = {
+    "points:f64", "segments:u32", "holes:f64", "regions:f64", "pointMarkers:i32", "segmentMarkers:i32",
+    "pointAttributes:f64",
+    "minAngle", "maxArea", "maxSteiner", "placement", "encroachment", "variant", "convexHull", "autoHoles",
+    "trace", "sizeMeasure", "edges", "noBoundarySteiner", "noSegmentSteiner", "jettison"};
+
+// writeOutputTable()'s order. Reasons and notices come as numbers per item (the kind's number first)
+// and a UTF-8 text of "message\0" per item.
+inline constexpr const char* kOutputFields[] = {
+    "points:f64", "triangles:u32", "neighbors:i32", "segments:u32", "segmentIds:i32", "vertexKinds:u8",
+    "triangleAttributes:f64", "pointMarkers:i32", "reasonNumbers:f64", "reasonText:u8", "noticeNumbers:f64",
+    "noticeText:u8", "segmentMarkers:i32", "edges:u32", "edgeMarkers:i32", "pointAttributes:f64",
+    "inputToOutput:i32", "indexBase", "complete", "reasonCount", "noticeCount", "eventCount",
+    "stats.vertices", "stats.triangles", "stats.minAngle", "stats.maxAngle", "stats.angleHistogram:f64",
+    "stats.inputVertices", "stats.segmentVertices", "stats.interiorVertices", "stats.offCenterVertices",
+    "stats.intersectionVertices", "stats.rejectedCircumcenters", "stats.lfsIntegral",
+    "stats.trianglesPerLfsIntegral", "stats.milliseconds", "stats.reachedAngle", "attributesPerPoint"};
+
+// Issue 16, derived: rp_stage_derived's table (the old mesh to refine, then order and voronoi) and
+// rp_derived_table's.
+inline constexpr const char* kDerivedInputFields[] = {"triangles:u32", "triangleMaxArea:f64", "order", "voronoi"};
+inline constexpr const char* kDerivedOutputFields[] = {"triangles6:u32", "voronoi.points:f64", "voronoi.edges:i32",
+                                                       "voronoi.rayDirections:f64", "voronoi.meshEdges:u32"};
+
+template <std::size_t N>
+constexpr std::size_t fieldCount(const char* const (&)[N]) { return N; }
+
+// How many of `fields` are arrays ("name:type").
+template <std::size_t N>
+constexpr std::size_t arrayCount(const char* const (&fields)[N]) {
+  std::size_t arrays = 0;
+  for (const char* field : fields)
+    for (const char* c = field; *c != '\0'; ++c)
+      if (*c == ':') ++arrays;
+  return arrays;
+}
+
+// Doubles in a table where an array takes `slotsPerArray` of them and a number one.
+template <std::size_t N>
+constexpr std::size_t tableSize(const char* const (&fields)[N], std::size_t slotsPerArray) {
+  return N + arrayCount(fields) * (slotsPerArray - 1);
+}
+
+inline constexpr std::size_t kInputArrays = arrayCount(kInputFields);  // they come first
+inline constexpr std::size_t kInputTableSize = tableSize(kInputFields, 1);
+inline constexpr std::size_t kOutputTableSize = tableSize(kOutputFields, 2);
+inline constexpr std::size_t kDerivedInputTableSize = tableSize(kDerivedInputFields, 1);
+inline constexpr std::size_t kDerivedOutputTableSize = tableSize(kDerivedOutputFields, 2);
+
+}  // namespace ruppert_wasm

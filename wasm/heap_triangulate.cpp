@@ -1,0 +1,330 @@
+// triangulate() through the heap (wasm/heap-call.js): the input arrays and the options are written
+// by JavaScript straight into a staged Plc and a table of numbers, and the output arrays (reasons and
+// notices included) are read back from a table of addresses, both laid out as heap_layout.h says. A
+// small mesh otherwise spends most of its call in embind, one JavaScript round trip per object field.
+// Without callbacks the call goes through plain exported functions (rp_*), which cost no more than
+// any wasm call; embind is left for callbacks, failures, traces and the CLI's texts.
+#include <emscripten/bind.h>
+#include <emscripten/emscripten.h>
+
+#include <cmath>
+#include <cstdint>
+#include <new>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "binding_common.h"
+#include "cli_texts.h"
+#include "heap_layout.h"
+#include "js_objects.h"
+#include "ruppert/ruppert.h"
+
+namespace ruppert_wasm {
+namespace {
+
+// The options as heap-call.js writes them after the input arrays' addresses (kInputFields), one
+// double each: reading them as embind properties cost a JavaScript round trip per field and per call.
+ruppert::Options optionsFromTable(const double* v) {
+  ruppert::Options o;
+  o.minAngle = v[0];
+  o.maxArea = v[1];
+  // heap-call.js sends -1 for "automatic"; anything else is a checked non-negative integer.
+  o.maxSteiner = v[2] < 0 ? ruppert::kAutoSteinerBudget : static_cast<std::uint64_t>(v[2]);
+  o.placement = static_cast<ruppert::Placement>(static_cast<int>(v[3]));
+  o.encroachment = static_cast<ruppert::Encroachment>(static_cast<int>(v[4]));
+  o.variant = static_cast<ruppert::Variant>(static_cast<int>(v[5]));
+  o.convexHull = v[6] != 0;
+  o.autoHoles = v[7] != 0;
+  o.trace = v[8] != 0;
+  o.sizeMeasure = v[9] != 0;
+  o.edges = v[10] != 0;
+  o.noBoundarySteiner = v[11] != 0;
+  o.noSegmentSteiner = v[12] != 0;
+  o.jettison = v[13] != 0;
+  return o;
+}
+static_assert(fieldCount(kInputFields) - kInputArrays == 14, "optionsFromTable reads 14 options");
+
+// The JavaScript wrappers never throw: they return NaN (size) or -1 (progress) after storing
+// the user's error, and we unwind with CallbackFailed.
+void addCallbacks(ruppert::Options& o, const val& size, const val& progress) {
+  if (!size.isUndefined() && !size.isNull()) {
+    o.sizeFunction = [size](double x, double y) {
+      const double area = size(x, y).as<double>();
+      if (std::isnan(area)) throw CallbackFailed{};
+      return area;
+    };
+  }
+  if (!progress.isUndefined() && !progress.isNull()) {
+    o.onProgress = [progress](const ruppert::Progress& p) {
+      const int verdict = progress(static_cast<double>(p.insertedVertices),
+                                   static_cast<double>(p.triangles), p.worstAngle)
+                              .as<int>();
+      if (verdict < 0) throw CallbackFailed{};
+      return verdict != 0;
+    };
+  }
+}
+
+// Reasons and notices: numbers per item (the kind's number first; JavaScript names the kinds from
+// the core's tables, which describe.cpp exports) and one UTF-8 text of "message\0" per item. An
+// input with 10^5 duplicate points has 10^5 notices; an object built field by field through embind
+// cost microseconds each.
+void appendMessage(std::string& text, const std::string& message) {
+  const std::size_t start = text.size();
+  text.append(message).push_back('\0');
+  // A message never holds a NUL (the core writes them from numbers and names); were one to, it
+  // would shift every later item, so it is replaced.
+  const std::size_t end = text.size() - 1;  // the message's own terminator
+  for (std::size_t i = text.find('\0', start); i < end; i = text.find('\0', i + 1)) text[i] = ' ';
+}
+
+// numbers: kind, count per reason.
+void reasonsToTable(const std::vector<ruppert::Reason>& list, std::vector<double>& numbers, std::string& text) {
+  numbers.clear(), text.clear();
+  for (const ruppert::Reason& r : list) {
+    numbers.insert(numbers.end(), {static_cast<double>(r.kind), static_cast<double>(r.count)});
+    appendMessage(text, r.message);
+  }
+}
+
+// numbers: kind, a, b, x, y per notice.
+void noticesToTable(const std::vector<ruppert::Notice>& list, std::vector<double>& numbers, std::string& text) {
+  numbers.clear(), text.clear();
+  numbers.reserve(5 * list.size());
+  text.reserve(48 * list.size());  // "points[i] duplicates points[j]; merged"
+  for (const ruppert::Notice& n : list) {
+    numbers.insert(numbers.end(),
+                   {static_cast<double>(n.kind), static_cast<double>(n.a), static_cast<double>(n.b), n.x, n.y});
+    appendMessage(text, n.message);
+  }
+}
+
+// Writes a table field by field: arrays as (address, length), numbers as themselves.
+struct TableWriter {
+  double* t;
+  template <class V>
+  TableWriter& array(const V& v) {
+    *t++ = static_cast<double>(reinterpret_cast<std::uintptr_t>(v.data()));
+    *t++ = static_cast<double>(v.size());
+    return *this;
+  }
+  TableWriter& number(double v) {
+    *t++ = v;
+    return *this;
+  }
+  // A writer that wrote other than the layout's count of doubles is out of step with heap_layout.h.
+  void end(const double* table, std::size_t size) const {
+    if (t != table + size) throw ruppert::Error(ruppert::ErrorCode::Internal, "heap table out of step with its layout");
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// Issue 16, derived: refining a mesh (Plc::triangles, triangleMaxArea), quadratic nodes (order 2) and
+// the Voronoi dual (voronoi), staged in tables of their own (kDerivedInputFields, kDerivedOutputFields).
+// ---------------------------------------------------------------------------------------------
+struct DerivedStaged {
+  std::vector<std::uint32_t> triangles;
+  std::vector<double> triangleMaxArea;
+  double inputTable[kDerivedInputTableSize] = {};
+  ruppert::Voronoi voronoi;
+  double outputTable[kDerivedOutputTableSize] = {};
+};
+
+DerivedStaged& derivedStaged() {
+  static DerivedStaged d;
+  return d;
+}
+
+// Before triangulate(): the staged old mesh moves into the PLC.
+void takeDerivedInput(ruppert::Plc& plc) {
+  DerivedStaged& d = derivedStaged();
+  plc.triangles = std::move(d.triangles), plc.triangleMaxArea = std::move(d.triangleMaxArea);
+  d.triangles = {}, d.triangleMaxArea = {};
+}
+
+// After triangulate(): midpoint nodes (into mesh.points and pointMarkers, so the main table carries
+// them) and the dual, then the table of the derived arrays.
+void deriveOutputs(ruppert::Mesh& mesh) {
+  DerivedStaged& d = derivedStaged();
+  d.voronoi = d.inputTable[3] != 0 ? ruppert::voronoiDiagram(mesh) : ruppert::Voronoi{};
+  if (d.inputTable[2] == 2) ruppert::addQuadraticNodes(mesh);
+  TableWriter w{d.outputTable};
+  w.array(mesh.triangles6).array(d.voronoi.points).array(d.voronoi.edges).array(d.voronoi.rayDirections);
+  w.array(d.voronoi.meshEdges).end(d.outputTable, kDerivedOutputTableSize);
+}
+
+void releaseDerived() {
+  DerivedStaged& d = derivedStaged();
+  d.triangles = {}, d.triangleMaxArea = {}, d.voronoi = {};
+}
+
+// ---------------------------------------------------------------------------------------------
+// The main tables (kInputFields, kOutputFields)
+// ---------------------------------------------------------------------------------------------
+struct Staged {
+  ruppert::Plc plc;
+  std::vector<double> regions;  // x, y, attribute, maxArea per region
+  double inputTable[kInputTableSize] = {};
+  ruppert::Mesh mesh;
+  std::vector<double> histogram, reasonNumbers, noticeNumbers;
+  std::string reasonText, noticeText;
+  double outputTable[kOutputTableSize] = {};
+  Failure failed;
+};
+
+Staged& staged() {
+  static Staged s;
+  return s;
+}
+
+template <class T>
+double sized(std::vector<T>& v, double length) {
+  v.assign(static_cast<std::size_t>(length), T{});
+  v.shrink_to_fit();  // the previous call's capacity is not kept
+  return static_cast<double>(reinterpret_cast<std::uintptr_t>(v.data()));
+}
+
+// In kOutputFields's order.
+void writeOutputTable(Staged& s) {
+  const ruppert::Mesh& m = s.mesh;
+  const ruppert::Stats& st = m.stats;
+  s.histogram.assign(st.angleHistogram.begin(), st.angleHistogram.end());
+  reasonsToTable(m.reasons, s.reasonNumbers, s.reasonText);
+  noticesToTable(m.notices, s.noticeNumbers, s.noticeText);
+  TableWriter w{s.outputTable};
+  w.array(m.points).array(m.triangles).array(m.neighbors).array(m.segments).array(m.segmentIds);
+  w.array(m.vertexKinds).array(m.triangleAttributes).array(m.pointMarkers);
+  w.array(s.reasonNumbers).array(s.reasonText).array(s.noticeNumbers).array(s.noticeText);
+  // Issue 16: boundary markers, edges, attributes, jettison's numbering.
+  w.array(m.segmentMarkers).array(m.edges).array(m.edgeMarkers).array(m.pointAttributes).array(m.inputToOutput);
+  w.number(m.indexBase).number(m.complete ? 1 : 0).number(double(m.reasons.size()));
+  w.number(double(m.notices.size())).number(double(m.events.size()));
+  w.number(double(st.vertices)).number(double(st.triangles)).number(st.minAngle).number(st.maxAngle);
+  w.array(s.histogram).number(double(st.inputVertices)).number(double(st.segmentVertices));
+  w.number(double(st.interiorVertices)).number(double(st.offCenterVertices)).number(double(st.intersectionVertices));
+  w.number(double(st.rejectedCircumcenters)).number(st.lfsIntegral).number(st.trianglesPerLfsIntegral);
+  w.number(st.milliseconds).number(st.reachedAngle).number(double(m.attributesPerPoint));
+  w.end(s.outputTable, kOutputTableSize);
+}
+
+// Meshes the staged input with the staged options (plus callbacks, if any); true on success, else the
+// failure is in staged().failed.
+bool runStaged(const val* sizeFunction, const val* onProgress) {
+  Staged& s = staged();
+  // Moved out, so that the input is freed however this call ends.
+  ruppert::Plc plc = std::move(s.plc);
+  const std::vector<double> regions = std::move(s.regions);
+  s.plc = ruppert::Plc{}, s.regions = {};
+  return attempt(
+      [&] {
+        for (std::size_t i = 0; i + 3 < regions.size(); i += 4)
+          plc.regions.push_back(ruppert::Region{regions[i], regions[i + 1], regions[i + 2], regions[i + 3]});
+        ruppert::Options options = optionsFromTable(s.inputTable + kInputArrays);
+        if (sizeFunction != nullptr) addCallbacks(options, *sizeFunction, *onProgress);
+        takeDerivedInput(plc);  // issue 16, derived
+        s.mesh = ruppert::triangulate(plc, options);
+        deriveOutputs(s.mesh);  // issue 16, derived
+        writeOutputTable(s);
+      },
+      s.failed);
+}
+
+// Meshes the staged input with callbacks (JavaScript functions, or null). Returns null on success,
+// else a failure object.
+val triangulateStaged(val sizeFunction, val onProgress) {
+  if (runStaged(&sizeFunction, &onProgress)) return val::null();
+  return failureToJs(staged().failed);
+}
+
+// The failure of the last rp_triangulate().
+val stagedFailure() { return failureToJs(staged().failed); }
+
+// The staged mesh's events when traced, and the CLI's texts when `report` is not null (see
+// reportToJs).
+val stagedExtras(val report, bool trace) {
+  return guarded([&] {
+    const ruppert::Mesh& mesh = staged().mesh;
+    val out = val::object();
+    if (trace) out.set("events", eventsToJs(mesh.events));
+    if (!report.isNull() && !report.isUndefined()) out.set("report", reportToJs(mesh, report));
+    return out;
+  });
+}
+
+}  // namespace
+}  // namespace ruppert_wasm
+
+using namespace ruppert_wasm;
+
+// The plain exports of the hot path (Module._rp_*, no embind).
+extern "C" {
+
+// Sizes the staged input arrays (lengths in elements, in kInputFields's order) and returns the address
+// of the input table, where JavaScript writes the arrays' addresses and then the options. 0 if they do
+// not fit in memory.
+EMSCRIPTEN_KEEPALIVE std::uintptr_t rp_stage_input(double points, double segments, double holes, double regions,
+                                                   double pointMarkers, double segmentMarkers, double pointAttributes,
+                                                   int indexBase, int attributesPerPoint) {
+  static_assert(kInputArrays == 7, "rp_stage_input takes one length per input array");
+  Staged& s = staged();
+  try {
+    s.mesh = ruppert::Mesh{};
+    s.inputTable[0] = sized(s.plc.points, points);
+    s.inputTable[1] = sized(s.plc.segments, segments);
+    s.inputTable[2] = sized(s.plc.holes, holes);
+    s.inputTable[3] = sized(s.regions, regions);
+    s.inputTable[4] = sized(s.plc.pointMarkers, pointMarkers);
+    s.inputTable[5] = sized(s.plc.segmentMarkers, segmentMarkers);
+    s.inputTable[6] = sized(s.plc.pointAttributes, pointAttributes);
+    s.plc.indexBase = indexBase;
+    s.plc.attributesPerPoint = static_cast<std::uint32_t>(attributesPerPoint);
+  } catch (const std::bad_alloc&) {
+    s.plc = ruppert::Plc{};
+    s.regions = {};
+    return 0;
+  }
+  return reinterpret_cast<std::uintptr_t>(s.inputTable);
+}
+
+// Meshes the staged input without callbacks: 0 on success (the mesh is then described by the output
+// table), 1 on failure (stagedFailure() says what).
+EMSCRIPTEN_KEEPALIVE int rp_triangulate() { return runStaged(nullptr, nullptr) ? 0 : 1; }
+
+EMSCRIPTEN_KEEPALIVE std::uintptr_t rp_output_table() { return reinterpret_cast<std::uintptr_t>(staged().outputTable); }
+
+// Frees the staged mesh once JavaScript has copied it out.
+EMSCRIPTEN_KEEPALIVE void rp_release_staged() {
+  Staged& s = staged();
+  s.mesh = ruppert::Mesh{};
+  s.histogram = {}, s.reasonNumbers = {}, s.noticeNumbers = {};
+  s.reasonText = {}, s.noticeText = {};
+  s.failed = {};
+  releaseDerived();  // issue 16, derived
+}
+
+// Issue 16, derived: sizes the old mesh's arrays (lengths in elements), sets order and voronoi, and
+// returns the address of the derived input table (kDerivedInputFields). 0 if they do not fit.
+EMSCRIPTEN_KEEPALIVE std::uintptr_t rp_stage_derived(double triangles, double triangleMaxArea, double order, double voronoi) {
+  DerivedStaged& d = derivedStaged();
+  try {
+    d.inputTable[0] = sized(d.triangles, triangles);
+    d.inputTable[1] = sized(d.triangleMaxArea, triangleMaxArea);
+  } catch (const std::bad_alloc&) {
+    releaseDerived();
+    return 0;
+  }
+  d.inputTable[2] = order, d.inputTable[3] = voronoi;
+  return reinterpret_cast<std::uintptr_t>(d.inputTable);
+}
+
+EMSCRIPTEN_KEEPALIVE std::uintptr_t rp_derived_table() { return reinterpret_cast<std::uintptr_t>(derivedStaged().outputTable); }
+
+}  // extern "C"
+
+EMSCRIPTEN_BINDINGS(ruppert_heap) {
+  emscripten::function("triangulateStaged", &triangulateStaged);
+  emscripten::function("stagedFailure", &stagedFailure);
+  emscripten::function("stagedExtras", &stagedExtras);
+}
