@@ -95,3 +95,19 @@ test('placement, encroachment and variant: the core\'s names, accepted by triang
     }
   }
 });
+
+test("the page's words (web/labels.js) are keyed by the core's names", async () => {
+  const web = process.env.RUPPERT_WEB;
+  assert.ok(web, 'RUPPERT_WEB (the repository\'s web/ folder) is set by tests/package/run-installed.mjs');
+  const labels = await import(new URL('labels.js', `file://${web}/`));
+  const names = await bindingNames();
+  const keys = (table) => Object.keys(table);
+  // Every kind of vertex and event is shown, so each needs words, and no others.
+  assert.deepEqual(keys(labels.VERTEX_KIND_LABELS), names.vertexKinds);
+  assert.deepEqual(sorted(keys(labels.EVENT_KIND_LABELS)), sorted(names.events));
+  assert.deepEqual(sorted(keys(labels.PLACEMENT_LABELS)), sorted(names.placements));
+  assert.deepEqual(sorted(keys(labels.VARIANT_LABELS)), sorted(names.variants));
+  assert.deepEqual(sorted(keys(labels.ENCROACHMENT_LABELS)), sorted(names.encroachments));
+  // The page draws only the exemptions among the reasons: those must be reasons.
+  for (const reason of keys(labels.EXEMPTION_LABELS)) assert.ok(names.reasons.includes(reason), reason);
+});

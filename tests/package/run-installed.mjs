@@ -54,6 +54,8 @@ const status = run(process.execPath, ['--test', '--test-concurrency=1', ...tests
     ...process.env,
     RUPPERT_SHARED_DATA: process.env.RUPPERT_SHARED_DATA ?? resolve(root, '../shared/data'),
     RUPPERT_HOSTILE: resolve(root, 'tests/hostile'),
+    // The page's words for the core's names (web/labels.js), checked by names.test.mjs.
+    RUPPERT_WEB: resolve(root, 'web'),
   },
 });
 if (process.env.RUPPERT_KEEP_TMP) console.log(`kept ${work}`);
