@@ -546,9 +546,9 @@ class Refiner {
 
   // A subsegment's split point is rounded, so it lies a hair off the subsegment's line. Bowyer-Watson
   // treats it as on the edge and joins it to the boundary of both sides' cavities; when it falls just
-  // outside one side's triangle, a free edge there can end up not locally Delaunay (found by fuzzing:
-  // two segments meeting at 5e-8 radians, split into pieces a million times longer than that
-  // offset). Lawson flips around the new triangles mend it; flip() keeps both slots, and the two
+  // outside one side's triangle, a free edge there can end up not locally Delaunay (found by fuzzing,
+  // tests/hostile/split-point-off-its-segment-broke-delaunay.poly: two segments meeting at 5e-8
+  // radians, split into pieces a million times longer than that offset). Lawson flips around the new triangles mend it; flip() keeps both slots, and the two
   // triangles of a free edge share their region, so the slots' region data stays right. Slots that
   // changed and are not new are left in flipped_ for re-checking.
   void mendDelaunay() {
@@ -589,7 +589,8 @@ class Refiner {
     double x = pa[0] + f * (pb[0] - pa[0]), y = pa[1] + f * (pb[1] - pa[1]);
     // On a subsegment with no triangle beyond it, a split point rounded to the outside can land in
     // another part of the domain across an exterior sliver thinner than the rounding (found by
-    // fuzzing: two segments 1e-7 rad apart bounding a hole). Move it an ulp at a time onto the
+    // fuzzing, tests/hostile/boundary-split-rounded-across-an-exterior-sliver.poly: two segments
+    // 1e-7 rad apart bounding a hole). Move it an ulp at a time onto the
     // domain's side, the left of a -> b.
     if (t_.twin[h] == kNone) {
       const double towardsX = pa[1] - pb[1], towardsY = pb[0] - pa[0];
@@ -629,7 +630,8 @@ class Refiner {
     // The new vertex's nearest neighbour is on its cavity's boundary: the vertices facing the
     // subsegment (an encroacher 1e-15 above the midpoint, say), or, when two segments meet at a tiny
     // angle, a shell split at the same distance from their common vertex on the other segment, closer
-    // than doubles can keep apart (found by fuzzing). Refuse those, as the length floor does.
+    // than doubles can keep apart (found by fuzzing, tests/hostile/shell-splits-closer-than-doubles-resolve.poly).
+    // Refuse those, as the length floor does.
     t_.cavity(split, loc, splitTris_, splitBoundary_);
     if (mesh_.tooCloseToCavity(split, splitBoundary_)) {
       ++floorHits_;

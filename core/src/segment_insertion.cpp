@@ -199,8 +199,9 @@ class SegmentInserter {
 
   // True if v lies exactly on input segment `id` (not a hull edge). A piece of the segment that
   // starts at a rounded crossing is a hair off the segment's line, so a vertex exactly on the segment
-  // can lie a hair off the piece; it must still split it (found by fuzzing: a subsegment skipped an
-  // input vertex in the middle of its segment, and a later split left that stretch uncovered).
+  // can lie a hair off the piece; it must still split it (found by fuzzing,
+  // tests/hostile/subsegment-skipped-a-vertex-on-its-segment.poly: a subsegment skipped an input
+  // vertex in the middle of its segment, and a later split left that stretch uncovered).
   bool onInputSegment(std::uint32_t v, std::int32_t id) const {
     if (id < 0) return false;
     const Plc& plc = *m_.plc;
@@ -258,9 +259,11 @@ class SegmentInserter {
     // segment through the same point) is that vertex: a second vertex 1e-16 away would only leave
     // needle triangles behind. The nearest such vertex is taken, and only if the other segment may
     // pass through it: within its rounding of its line, and ahead along it. A vertex off the other
-    // segment left that segment uncovered (found by fuzzing: four input points within 1e-19 of the
-    // extent, and a crossing moved onto the one off the shorter segment); one behind it turned the
-    // chain back on itself, and the repairs looped (found by a sweep of tiny clusters).
+    // segment left that segment uncovered (found by fuzzing,
+    // tests/hostile/crossing-snapped-to-a-vertex-left-a-segment-uncovered.poly: four input points
+    // within 1e-19 of the extent, and a crossing moved onto the one off the shorter segment); one
+    // behind it turned the chain back on itself, and the repairs looped (found by a sweep of tiny
+    // clusters, tests/hostile/crossing-snapped-behind-its-piece.poly).
     std::uint32_t w = kNone;
     double nearest = kSnap;
     for (std::uint32_t c : {l, r, a, b}) {
