@@ -30,6 +30,8 @@ struct MeshState {
   // Refining a mesh (Plc::triangles): its triangles' domain and area bounds; null otherwise.
   const OldMesh* oldMesh = nullptr;
   std::size_t segmentCount() const { return plc->segments.size() / 2; }
+  // Input segment id's end (0 or 1) as an internal vertex: the representative of its input point.
+  std::uint32_t segmentEnd(std::size_t id, int end) const { return input.representative[plc->segments[2 * id + end]]; }
 
   // Plc::pointAttributes per vertex (attributeCount each; point_attributes.h), or empty.
   std::uint32_t attributeCount = 0;

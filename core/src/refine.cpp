@@ -443,10 +443,8 @@ class Refiner {
     if (m_.kind[u] != VertexKind::SegmentSplit || m_.kind[w] != VertexKind::SegmentSplit) return false;
     const std::int32_t su = m_.onSegment[u], sw = m_.onSegment[w];
     if (su < 0 || sw < 0 || su == sw) return false;
-    const Plc& plc = *m_.plc;
-    const auto& rep = m_.input.representative;
-    const std::uint32_t a0 = rep[plc.segments[2 * su]], a1 = rep[plc.segments[2 * su + 1]];
-    const std::uint32_t b0 = rep[plc.segments[2 * sw]], b1 = rep[plc.segments[2 * sw + 1]];
+    const std::uint32_t a0 = m_.segmentEnd(su, 0), a1 = m_.segmentEnd(su, 1);
+    const std::uint32_t b0 = m_.segmentEnd(sw, 0), b1 = m_.segmentEnd(sw, 1);
     double z[2];
     if (a0 == b0 || a0 == b1) {
       z[0] = t_.xy[2 * a0], z[1] = t_.xy[2 * a0 + 1];
