@@ -471,4 +471,12 @@ void insertSegments(MeshState& m) {
   if (inserter.repairs() > 0) m.tri.legalizeAll();
 }
 
+void constrainBoxSides(MeshState& m) {
+  // The box's sides are boundary edges of the triangulation; they bound what is refined.
+  for (std::uint32_t i = 0; i < 4; ++i) {
+    const std::uint32_t h = m.tri.findEdge(m.boxFirst + i, m.boxFirst + (i + 1) % 4);
+    m.tri.con[h] = kHullEdge;
+  }
+}
+
 }  // namespace ruppert::detail
