@@ -7,6 +7,11 @@
 #include <cstdio>
 #include <string>
 
+#include "cold_code.h"
+
+// Runs once per refinement: compiled for size (cold_code.h).
+RUPPERT_COLD_BEGIN
+
 namespace ruppert::detail {
 
 Refiner::Unmet Refiner::countUnmet() const {
@@ -76,3 +81,5 @@ void Refiner::finish() {
 }
 
 }  // namespace ruppert::detail
+
+RUPPERT_COLD_END
