@@ -6,7 +6,7 @@
 #include <ostream>
 #include <string>
 
-#include "text_out.h"
+#include "io/text_out.h"
 
 namespace ruppert::cli {
 namespace {

@@ -5,11 +5,12 @@
 #include <cmath>
 #include <cstdint>
 
+#include "refine_geometry.h"  // kPi
+
 namespace ruppert::detail {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kBins = 180;
 // q's index: kIndex buckets of width 2 / kIndex over [-1, 1], narrower than the closest two bin
 // edges (sin^2(1 degree) = 3.05e-4 apart, at 0, 90 and 180 degrees), so a bucket holds at most one

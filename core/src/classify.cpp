@@ -6,8 +6,10 @@
 //   autoHoles (no seeds given): nesting depth = number of constrained edges crossed from the exterior
 //             (a 0-1 breadth-first search); odd depth is domain, even depth is a hole;
 //   regions   from each region seed: attribute and max area for every triangle reached.
-// Triangles outside the domain are then deleted and their neighbours' twins cleared, so every
-// boundary edge of what remains is a constrained edge.
+// findDomain reports segments that enclose nothing; the pipeline (triangulate.cpp) then meshes the
+// convex hull instead and asks again. classifyTriangles records the result (MeshState::inDomain,
+// attribute, maxArea); removeOutside deletes the triangles outside the domain and clears their
+// neighbours' twins, so every boundary edge of what remains is a constrained edge.
 #include <algorithm>
 #include <deque>
 #include <string>
@@ -153,41 +155,34 @@ std::int64_t eatHoles(MeshState& m, std::vector<std::uint8_t>& state) {
   return -1;
 }
 
+Domain findDomain(MeshState& m, bool hullStandsIn) {
+  Domain d;
+  d.noticesBefore = m.notices.size();
+  d.outside = outsideTriangles(m);
+  const bool nothingEnclosed = std::find(d.outside.begin(), d.outside.end(), kUnknown) == d.outside.end();
+  // With the hull standing in, the holes apply even if it encloses nothing either (they are then
+  // all reported as outside the domain).
+  d.emptiedBy = nothingEnclosed && !hullStandsIn ? -1 : eatHoles(m, d.outside);
+  d.segmentsEncloseNothing = nothingEnclosed;
+  return d;
+}
+
 namespace {
 
-// Which triangles are outside the domain (state[s] == kOutside): beyond the enclosing segments or
-// in a hole. Segments that enclose nothing (or holes that take all they enclose) mesh the convex
-// hull instead, with a notice; a hole that still takes everything is an error.
-std::vector<std::uint8_t> domainOf(MeshState& m) {
-  const std::size_t noticesBefore = m.notices.size();
-  std::vector<std::uint8_t> state = outsideTriangles(m);
-  const bool nothingEnclosed = std::find(state.begin(), state.end(), kUnknown) == state.end();
-  std::int64_t emptiedBy = nothingEnclosed ? -1 : eatHoles(m, state);
-  if ((nothingEnclosed || emptiedBy >= 0) && !m.plc->segments.empty() && !m.options->convexHull) {
-    // Open polylines only (like Triangle's box.poly), or holes inside them: an empty mesh helps
-    // nobody. Mesh the hull, with the segments inside it, and say so.
-    m.notices.resize(noticesBefore);
-    insertHull(m);
-    Notice n{NoticeKind::NothingEnclosed, -1, -1, 0, 0,
-             "the segments leave no region enclosed; the convex hull of the points was meshed instead"};
-    m.notices.push_back(std::move(n));
-    state = outsideTriangles(m);
-    emptiedBy = eatHoles(m, state);
-  }
-  if (emptiedBy >= 0) {
-    // Two different mistakes, told apart by whether the segments enclose anything at all: a
-    // hole seed inside the only closed boundary (the domain is that boundary's inside, and the
-    // hole takes all of it), or segments that close nothing, so the hull was meshed and the hole
-    // flooded it.
-    const auto& h = m.input.holes;
-    throw Error(ErrorCode::EmptyDomain,
-                "holes[" + std::to_string(emptiedBy) + "] at " + at(m, h[2 * emptiedBy], h[2 * emptiedBy + 1]) +
-                    " removes the whole domain: " +
-                    (nothingEnclosed ? std::string("the segments enclose no region, so the hole's region is the whole convex hull")
-                                     : std::string("it lies in the only region the segments enclose; a hole needs an outer "
-                                                   "boundary around its own")));
-  }
-  return state;
+// A hole took the whole domain: an error. Two different mistakes, told apart by whether the
+// segments enclose anything at all: a hole seed inside the only closed boundary (the domain is that
+// boundary's inside, and the hole takes all of it), or segments that close nothing, so the hull was
+// meshed and the hole flooded it.
+[[noreturn]] void throwEmptyDomain(const MeshState& m, const Domain& d) {
+  const auto& h = m.input.holes;
+  const std::int64_t k = d.emptiedBy;
+  throw Error(ErrorCode::EmptyDomain,
+              "holes[" + std::to_string(k) + "] at " + at(m, h[2 * k], h[2 * k + 1]) +
+                  " removes the whole domain: " +
+                  (d.segmentsEncloseNothing
+                       ? std::string("the segments enclose no region, so the hole's region is the whole convex hull")
+                       : std::string("it lies in the only region the segments enclose; a hole needs an outer "
+                                     "boundary around its own")));
 }
 
 // Region attributes and area bounds (MeshState::attribute, maxArea) for every triangle. Each
@@ -235,20 +230,19 @@ void assignRegions(MeshState& m, const std::vector<std::uint8_t>& state) {
 
 }  // namespace
 
-void classifyTriangles(MeshState& m) {
-  const std::vector<std::uint8_t> state = domainOf(m);
+void classifyTriangles(MeshState& m, const Domain& domain) {
+  if (domain.emptiedBy >= 0) throwEmptyDomain(m, domain);
+  const std::vector<std::uint8_t>& state = domain.outside;
   assignRegions(m, state);
   Triangulation& t = m.tri;
   const std::uint32_t slots = t.slotCount();
   m.inDomain.assign(slots, 0);
   for (std::uint32_t s = 0; s < slots; ++s) m.inDomain[s] = t.alive(s) && state[s] != kOutside;
-  if (m.options->variant == Variant::BoundingBox) {
-    // Ruppert's original algorithm refines the whole box; the domain is cut out at the end.
+  // Bounding-box variant: the triangles outside the domain stay until the end (the pipeline removes
+  // them after refining), without region data.
+  if (m.options->variant == Variant::BoundingBox)
     for (std::uint32_t s = 0; s < slots; ++s)
       if (!m.inDomain[s]) m.maxArea[s] = 0, m.attribute[s] = 0;
-    return;
-  }
-  removeOutside(m);
 }
 
 void removeOutside(MeshState& m) {

@@ -1,4 +1,12 @@
-// Everything the stages (build, constrain, classify, refine, output) share about one meshing run.
+// Everything the stages share about one meshing run. The stages, in triangulate()'s order:
+//   prepare    prepareInput (prepare_input.cpp), in triangulate.cpp
+//   build      buildDelaunay (build_delaunay.cpp), initAttributes (point_attributes.cpp)
+//   constrain  insertHull, insertSegments, constrainBoxSides (segment_insertion.cpp)
+//   classify   findDomain, classifyTriangles, removeOutside (classify.cpp), keepOldMeshDomain
+//              (old_mesh.cpp)
+//   refine     refine (refine.cpp and refine_*.cpp: class Refiner, refiner.h)
+//   output     assembleOutput (assemble_output.cpp)
+// Each field says which stages write it ("w:") and which read it ("r:").
 #pragma once
 
 #include <cstdint>
@@ -13,25 +21,51 @@ namespace ruppert::detail {
 class OldMesh;  // old_mesh.h
 
 struct MeshState {
+  // w: triangulate (before prepare). r: every stage.
   const Plc* plc = nullptr;
   const Options* options = nullptr;
+  // The scaled, merged, ordered input (prepare_input.h). w: prepare. r: every stage (coordinates,
+  // representatives, holes, regions, the unit conversions).
   PreparedInput input;
+  // The triangulation. w: build, constrain, classify (removeOutside), refine. r: every stage.
   Triangulation tri;
-  std::vector<VertexKind> kind;              // per vertex
-  std::vector<std::int32_t> onSegment;       // per vertex: input segment it was inserted on, or -1
-  std::uint32_t inputCount = 0;              // vertices [0, inputCount) are the input points
-  std::uint32_t boxFirst = kNone;            // 4 bounding-box corners start here (kNone: removed)
+  // Per vertex (addVertex appends to both). w: build (input points, box corners), constrain
+  // (intersections), refine (Steiner vertices; Unused when an insertion is refused). r: constrain
+  // (insertHull), refine (acute corners, which vertices may move, seditious edges), output (vertex kinds).
+  std::vector<VertexKind> kind;
+  // Per vertex: the input segment it was inserted on (refine's subsegment splits), or -1.
+  // r: refine (seditious edges).
+  std::vector<std::int32_t> onSegment;
+  // Vertices [0, inputCount) are the distinct input points. w: build. r: constrain, refine, output,
+  // initAttributes, the size measure.
+  std::uint32_t inputCount = 0;
+  // The 4 bounding-box corners start here. w: build. r: constrain (constrainBoxSides), classify
+  // (the exterior is flooded from them).
+  std::uint32_t boxFirst = kNone;
+  // w: prepare, constrain, classify (seeds outside the domain), triangulate (the hull standing in
+  // for segments that enclose nothing, which also drops what the empty domain reported). r: output
+  // (moved into Mesh::notices).
   std::vector<Notice> notices;
-  // Per triangle slot, valid after classification.
+  // Per triangle slot, from classification on: the region attribute and the area bound (scaled;
+  // 0 = none). w: classify, refine (new triangles inherit them). r: refine (area bounds, the
+  // budget), output (triangle attributes).
   std::vector<double> attribute;
-  std::vector<double> maxArea;               // scaled; 0 = none
-  // Bounding-box variant only: triangles outside the domain stay (and are refined) until the end.
-  std::vector<std::uint8_t> inDomain;        // per slot: 1 inside the domain; empty in the CDT variant
+  std::vector<double> maxArea;
+  // Per slot: 1 inside the domain. w: classify (classifyTriangles, keepOldMeshDomain), refine (new
+  // triangles inherit it); removeOutside reads it, deletes the rest and clears it. So it is empty
+  // during refinement in the constrained variant and full in the bounding-box variant, whose
+  // outside stays (and is refined) until the pipeline removes it after refinement; refine tells the
+  // variants apart by it (the domain's boundary, what new triangles inherit).
+  std::vector<std::uint8_t> inDomain;
   // Refining a mesh (Plc::triangles): its triangles' domain and area bounds; null otherwise.
+  // w: triangulate. r: classify (keepOldMeshDomain), refine (area bounds, budget).
   const OldMesh* oldMesh = nullptr;
   std::size_t segmentCount() const { return plc->segments.size() / 2; }
+  // Input segment id's end (0 or 1) as an internal vertex: the representative of its input point.
+  std::uint32_t segmentEnd(std::size_t id, int end) const { return input.representative[plc->segments[2 * id + end]]; }
 
   // Plc::pointAttributes per vertex (attributeCount each; point_attributes.h), or empty.
+  // w: build (initAttributes), constrain and refine (new vertices interpolate). r: output.
   std::uint32_t attributeCount = 0;
   std::vector<double> attributes;
 
@@ -41,7 +75,7 @@ struct MeshState {
     attributes.resize(attributes.size() + attributeCount, 0.0);
     return tri.addVertex(x, y);
   }
-  // Per internal vertex: its index in Mesh::points, or kNone if left out (built by the output stage).
+  // Per internal vertex: its index in Mesh::points, or kNone if left out. w and r: output.
   std::vector<std::uint32_t> outputMap;
 };
 
@@ -49,7 +83,23 @@ struct MeshState {
 void buildDelaunay(MeshState& m);          // box corners + every distinct input point
 void insertHull(MeshState& m);             // convex hull edges as constraints (no segments / convexHull)
 void insertSegments(MeshState& m);         // input segments, repairing crossings and overlaps
-void classifyTriangles(MeshState& m);      // remove exterior and holes; regions' attributes and areas
-void removeOutside(MeshState& m);          // bounding-box variant: drop what lies outside, after refining
+void constrainBoxSides(MeshState& m);      // bounding-box variant: the box's sides bound what is refined
+
+// Which triangles are outside the domain (findDomain), before anything is removed.
+struct Domain {
+  std::vector<std::uint8_t> outside;         // per slot: 1 outside the domain (exterior, holes), else 0
+  bool segmentsEncloseNothing = false;       // no triangle is enclosed, before the holes (once the
+                                             // hull stands in: what the first call found)
+  std::int64_t emptiedBy = -1;               // the hole seed that removed the last triangle, or -1
+  std::size_t noticesBefore = 0;             // MeshState::notices' size when findDomain began
+  // Nothing to mesh: the pipeline then meshes the convex hull instead, where it can.
+  bool empty() const { return segmentsEncloseNothing || emptiedBy >= 0; }
+};
+// Exterior, then holes. `hullStandsIn`: the convex hull was inserted because a first call found
+// the domain empty (the holes then apply even to an empty domain).
+Domain findDomain(MeshState& m, bool hullStandsIn = false);
+void classifyTriangles(MeshState& m, const Domain& domain);  // inDomain; regions' attributes and areas;
+                                                             // throws EmptyDomain if a hole took all
+void removeOutside(MeshState& m);          // drop the triangles outside the domain (and the box corners)
 
 }  // namespace ruppert::detail

@@ -202,6 +202,19 @@ bool OldMesh::overlapsAny(const double* p0, const double* p1, const double* p2) 
   return found;
 }
 
+const Plc& plcToMesh(const Plc& userPlc, const Options& options, Plc& storage) {
+  if (!userPlc.triangles.empty()) {
+    if (options.variant == Variant::BoundingBox)
+      throw Error(ErrorCode::InvalidOption, "refining a mesh (triangles in the input) needs the constrained variant, not 'box'");
+    storage = withOldMeshBoundary(userPlc);
+    return storage;
+  }
+  if (!userPlc.triangleMaxArea.empty())
+    throw Error(ErrorCode::MalformedInput, "triangleMaxArea has " + std::to_string(userPlc.triangleMaxArea.size()) +
+                                               " entries but the input has no triangles");
+  return userPlc;
+}
+
 void keepOldMeshDomain(MeshState& m) {
   Triangulation& t = m.tri;
   m.inDomain.assign(t.slotCount(), 0);

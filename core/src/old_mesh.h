@@ -18,6 +18,11 @@ namespace ruppert::detail {
 // has segment markers. Throws on a malformed triangles / triangleMaxArea array (index, value).
 Plc withOldMeshBoundary(const Plc& plc);
 
+// The PLC triangulate() meshes: `userPlc` itself, or when it has triangles (refining a mesh) its
+// withOldMeshBoundary, kept in `storage`. Throws for what refining a mesh rules out (the box
+// variant) and for area bounds without triangles.
+const Plc& plcToMesh(const Plc& userPlc, const Options& options, Plc& storage);
+
 struct MeshState;
 // Removes the triangles of the constrained triangulation that lie outside every old triangle (the
 // old mesh's holes and concavities, which its boundary edges enclose as segments).

@@ -43,10 +43,11 @@ Location MeshAccess::walk(std::uint32_t s, const double* p, std::uint32_t& block
 }
 
 // A coordinate can fall below the exact predicates' range without any input doing so (found by
-// fuzzing): splits of a hull edge from (0, 0) to (1.5, 3e-39) have y coordinates under 2^-128. And
-// on inputs near the subnormal range, the output's user units cannot hold a new vertex's coordinates
-// (fuzzing again: with coordinates near 1e-312 the mesh returned had clockwise triangles though the
-// internal one was valid). Such a vertex is refused like one under the length floor.
+// fuzzing, tests/hostile/hull-splits-below-the-predicates-range.poly): splits of a hull edge from
+// (0, 0) to (1.5, 3e-39) have y coordinates under 2^-128. And on inputs near the subnormal range,
+// the output's user units cannot hold a new vertex's coordinates (found by fuzzing again,
+// tests/hostile/steiner-vertices-rounded-to-subnormal-user-units.poly: with coordinates near
+// 1e-312 the mesh returned had clockwise triangles though the internal one was valid). Such a vertex is refused like one under the length floor.
 bool MeshAccess::representable(const double* p) const {
   for (int k = 0; k < 2; ++k)
     if (!isSafeCoordinate(p[k]) || (p[k] != 0 && !(std::fabs(input.toUser(p[k])) >= DBL_MIN))) return false;

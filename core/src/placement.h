@@ -11,7 +11,7 @@
 //      returning a point that lies in the skinny triangle's circumcircle (so its insertion destroys
 //      it), in a triangle of the mesh (loc, from MeshAccess::walk), encroaches no subsegment on its
 //      cavity's boundary and is representable, or false to decline (the first choice is inserted);
-//   3. a case in Refiner::improvePlacement (refine.cpp) that calls it.
+//   3. a case in Refiner::improvePlacement (refine_split.cpp) that calls it.
 // Placement::Optimal (optimal_placement.h) is asked before the first choice is checked, and may move
 // a vertex instead, so the refiner calls it from splitTriangle itself.
 #pragma once

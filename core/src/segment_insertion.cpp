@@ -70,10 +70,8 @@ class SegmentInserter {
     }
     if (id < 0) return;  // a hull edge over an input segment: the input segment keeps it
     // Two input segments share this edge: the earlier segment keeps it; report once per pair.
-    const Plc& plc = *m_.plc;
-    const auto& rep = m_.input.representative;
-    const std::uint32_t a0 = rep[plc.segments[2 * old]], b0 = rep[plc.segments[2 * old + 1]];
-    const std::uint32_t a1 = rep[plc.segments[2 * id]], b1 = rep[plc.segments[2 * id + 1]];
+    const std::uint32_t a0 = m_.segmentEnd(old, 0), b0 = m_.segmentEnd(old, 1);
+    const std::uint32_t a1 = m_.segmentEnd(id, 0), b1 = m_.segmentEnd(id, 1);
     const bool same = (a0 == a1 && b0 == b1) || (a0 == b1 && b0 == a1);
     if (same) {
       for (const Notice& n : m_.notices)
@@ -95,11 +93,9 @@ class SegmentInserter {
   std::vector<Shared> shared_;
 
   void reportShared(std::int32_t id, std::int32_t old, std::uint32_t u, std::uint32_t w) {
-    const Plc& plc = *m_.plc;
-    const auto& rep = m_.input.representative;
     const std::int32_t first = std::min(id, old), second = std::max(id, old);
-    const double* s0 = t_.pt(rep[plc.segments[2 * first]]);
-    const double* s1 = t_.pt(rep[plc.segments[2 * first + 1]]);
+    const double* s0 = t_.pt(m_.segmentEnd(first, 0));
+    const double* s1 = t_.pt(m_.segmentEnd(first, 1));
     auto along = [&](std::uint32_t v) { return (t_.xy[2 * v] - s0[0]) * (s1[0] - s0[0]) + (t_.xy[2 * v + 1] - s0[1]) * (s1[1] - s0[1]); };
     if (along(w) < along(u)) std::swap(u, w);
     Shared* entry = nullptr;
@@ -113,8 +109,8 @@ class SegmentInserter {
     }
     if (along(u) < along(entry->lo)) entry->lo = u;
     if (along(w) > along(entry->hi)) entry->hi = w;
-    const double* t0 = t_.pt(rep[plc.segments[2 * second]]);
-    const double* t1 = t_.pt(rep[plc.segments[2 * second + 1]]);
+    const double* t0 = t_.pt(m_.segmentEnd(second, 0));
+    const double* t1 = t_.pt(m_.segmentEnd(second, 1));
     const bool collinear = orient2d(s0, s1, t0) == 0 && orient2d(s0, s1, t1) == 0;
     Notice& n = m_.notices[entry->notice];
     n.x = m_.input.toUser(t_.xy[2 * entry->lo]), n.y = m_.input.toUser(t_.xy[2 * entry->lo + 1]);
@@ -199,13 +195,12 @@ class SegmentInserter {
 
   // True if v lies exactly on input segment `id` (not a hull edge). A piece of the segment that
   // starts at a rounded crossing is a hair off the segment's line, so a vertex exactly on the segment
-  // can lie a hair off the piece; it must still split it (found by fuzzing: a subsegment skipped an
-  // input vertex in the middle of its segment, and a later split left that stretch uncovered).
+  // can lie a hair off the piece; it must still split it (found by fuzzing,
+  // tests/hostile/subsegment-skipped-a-vertex-on-its-segment.poly: a subsegment skipped an input
+  // vertex in the middle of its segment, and a later split left that stretch uncovered).
   bool onInputSegment(std::uint32_t v, std::int32_t id) const {
     if (id < 0) return false;
-    const Plc& plc = *m_.plc;
-    const auto& rep = m_.input.representative;
-    return orient2d(t_.pt(rep[plc.segments[2 * id]]), t_.pt(rep[plc.segments[2 * id + 1]]), t_.pt(v)) == 0;
+    return orient2d(t_.pt(m_.segmentEnd(id, 0)), t_.pt(m_.segmentEnd(id, 1)), t_.pt(v)) == 0;
   }
 
   // True if v's projection onto a -> b falls strictly between a and b: measured along input segment
@@ -219,10 +214,8 @@ class SegmentInserter {
     const double* pv = t_.pt(v);
     double dx = pb[0] - pa[0], dy = pb[1] - pa[1];
     if (id >= 0) {
-      const Plc& plc = *m_.plc;
-      const auto& rep = m_.input.representative;
-      const double* s0 = t_.pt(rep[plc.segments[2 * id]]);
-      const double* s1 = t_.pt(rep[plc.segments[2 * id + 1]]);
+      const double* s0 = t_.pt(m_.segmentEnd(id, 0));
+      const double* s1 = t_.pt(m_.segmentEnd(id, 1));
       const double sx = s1[0] - s0[0], sy = s1[1] - s0[1];
       const double sign = sx * dx + sy * dy < 0 ? -1 : 1;
       dx = sign * sx, dy = sign * sy;
@@ -258,9 +251,11 @@ class SegmentInserter {
     // segment through the same point) is that vertex: a second vertex 1e-16 away would only leave
     // needle triangles behind. The nearest such vertex is taken, and only if the other segment may
     // pass through it: within its rounding of its line, and ahead along it. A vertex off the other
-    // segment left that segment uncovered (found by fuzzing: four input points within 1e-19 of the
-    // extent, and a crossing moved onto the one off the shorter segment); one behind it turned the
-    // chain back on itself, and the repairs looped (found by a sweep of tiny clusters).
+    // segment left that segment uncovered (found by fuzzing,
+    // tests/hostile/crossing-snapped-to-a-vertex-left-a-segment-uncovered.poly: four input points
+    // within 1e-19 of the extent, and a crossing moved onto the one off the shorter segment); one
+    // behind it turned the chain back on itself, and the repairs looped (found by a sweep of tiny
+    // clusters, tests/hostile/crossing-snapped-behind-its-piece.poly).
     std::uint32_t w = kNone;
     double nearest = kSnap;
     for (std::uint32_t c : {l, r, a, b}) {
@@ -327,15 +322,13 @@ class SegmentInserter {
                      std::int32_t other, double shorter, double q[2]) const {
     std::uint32_t p0 = a, p1 = b, q0 = l, q1 = r;
     if (id >= 0 && other >= 0) {
-      const Plc& plc = *m_.plc;
-      const auto& rep = m_.input.representative;
       // Canonical by geometry, not by index: the same crossing gets the same rounding however the
       // input is ordered or numbered.
       auto less = [&](std::uint32_t u, std::uint32_t v) {
         return t_.xy[2 * u] != t_.xy[2 * v] ? t_.xy[2 * u] < t_.xy[2 * v] : t_.xy[2 * u + 1] < t_.xy[2 * v + 1];
       };
-      p0 = rep[plc.segments[2 * id]], p1 = rep[plc.segments[2 * id + 1]];
-      q0 = rep[plc.segments[2 * other]], q1 = rep[plc.segments[2 * other + 1]];
+      p0 = m_.segmentEnd(id, 0), p1 = m_.segmentEnd(id, 1);
+      q0 = m_.segmentEnd(other, 0), q1 = m_.segmentEnd(other, 1);
       if (less(p1, p0)) std::swap(p0, p1);
       if (less(q1, q0)) std::swap(q0, q1);
       if (less(q0, p0) || (q0 == p0 && less(q1, p1))) std::swap(p0, q0), std::swap(p1, q1);
@@ -440,13 +433,12 @@ void insertHull(MeshState& m) {
 void insertSegments(MeshState& m) {
   SegmentInserter inserter(m);
   const Plc& plc = *m.plc;
-  const auto& rep = m.input.representative;
   // Identical segments (after merging duplicate points) are found up front: inserted twice, a
   // crossing of both would be computed twice with different rounding.
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keys;
   keys.reserve(plc.segments.size() / 2);
   for (std::size_t s = 0; s < plc.segments.size() / 2; ++s) {
-    std::uint64_t a = rep[plc.segments[2 * s]], b = rep[plc.segments[2 * s + 1]];
+    std::uint64_t a = m.segmentEnd(s, 0), b = m.segmentEnd(s, 1);
     if (a > b) std::swap(a, b);
     keys.emplace_back(a << 32 | b, static_cast<std::uint32_t>(s));
   }
@@ -457,7 +449,7 @@ void insertSegments(MeshState& m) {
       duplicateOf[keys[k].second] = duplicateOf[keys[k - 1].second] >= 0 ? duplicateOf[keys[k - 1].second]
                                                                           : keys[k - 1].second;
   for (std::size_t s = 0; s < plc.segments.size() / 2; ++s) {
-    const std::uint32_t a = rep[plc.segments[2 * s]], b = rep[plc.segments[2 * s + 1]];
+    const std::uint32_t a = m.segmentEnd(s, 0), b = m.segmentEnd(s, 1);
     const std::int32_t id = static_cast<std::int32_t>(s);
     if (a == b) {
       Notice n{NoticeKind::ZeroLengthSegment, id, -1, 0, 0, ""};
@@ -477,6 +469,14 @@ void insertSegments(MeshState& m) {
   // Crossing repairs free and rebuild constraints; a last Lawson pass over every edge guarantees
   // the result is constrained Delaunay whatever order the repairs happened in.
   if (inserter.repairs() > 0) m.tri.legalizeAll();
+}
+
+void constrainBoxSides(MeshState& m) {
+  // The box's sides are boundary edges of the triangulation; they bound what is refined.
+  for (std::uint32_t i = 0; i < 4; ++i) {
+    const std::uint32_t h = m.tri.findEdge(m.boxFirst + i, m.boxFirst + (i + 1) % 4);
+    m.tri.con[h] = kHullEdge;
+  }
 }
 
 }  // namespace ruppert::detail

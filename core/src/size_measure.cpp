@@ -26,11 +26,10 @@ class FeatureGrid {
  public:
   FeatureGrid(const MeshState& m) : xy_(m.tri.xy) {
     const Plc& plc = *m.plc;
-    const auto& rep = m.input.representative;
     for (std::uint32_t v = 0; v < m.inputCount; ++v) features_.push_back({v, v});
     std::vector<std::uint64_t> seen;
     for (std::size_t s = 0; s < plc.segments.size() / 2; ++s) {
-      std::uint32_t a = rep[plc.segments[2 * s]], b = rep[plc.segments[2 * s + 1]];
+      std::uint32_t a = m.segmentEnd(s, 0), b = m.segmentEnd(s, 1);
       if (a == b) continue;
       if (a > b) std::swap(a, b);
       seen.push_back(std::uint64_t(a) << 32 | b);

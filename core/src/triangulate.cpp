@@ -1,18 +1,19 @@
-// ruppert::triangulate: the pipeline (§6.1's generic Delaunay refinement, constrained as in §6.7).
-//   prepare (validate, scale, merge duplicates) -> Delaunay of the points -> constraints (hull,
-//   segments, with repairs) -> classify (exterior, holes, regions) -> refine (§6.2-6.6, 6.8) -> output.
-#include <algorithm>
+// ruppert::triangulate: the pipeline (§6.1's generic Delaunay refinement, constrained as in §6.7),
+// one call per stage, in order:
+//   prepare (prepare_input.cpp: validate, scale, merge duplicates) -> Delaunay of the points
+//   (build_delaunay.cpp) -> constraints (segment_insertion.cpp: hull, segments, with repairs) ->
+//   classify (classify.cpp: exterior, holes, regions) -> refine (refine.cpp, §6.2-6.6, 6.8) ->
+//   output (assemble_output.cpp).
+// The decisions between stages are made here: the convex hull stands in for segments that enclose
+// nothing, and the variant says when the outside goes (before refining, or after it in the box).
 #include <chrono>
-#include <cmath>
 #include <optional>
-#include <string>
+#include <utility>
 
-#include "boundary_markers.h"
-#include "jettison.h"
+#include "assemble_output.h"
 #include "mesh_state.h"
-#include "point_attributes.h"
-#include "angle_stats.h"
 #include "old_mesh.h"
+#include "point_attributes.h"
 #include "refine.h"
 
 namespace ruppert {
@@ -20,130 +21,21 @@ namespace ruppert {
 namespace detail {
 namespace {
 
-// Mesh::pointAttributes: the input points' own values, the new vertices' interpolated ones.
-void copyAttributes(const MeshState& m, Mesh& mesh) {
-  const Plc& plc = *m.plc;
-  const std::size_t k = m.attributeCount;
-  if (k == 0) return;
-  mesh.attributesPerPoint = m.attributeCount;
-  mesh.pointAttributes.assign(k * (mesh.points.size() / 2), 0.0);
-  std::copy(plc.pointAttributes.begin(), plc.pointAttributes.begin() + k * (plc.points.size() / 2),
-            mesh.pointAttributes.begin());
-  for (std::uint32_t v = m.inputCount; v < m.tri.vertexCount(); ++v) {
-    const std::uint32_t o = m.outputMap[v];
-    if (o == kNone) continue;
-    std::copy_n(m.attributes.begin() + k * v, k, mesh.pointAttributes.begin() + k * o);
-  }
+// Segments that enclose nothing (open polylines only, like Triangle's box.poly), or holes that take
+// all they enclose: an empty mesh helps nobody. Unless the hull is already in (no segments, or
+// Options::convexHull), the convex hull is meshed, with the segments inside it, and a notice says so.
+bool hullCanStandIn(const MeshState& m, const Domain& domain) {
+  return domain.empty() && !m.plc->segments.empty() && !m.options->convexHull;
 }
 
-// Output numbering (MeshState::outputMap): input points keep their indices (internal vertices of
-// input points are numbered in insertion order, see PreparedInput); Steiner vertices that some
-// triangle uses follow in creation order; box corners and Steiner vertices in no triangle (refused
-// insertions, or outside the domain in the bounding-box variant) are left out. Returns the count.
-std::uint32_t numberVertices(MeshState& m) {
-  const Triangulation& t = m.tri;
-  const std::uint32_t inputPoints = static_cast<std::uint32_t>(m.plc->points.size() / 2);
-  m.outputMap.assign(t.vertexCount(), kNone);
-  std::uint32_t outVertices = inputPoints;
-  for (std::uint32_t v = 0; v < t.vertexCount(); ++v) {
-    if (v < m.inputCount) m.outputMap[v] = m.input.inputIndex[v];
-    else if (t.vtri[v] != kNone && m.kind[v] != VertexKind::Unused) m.outputMap[v] = outVertices++;
-  }
-  return outVertices;
-}
-
-// mesh.points and vertexKinds.
-void writeVertices(const MeshState& m, std::uint32_t outVertices, Mesh& mesh) {
-  const Triangulation& t = m.tri;
-  const Plc& plc = *m.plc;
-  const std::uint32_t inputPoints = static_cast<std::uint32_t>(plc.points.size() / 2);
-  auto outIndex = [&](std::uint32_t v) { return m.outputMap[v]; };
-  mesh.points.resize(2 * std::size_t(outVertices));
-  mesh.vertexKinds.resize(outVertices);
-  // Every input point, duplicates included, keeps its coordinates bit-identical; only the lowest index
-  // of a set of identical points is an Input vertex of the mesh (if a triangle still uses it).
-  for (std::uint32_t i = 0; i < inputPoints; ++i) {
-    const std::uint32_t v = m.input.representative[i];
-    mesh.points[2 * std::size_t(i)] = plc.points[2 * std::size_t(i)];
-    mesh.points[2 * std::size_t(i) + 1] = plc.points[2 * std::size_t(i) + 1];
-    const bool used = m.input.inputIndex[v] == i && t.vtri[v] != kNone;
-    mesh.vertexKinds[i] = static_cast<std::uint8_t>(used ? VertexKind::Input : VertexKind::Unused);
-  }
-  for (std::uint32_t v = m.inputCount; v < t.vertexCount(); ++v) {
-    const std::uint32_t o = outIndex(v);
-    if (o == kNone) continue;
-    mesh.points[2 * std::size_t(o)] = m.input.toUser(t.xy[2 * v]);  // a power of two: exact
-    mesh.points[2 * std::size_t(o) + 1] = m.input.toUser(t.xy[2 * v + 1]);
-    mesh.vertexKinds[o] = static_cast<std::uint8_t>(m.kind[v]);
-  }
-
-}
-
-// mesh.triangles, neighbors, segments, segmentIds and triangleAttributes, and the angle statistics.
-void writeTriangles(const MeshState& m, Mesh& mesh) {
-  const Triangulation& t = m.tri;
-  auto outIndex = [&](std::uint32_t v) { return m.outputMap[v]; };
-  std::vector<std::uint32_t> slotToTri(t.slotCount(), kNone);
-  std::uint32_t count = 0;
-  for (std::uint32_t s = 0; s < t.slotCount(); ++s)
-    if (t.alive(s)) slotToTri[s] = count++;
-  mesh.triangles.resize(3 * count);
-  mesh.neighbors.resize(3 * count);
-  mesh.triangleAttributes.resize(count);
-  Stats& st = mesh.stats;
-  AngleStats angles;
-  for (std::uint32_t s = 0; s < t.slotCount(); ++s) {
-    if (!t.alive(s)) continue;
-    const std::uint32_t o = slotToTri[s];
-    for (int i = 0; i < 3; ++i) {
-      mesh.triangles[3 * o + i] = outIndex(t.tv[3 * s + i]);
-      const std::uint32_t g = t.twin[3 * s + i];
-      mesh.neighbors[3 * o + i] = g == kNone ? kNoNeighbor : static_cast<std::int32_t>(slotToTri[g / 3]);
-      const std::uint32_t h = 3 * s + i;
-      if (t.con[h] != kFree && (g == kNone || h < g)) {
-        mesh.segments.push_back(outIndex(t.origin(h)));
-        mesh.segments.push_back(outIndex(t.dest(h)));
-        mesh.segmentIds.push_back(t.con[h] >= 0 ? t.con[h] : kNoInputSegment);
-      }
-    }
-    mesh.triangleAttributes[o] = m.attribute.empty() ? 0.0 : m.attribute[s];
-    angles.add(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2]));
-  }
-  st.angleHistogram = angles.histogram();
-  st.minAngle = angles.minAngle();
-  st.maxAngle = angles.maxAngle();
-  st.triangles = count;
-}
-
-// Stats: the vertices by kind.
-void countVertexKinds(Mesh& mesh) {
-  Stats& st = mesh.stats;
-  for (std::uint8_t k : mesh.vertexKinds) {
-    switch (static_cast<VertexKind>(k)) {
-      case VertexKind::Input: st.inputVertices++; break;
-      case VertexKind::SegmentSplit: st.segmentVertices++; break;
-      case VertexKind::Interior: st.interiorVertices++; break;
-      case VertexKind::OffCenter: st.offCenterVertices++; break;
-      case VertexKind::Intersection: st.intersectionVertices++; break;
-      case VertexKind::Unused: break;
-    }
-  }
-  st.vertices = st.inputVertices + st.segmentVertices + st.interiorVertices + st.offCenterVertices +
-                st.intersectionVertices;
-}
-
-Mesh assemble(MeshState& m) {
-  Mesh mesh;
-  const Plc& plc = *m.plc;
-  const std::uint32_t outVertices = numberVertices(m);
-  writeVertices(m, outVertices, mesh);
-  copyAttributes(m, mesh);
-  writeTriangles(m, mesh);
-  countVertexKinds(mesh);
-  mesh.indexBase = plc.indexBase;
-  mesh.notices = std::move(m.notices);
-  assignMarkers(mesh, plc);
-  return mesh;
+Domain meshHullInstead(MeshState& m, const Domain& first) {
+  m.notices.resize(first.noticesBefore);  // what the empty domain's holes reported no longer holds
+  insertHull(m);
+  m.notices.push_back(Notice{NoticeKind::NothingEnclosed, -1, -1, 0, 0,
+                             "the segments leave no region enclosed; the convex hull of the points was meshed instead"});
+  Domain domain = findDomain(m, /*hullStandsIn=*/true);
+  domain.segmentsEncloseNothing = first.segmentsEncloseNothing;  // for EmptyDomain's message
+  return domain;
 }
 
 }  // namespace
@@ -152,69 +44,38 @@ Mesh assemble(MeshState& m) {
 Mesh triangulate(const Plc& userPlc, const Options& options) {
   using namespace detail;
   const auto start = std::chrono::steady_clock::now();
+  const bool box = options.variant == Variant::BoundingBox;
   // Refining a mesh: its boundary edges join the segments, its triangles bound the domain and areas.
   Plc refining;
-  if (!userPlc.triangles.empty()) {
-    if (options.variant == Variant::BoundingBox)
-      throw Error(ErrorCode::InvalidOption, "refining a mesh (triangles in the input) needs the constrained variant, not 'box'");
-    refining = withOldMeshBoundary(userPlc);
-  } else if (!userPlc.triangleMaxArea.empty()) {
-    throw Error(ErrorCode::MalformedInput, "triangleMaxArea has " + std::to_string(userPlc.triangleMaxArea.size()) +
-                                               " entries but the input has no triangles");
-  }
-  const Plc& plc = userPlc.triangles.empty() ? userPlc : refining;
+  const Plc& plc = plcToMesh(userPlc, options, refining);
   MeshState m;
   m.plc = &plc;
   m.options = &options;
   m.input = prepareInput(plc, options, m.notices);
   std::optional<OldMesh> oldMesh;
   if (!plc.triangles.empty()) m.oldMesh = &oldMesh.emplace(plc, m.input);
+
   buildDelaunay(m);
   initAttributes(m);
+
   if (plc.segments.empty() || options.convexHull) insertHull(m);
   insertSegments(m);
-  if (options.variant == Variant::BoundingBox) {
-    // The box's sides are boundary edges of the triangulation; they bound what is refined.
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      const std::uint32_t h = m.tri.findEdge(m.boxFirst + i, m.boxFirst + (i + 1) % 4);
-      m.tri.con[h] = kHullEdge;
-    }
-  }
-  classifyTriangles(m);
+  if (box) constrainBoxSides(m);
+
+  Domain domain = findDomain(m);
+  if (hullCanStandIn(m, domain)) domain = meshHullInstead(m, domain);
+  classifyTriangles(m, domain);
+  // §6.7: the constrained variant's triangulation holds only the domain from here on; Ruppert's
+  // original (the box) refines the whole box and cuts the domain out at the end.
+  if (!box) removeOutside(m);
   if (m.oldMesh != nullptr) keepOldMeshDomain(m);
+
   RefineOutcome outcome;
   if (refinementRequested(m)) outcome = refine(m);
-  if (!m.inDomain.empty()) removeOutside(m);
+  if (box) removeOutside(m);
   if (options.sizeMeasure) outcome.lfsIntegral = estimateLfsIntegral(m);
-  Mesh mesh = assemble(m);
-  // The chapter's exemptions (§6.6) are reported but do not make the mesh incomplete.
-  mesh.complete = true;
-  for (const Reason& r : outcome.reasons)
-    if (r.kind != ReasonKind::SmallInputAngle && r.kind != ReasonKind::SeditiousEdge) mesh.complete = false;
-  mesh.reasons = std::move(outcome.reasons);
-  mesh.events = std::move(outcome.events);
-  // Events keep vertices that are not in the output (see Event::vertex) as kNoVertex.
-  auto outIndex = [&](std::uint32_t v) { return v < m.outputMap.size() ? m.outputMap[v] : kNone; };
-  for (Event& e : mesh.events) {
-    e.vertex = outIndex(e.vertex), e.a = outIndex(e.a), e.b = outIndex(e.b);
-    e.t0 = outIndex(e.t0), e.t1 = outIndex(e.t1), e.t2 = outIndex(e.t2);
-    if (e.by >= 0) e.by = outIndex(static_cast<std::uint32_t>(e.by)) == kNone ? -1 : outIndex(static_cast<std::uint32_t>(e.by));
-    e.x = m.input.toUser(e.x), e.y = m.input.toUser(e.y), e.cx = m.input.toUser(e.cx), e.cy = m.input.toUser(e.cy);
-  }
-  mesh.stats.rejectedCircumcenters = outcome.rejected;
-  mesh.stats.reachedAngle = outcome.reachedAngle >= 0 ? outcome.reachedAngle : mesh.stats.minAngle;
-  mesh.stats.lfsIntegral = outcome.lfsIntegral;
-  mesh.stats.trianglesPerLfsIntegral = outcome.lfsIntegral > 0 ? mesh.stats.triangles / outcome.lfsIntegral : 0;
-  if (options.jettison) {
-    std::vector<std::uint32_t> mergedInto(plc.points.size() / 2);
-    for (std::size_t i = 0; i < mergedInto.size(); ++i) mergedInto[i] = m.input.inputIndex[m.input.representative[i]];
-    jettisonUnused(mesh, mergedInto);
-  }
-  if (options.edges) {
-    MeshEdges edges = meshEdges(mesh);
-    mesh.edges = std::move(edges.edges);
-    mesh.edgeMarkers = std::move(edges.markers);
-  }
+
+  Mesh mesh = assembleOutput(m, std::move(outcome));
   mesh.stats.milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return mesh;

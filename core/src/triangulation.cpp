@@ -222,7 +222,8 @@ bool Triangulation::fillCavity(std::uint32_t v, const Location& loc, const std::
   }
   // Every vertex of the cavity must be on its boundary, or the fan would drop it. Exactly Delaunay
   // cavities always pass; a rounded split point a hair from a vertex can take in every triangle
-  // around it (found by fuzzing: a shell split 2.6e-8 from an input vertex lost it).
+  // around it (found by fuzzing, tests/hostile/shell-split-a-hair-from-a-vertex-dropped-it.poly: a
+  // shell split 2.6e-8 from an input vertex lost it).
   // (Splitting an edge with no triangle beyond, the boundary is open: the edge's origin ends it.)
   const std::uint32_t edgeOrigin = loc.kind == Location::OnEdge ? origin(loc.edge) : kNone;
   for (std::size_t k = 0; ok && k < tris.size(); ++k)

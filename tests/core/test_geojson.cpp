@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "json_tree.h"
+#include "io/json_tree.h"
 #include "ruppert/ruppert.h"
 #include "validator.h"
 

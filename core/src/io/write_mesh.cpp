@@ -25,6 +25,8 @@ namespace ruppert {
 namespace {
 
 using detail::TextOut;
+using detail::toStream;
+using detail::toText;
 
 // %.17g of a finite value.
 std::string real(double v) {
@@ -153,23 +155,6 @@ void jsonStats(TextOut& out, const Stats& s) {
       << ", \"rejectedCircumcenters\": " << s.rejectedCircumcenters << ", \"lfsIntegral\": " << jsonReal(s.lfsIntegral)
       << ", \"trianglesPerLfsIntegral\": " << jsonReal(s.trianglesPerLfsIntegral)
       << ", \"milliseconds\": " << jsonReal(s.milliseconds) << "}";
-}
-
-// Prints into `out` in pieces as the text is made; throws IoError if the stream fails.
-template <class Print>
-void toStream(std::ostream& out, const char* what, Print&& print) {
-  TextOut text(detail::writeToStream<std::ostream>, &out);
-  print(text);
-  text.flush();
-  out.flush();
-  if (!out) throw Error(ErrorCode::IoError, std::string("writing the ") + what + " output failed");
-}
-
-template <class Print>
-std::string toText(Print&& print) {
-  TextOut text;
-  print(text);
-  return text.take();
 }
 
 

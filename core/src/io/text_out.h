@@ -16,6 +16,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "ruppert/ruppert.h"
+
 namespace ruppert::detail {
 
 class TextOut {
@@ -78,6 +80,25 @@ class TextOut {
 template <class Stream>
 void writeToStream(void* stream, const char* data, std::size_t size) {
   static_cast<Stream*>(stream)->write(data, static_cast<std::streamsize>(size));
+}
+
+// Prints into `out` (a std::ostream) in pieces as `print` makes the text; throws IoError naming
+// `what` if the stream fails. The stream type is a parameter for the reason writeToStream's is.
+template <class Stream, class Print>
+void toStream(Stream& out, const char* what, Print&& print) {
+  TextOut text(writeToStream<Stream>, &out);
+  print(text);
+  text.flush();
+  out.flush();
+  if (!out) throw Error(ErrorCode::IoError, std::string("writing the ") + what + " output failed");
+}
+
+// What `print` makes, as one string.
+template <class Print>
+std::string toText(Print&& print) {
+  TextOut text;
+  print(text);
+  return text.take();
 }
 
 }  // namespace ruppert::detail

@@ -31,6 +31,10 @@ namespace ruppert {
 namespace {
 
 constexpr int kMaxDepth = 256;
+// What JsonReader::integers says of a value it refuses.
+constexpr const char* kNotIndex = "is not an integer index (non-negative)";
+constexpr const char* kTooLargeIndex = "is larger than any point index (2^32 - 1)";
+constexpr const char* kNotMarker = "is not a 32-bit integer marker";
 
 class JsonReader {
  public:
@@ -59,11 +63,11 @@ class JsonReader {
         seen[k] = true;
         switch (k) {
           case 0: numbers(key, depth, plc.points); return;
-          case 1: indices(key, depth, plc.segments); return;
+          case 1: integers(key, depth, plc.segments, kNotIndex, kTooLargeIndex); return;
           case 2: numbers(key, depth, plc.holes); return;
           case 3: regions(key, depth, plc.regions); return;
-          case 4: markers(key, depth, plc.pointMarkers); return;
-          case 5: markers(key, depth, plc.segmentMarkers); return;
+          case 4: integers(key, depth, plc.pointMarkers, kNotMarker); return;
+          case 5: integers(key, depth, plc.segmentMarkers, kNotMarker); return;
           case 6: numbers(key, depth, plc.pointAttributes); return;
           default: attributesPerPoint = count(key); return;
         }
@@ -339,34 +343,25 @@ class JsonReader {
     elements(depth, key, [&](const std::string& path, int) { out.push_back(requireNumber(path)); });
   }
 
-  void indices(const std::string& key, int depth, std::vector<std::uint32_t>& out) {
+  // An array of whole numbers that Int holds: point indices (uint32) and boundary markers (int32,
+  // negative ones too). A fraction or a value below Int's range is "`notInteger`"; one above it is
+  // "`tooLarge`" (IndexOutOfRange), or without that "`notInteger`" too.
+  template <class Int>
+  void integers(const std::string& key, int depth, std::vector<Int>& out, const char* notInteger,
+                const char* tooLarge = nullptr) {
     requireArray(key);
     elements(depth, key, [&](const std::string& path, int) {
       if (!startsNumber()) fail(ErrorCode::MalformedInput, path + " is not a number");
       const char* start = p_;
       std::string text;
       const double v = number(path, text);
-      if (v != std::floor(v) || v < 0) {
-        failAt(start, ErrorCode::MalformedInput, path + " = " + text + " is not an integer index (non-negative)");
+      if (v != std::floor(v) || v < static_cast<double>(std::numeric_limits<Int>::min()))
+        failAt(start, ErrorCode::MalformedInput, path + " = " + text + " " + notInteger);
+      if (v > static_cast<double>(std::numeric_limits<Int>::max())) {
+        if (tooLarge) failAt(start, ErrorCode::IndexOutOfRange, path + " = " + text + " " + tooLarge);
+        failAt(start, ErrorCode::MalformedInput, path + " = " + text + " " + notInteger);
       }
-      if (v > static_cast<double>(std::numeric_limits<std::uint32_t>::max())) {
-        failAt(start, ErrorCode::IndexOutOfRange, path + " = " + text + " is larger than any point index (2^32 - 1)");
-      }
-      out.push_back(static_cast<std::uint32_t>(v));
-    });
-  }
-
-  // Boundary markers: 32-bit integers, negative ones too.
-  void markers(const std::string& key, int depth, std::vector<std::int32_t>& out) {
-    requireArray(key);
-    elements(depth, key, [&](const std::string& path, int) {
-      if (!startsNumber()) fail(ErrorCode::MalformedInput, path + " is not a number");
-      const char* start = p_;
-      std::string text;
-      const double v = number(path, text);
-      if (v != std::floor(v) || v < -2147483648.0 || v > 2147483647.0)
-        failAt(start, ErrorCode::MalformedInput, path + " = " + text + " is not a 32-bit integer marker");
-      out.push_back(static_cast<std::int32_t>(v));
+      out.push_back(static_cast<Int>(v));
     });
   }
 

@@ -18,6 +18,8 @@ namespace ruppert {
 namespace {
 
 using detail::TextOut;
+using detail::toStream;
+using detail::toText;
 
 std::string real(double v) {
   if (!std::isfinite(v)) throw Error(ErrorCode::Internal, "cannot write a non-finite Voronoi coordinate");
@@ -35,21 +37,6 @@ void circumcentre(const double* a, const double* b, const double* c, double* out
   out[1] = a[1] + (bx * c2 - cx * b2) / d;
 }
 
-template <class Print>
-void toStream(std::ostream& out, const char* what, Print&& print) {
-  TextOut text(detail::writeToStream<std::ostream>, &out);
-  print(text);
-  text.flush();
-  out.flush();
-  if (!out) throw Error(ErrorCode::IoError, std::string("writing the ") + what + " output failed");
-}
-
-template <class Print>
-std::string toText(Print&& print) {
-  TextOut text;
-  print(text);
-  return text.take();
-}
 
 void printNode(TextOut& out, const Voronoi& v, const Mesh& mesh) {
   const std::size_t base = mesh.indexBase == 1 ? 1 : 0, n = v.points.size() / 2;

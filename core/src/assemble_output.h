@@ -1,0 +1,14 @@
+// Output assembly (assemble_output.cpp): the pipeline's last stage.
+#pragma once
+
+#include "mesh_state.h"
+#include "refine.h"
+#include "ruppert/ruppert.h"
+
+namespace ruppert::detail {
+
+// The public Mesh of the final state (after removeOutside) and refinement's outcome. Builds
+// m.outputMap and moves m.notices into the mesh. Stats::milliseconds is left to the caller.
+Mesh assembleOutput(MeshState& m, RefineOutcome outcome);
+
+}  // namespace ruppert::detail
