@@ -22,9 +22,7 @@ std::string fixed(double v, int decimals) {
 
 std::string real(double v) {
   if (!std::isfinite(v)) return "null";
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
+  return detail::realText(v);
 }
 
 const char* reasonLabel(ReasonKind kind) {

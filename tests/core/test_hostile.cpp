@@ -182,7 +182,7 @@ TEST_CASE("every file of the hostile catalogue has an expectation", "[hostile]")
   for (const Entry& e : readExpectations()) listed[e.file]++;
   for (const auto& item : fs::directory_iterator(kHostile)) {
     const std::string name = item.path().filename().string();
-    if (name == "expectations.txt") continue;
+    if (name == "expectations.txt" || name == "README.md") continue;  // the catalogue's own files
     INFO(name);
     CHECK(listed[name] == 1);
   }

@@ -23,9 +23,7 @@ using detail::toText;
 
 std::string real(double v) {
   if (!std::isfinite(v)) throw Error(ErrorCode::Internal, "cannot write a non-finite Voronoi coordinate");
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
+  return detail::realText(v);
 }
 
 // Circumcentre of a b c, computed relative to a (the offsets are small where the triangle is).

@@ -15,13 +15,6 @@
 
 namespace ruppert::detail {
 
-// %.17g: 17 significant digits read back bit-exact.
-inline std::string realText(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
 // Throws Internal naming the first non-finite entry: no writer prints "nan".
 inline void requireFiniteValues(const std::vector<double>& values, const char* what) {
   for (std::size_t i = 0; i < values.size(); ++i) {

@@ -29,11 +29,7 @@ using detail::toStream;
 using detail::toText;
 
 // %.17g of a finite value.
-std::string real(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+std::string real(double v) { return detail::realText(v); }
 
 std::string jsonReal(double v) { return std::isfinite(v) ? real(v) : "null"; }
 
