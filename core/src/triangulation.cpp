@@ -92,39 +92,17 @@ std::uint32_t Triangulation::findEdge(std::uint32_t a, std::uint32_t b) const {
 }
 
 std::uint32_t Triangulation::findEdgeFrom(std::uint32_t a, std::uint32_t b) const {
-  const std::uint32_t start = vtri[a];
-  if (start == kNone) return kNone;
-  auto corner = [&](std::uint32_t t) { return tv[3 * t] == a ? 0u : tv[3 * t + 1] == a ? 1u : 2u; };
   // In triangle t with a at corner i: half-edge 3t+(i+2)%3 runs a -> tv[i+1] ("out"),
   // half-edge 3t+(i+1)%3 runs tv[i+2] -> a ("in").
-  auto check = [&](std::uint32_t t) -> std::uint32_t {
-    const std::uint32_t i = corner(t);
+  return aroundVertex(a, [&](std::uint32_t t) -> std::uint32_t {
+    const std::uint32_t i = tv[3 * t] == a ? 0u : tv[3 * t + 1] == a ? 1u : 2u;
     if (tv[3 * t + (i + 1) % 3] == b) return 3 * t + (i + 2) % 3;
     if (tv[3 * t + (i + 2) % 3] == b) {
       const std::uint32_t in = 3 * t + (i + 1) % 3;
       return twin[in] != kNone ? twin[in] : in;
     }
     return kNone;
-  };
-  // Rotate around a across "out" edges; if the mesh boundary stops us, rotate the other way too.
-  std::uint32_t t = start;
-  for (;;) {
-    const std::uint32_t h = check(t);
-    if (h != kNone) return h;
-    const std::uint32_t g = twin[3 * t + (corner(t) + 2) % 3];
-    if (g == kNone) break;
-    t = g / 3;
-    if (t == start) return kNone;
-  }
-  t = start;
-  for (;;) {
-    const std::uint32_t g = twin[3 * t + (corner(t) + 1) % 3];
-    if (g == kNone) return kNone;
-    t = g / 3;
-    if (t == start) return kNone;
-    const std::uint32_t h = check(t);
-    if (h != kNone) return h;
-  }
+  });
 }
 
 //            c                        c
@@ -363,30 +341,13 @@ void Triangulation::flipOppositeNewVertex(std::vector<std::uint32_t>& stack) {
   }
 }
 
-// The triangles around v, in order round the fan (one way from vtri[v], then the other way when
-// the fan is open: v on the boundary).
+// The triangles around v, in order round the fan.
 std::vector<std::uint32_t> Triangulation::trianglesAround(std::uint32_t v) const {
   std::vector<std::uint32_t> around;
-  const std::uint32_t start = vtri[v];
-  auto corner = [&](std::uint32_t s) { return tv[3 * s] == v ? 0u : tv[3 * s + 1] == v ? 1u : 2u; };
-  std::uint32_t s = start;
-  bool closed = false;
-  for (;;) {
-    around.push_back(s);
-    const std::uint32_t g = twin[3 * s + (corner(s) + 2) % 3];
-    if (g == kNone) break;
-    s = g / 3;
-    if (s == start) {
-      closed = true;
-      break;
-    }
-  }
-  for (s = start; !closed;) {
-    const std::uint32_t g = twin[3 * s + (corner(s) + 1) % 3];
-    if (g == kNone) break;
-    s = g / 3;
-    around.push_back(s);
-  }
+  aroundVertex(v, [&around](std::uint32_t t) {
+    around.push_back(t);
+    return kNone;
+  });
   return around;
 }
 

@@ -140,6 +140,31 @@ class Triangulation {
   bool splitEdgeAt(std::uint32_t v, std::uint32_t e, std::vector<std::uint32_t>& stack, std::uint32_t& sideU);
   void flipOppositeNewVertex(std::vector<std::uint32_t>& stack);
   std::vector<std::uint32_t> trianglesAround(std::uint32_t v) const;
+
+  // The one walk around a vertex: visit(t) for each triangle around v in order round the fan (one
+  // way from vtri[v], then the other way when the fan is open: v on the boundary) until it returns
+  // something other than kNone, which is returned (kNone when no call does).
+  template <class Visit>
+  std::uint32_t aroundVertex(std::uint32_t v, Visit&& visit) const {
+    const std::uint32_t start = vtri[v];
+    if (start == kNone) return kNone;
+    auto corner = [&](std::uint32_t t) { return tv[3 * t] == v ? 0u : tv[3 * t + 1] == v ? 1u : 2u; };
+    std::uint32_t t = start;
+    for (;;) {
+      if (const std::uint32_t r = visit(t); r != kNone) return r;
+      const std::uint32_t g = twin[3 * t + (corner(t) + 2) % 3];
+      if (g == kNone) break;
+      t = g / 3;
+      if (t == start) return kNone;  // a closed fan, all seen
+    }
+    for (t = start;;) {
+      const std::uint32_t g = twin[3 * t + (corner(t) + 1) % 3];
+      if (g == kNone) return kNone;
+      t = g / 3;
+      if (t == start) return kNone;
+      if (const std::uint32_t r = visit(t); r != kNone) return r;
+    }
+  }
 };
 
 }  // namespace ruppert::detail
