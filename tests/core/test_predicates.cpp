@@ -387,6 +387,46 @@ TEST_CASE("exact stages match GMP on inputs whose differences are not representa
   CHECK(checked == 24000);
 }
 
+TEST_CASE("incircle on points rounded onto one circle, where the filter fails", "[predicates]") {
+  // Points of stars, gears and arcs: four points on one circle, each rounded to doubles, so the
+  // determinant is tiny but rarely zero. The filter gives up on them and the double-double stage
+  // decides most; every sign must be GMP's. Offsets far from the origin make the differences
+  // inexact (two-component) as well.
+  std::mt19937_64 rng(31415);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int filterFailed = 0, nonzeroAmongThose = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const int k = -30 + static_cast<int>(rng() % 60);
+    const double radius = std::ldexp(0.5 + unit(rng), k);
+    const double offset = (trial % 3 == 0) ? 0.0 : std::ldexp(unit(rng), k + static_cast<int>(rng() % 30));
+    const double cx = offset * (unit(rng) - 0.5), cy = offset * (unit(rng) - 0.5);
+    std::array<double, 4> angles{};
+    for (double& t : angles) t = unit(rng) * 6.283185307179586;
+    std::sort(angles.begin(), angles.end());  // counter-clockwise a, b, c
+    std::array<Point, 4> p{};
+    for (int i = 0; i < 4; ++i) p[i] = {cx + radius * std::cos(angles[i]), cy + radius * std::sin(angles[i])};
+    const Point &a = p[0], &b = p[1], &c = p[2], &d = p[3];
+    if (!allSafe({a, b, c, d})) continue;
+    const int expected = exactIncircleSign(a, b, c, d);
+    REQUIRE(incircleSign(a, b, c, d) == expected);
+    // Whether the filter failed here: the same test as incircle()'s first stage.
+    const double adx = a[0] - d[0], ady = a[1] - d[1], bdx = b[0] - d[0], bdy = b[1] - d[1];
+    const double qdx = c[0] - d[0], qdy = c[1] - d[1];
+    const double al = adx * adx + ady * ady, bl = bdx * bdx + bdy * bdy, cl = qdx * qdx + qdy * qdy;
+    const double det = al * (bdx * qdy - qdx * bdy) + bl * (qdx * ady - adx * qdy) + cl * (adx * bdy - bdx * ady);
+    const double permanent = (std::fabs(bdx * qdy) + std::fabs(qdx * bdy)) * al +
+                             (std::fabs(qdx * ady) + std::fabs(adx * qdy)) * bl +
+                             (std::fabs(adx * bdy) + std::fabs(bdx * ady)) * cl;
+    if (std::fabs(det) <= 0x1p-49 * permanent) {
+      ++filterFailed;
+      if (expected != 0) ++nonzeroAmongThose;
+    }
+  }
+  // The family does reach the later stages, mostly with a nonzero answer.
+  CHECK(filterFailed > 2000);
+  CHECK(nonzeroAmongThose > filterFailed / 2);
+}
+
 TEST_CASE("incircle on axis-aligned rectangles and grids of two by two values", "[predicates]") {
   // The exact stage answers zero at once when the x-coordinates form two equal pairs and the
   // y-coordinates do too. Every arrangement of such points (the four corners in any order, a query
