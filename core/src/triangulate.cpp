@@ -58,8 +58,13 @@ Mesh triangulate(const Plc& userPlc, const Options& options) {
   buildDelaunay(m);
   initAttributes(m);
 
-  if (plc.segments.empty() || options.convexHull) insertHull(m);
+  // The hull goes in after the segments, so that it runs through the crossings they made: a crossing
+  // is rounded, so it can lie a hair outside the input points' hull, and a hull edge put in first
+  // would then cross the pieces that end there, each repair rounding a new crossing outside again
+  // (found by fuzzing: tests/hostile/crossings-rounded-outside-a-hull-inserted-first.poly).
+  if (plc.segments.empty()) insertHull(m);
   insertSegments(m);
+  if (!plc.segments.empty() && options.convexHull) insertHull(m);
   if (box) constrainBoxSides(m);
 
   Domain domain = findDomain(m);

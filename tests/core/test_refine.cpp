@@ -448,6 +448,15 @@ TEST_CASE("a crossing snaps only to a vertex both segments may pass through", "[
     refineAtBudgets("crossing-snapped-to-a-vertex-left-a-segment-uncovered.poly", angle, {0, 1, 2, 100, 3000});
 }
 
+// fuzz_mesh, 2026-12-02: segments 1 and 2 cross within a cluster 1e-10 across, and with the convex
+// hull constrained before the segments the rounded crossings fell a hair outside it; every repair
+// of the hull edge rounded a new crossing outside again, up to INTERNAL "too many crossing
+// repairs". The hull now goes in after the segments, through their crossings.
+TEST_CASE("the convex hull runs through the crossings of the segments inside it", "[refine]") {
+  for (double angle : {0.0, 25.0, 33.0})
+    refineAtBudgets("crossings-rounded-outside-a-hull-inserted-first.poly", angle, {0, 1, 100, 3000});
+}
+
 // A fuzz_mesh finding at 43 degrees (circumcenters, convex hull, automatic holes) on coordinates near
 // 1e-312: the mesh was valid in internal units, but its new vertices lost most of their bits when
 // converted back to subnormal user units, leaving clockwise triangles. Budgets around the first bad
