@@ -324,23 +324,6 @@ bool Triangulation::splitEdgeAt(std::uint32_t v, std::uint32_t e, std::vector<st
   return true;
 }
 
-// Lawson flips of the edges opposite the new vertex only: flip() keeps that vertex at corner 0 of
-// both triangles, so the two new edges opposite it are their edges 0 (legalize() would also test
-// the edges at the vertex, which cannot need it here).
-void Triangulation::flipOppositeNewVertex(std::vector<std::uint32_t>& stack) {
-  while (!stack.empty()) {
-    const std::uint32_t h = stack.back();
-    stack.pop_back();
-    const std::uint32_t g = twin[h];
-    if (g == kNone || con[h] != kFree) continue;
-    const std::uint32_t t = h / 3;
-    if (!(incircle(pt(tv[3 * t]), pt(tv[3 * t + 1]), pt(tv[3 * t + 2]), pt(tv[g])) > 0)) continue;
-    const std::uint32_t u = g / 3;
-    flip(h);
-    stack.push_back(3 * t), stack.push_back(3 * u);
-  }
-}
-
 // The triangles around v, in order round the fan.
 std::vector<std::uint32_t> Triangulation::trianglesAround(std::uint32_t v) const {
   std::vector<std::uint32_t> around;
@@ -365,7 +348,9 @@ bool Triangulation::insertVertexByFlips(std::uint32_t v, const Location& loc, st
   } else {
     return false;
   }
-  flipOppositeNewVertex(stack);
+  // Lawson's flips. The edges at v never need one (each new triangle's circumcircle through v is
+  // empty on v's side), so legalize() flips exactly the edges opposite v, in the same order.
+  legalize(stack);
   if (!newTris && !parents) return true;
   const std::vector<std::uint32_t> around = trianglesAround(v);
   if (newTris) *newTris = around;

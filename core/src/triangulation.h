@@ -138,7 +138,6 @@ class Triangulation {
   // The steps of insertVertexByFlips.
   void splitTriangleAt(std::uint32_t v, std::uint32_t t, std::vector<std::uint32_t>& stack);
   bool splitEdgeAt(std::uint32_t v, std::uint32_t e, std::vector<std::uint32_t>& stack, std::uint32_t& sideU);
-  void flipOppositeNewVertex(std::vector<std::uint32_t>& stack);
   std::vector<std::uint32_t> trianglesAround(std::uint32_t v) const;
 
   // The one walk around a vertex: visit(t) for each triangle around v in order round the fan (one
