@@ -1,6 +1,6 @@
 // What the writers of solver and GIS formats (write_msh.cpp, write_vtu.cpp, write_geojson.cpp)
-// share: %.17g numbers, the refusal of non-finite coordinates, a triangle's smallest angle, and the
-// stream/string plumbing over TextOut (see text_out.h for why not iostreams).
+// share: the refusal of non-finite coordinates, a triangle's smallest angle and its attribute. Their
+// numbers (realText) and stream/string plumbing (toStream, toText) are text_out.h's.
 #pragma once
 
 #include <cmath>
@@ -49,22 +49,6 @@ inline double smallestAngleDegrees(const Mesh& mesh, std::size_t t) {
 // The region attribute of triangle t (0 when the mesh carries none).
 inline double triangleAttribute(const Mesh& mesh, std::size_t t) {
   return t < mesh.triangleAttributes.size() ? mesh.triangleAttributes[t] : 0.0;
-}
-
-template <class Print>
-void printToStream(std::ostream& out, const char* what, Print&& print) {
-  TextOut text(writeToStream<std::ostream>, &out);
-  print(text);
-  text.flush();
-  out.flush();
-  if (!out) throw Error(ErrorCode::IoError, std::string("writing the ") + what + " output failed");
-}
-
-template <class Print>
-std::string printToString(Print&& print) {
-  TextOut text;
-  print(text);
-  return text.take();
 }
 
 }  // namespace ruppert::detail

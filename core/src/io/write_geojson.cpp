@@ -54,11 +54,11 @@ void printGeoJson(TextOut& out, const Mesh& mesh) {
 }  // namespace
 
 void writeGeoJson(std::ostream& out, const Mesh& mesh) {
-  detail::printToStream(out, "GeoJSON", [&](TextOut& t) { printGeoJson(t, mesh); });
+  detail::toStream(out, "GeoJSON", [&](TextOut& t) { printGeoJson(t, mesh); });
 }
 
 std::string toGeoJson(const Mesh& mesh) {
-  return detail::printToString([&](TextOut& t) { printGeoJson(t, mesh); });
+  return detail::toText([&](TextOut& t) { printGeoJson(t, mesh); });
 }
 
 }  // namespace ruppert

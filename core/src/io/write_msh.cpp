@@ -192,11 +192,11 @@ void printMsh(TextOut& out, const Mesh& mesh, const Plc& input) {
 }  // namespace
 
 void writeMsh(std::ostream& out, const Mesh& mesh, const Plc& input) {
-  detail::printToStream(out, ".msh", [&](TextOut& t) { printMsh(t, mesh, input); });
+  detail::toStream(out, ".msh", [&](TextOut& t) { printMsh(t, mesh, input); });
 }
 
 std::string toMsh(const Mesh& mesh, const Plc& input) {
-  return detail::printToString([&](TextOut& t) { printMsh(t, mesh, input); });
+  return detail::toText([&](TextOut& t) { printMsh(t, mesh, input); });
 }
 
 }  // namespace ruppert

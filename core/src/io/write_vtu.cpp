@@ -93,10 +93,10 @@ void printVtu(TextOut& out, const Mesh& mesh) {
 }  // namespace
 
 void writeVtu(std::ostream& out, const Mesh& mesh) {
-  detail::printToStream(out, ".vtu", [&](TextOut& t) { printVtu(t, mesh); });
+  detail::toStream(out, ".vtu", [&](TextOut& t) { printVtu(t, mesh); });
 }
 
-std::string toVtu(const Mesh& mesh) { return detail::printToString([&](TextOut& t) { printVtu(t, mesh); }); }
+std::string toVtu(const Mesh& mesh) { return detail::toText([&](TextOut& t) { printVtu(t, mesh); }); }
 
 }  // namespace ruppert
 RUPPERT_COLD_END
