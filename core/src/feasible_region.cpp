@@ -1,0 +1,98 @@
+#include "feasible_region.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ruppert::detail {
+
+namespace {
+
+constexpr double kMargin = 1e-9;  // relative: half-planes are moved out and disks widened by this
+constexpr int kMaxVertices = 64;  // a convex polygon cut by at most 2 x 65 lines from a square
+
+struct Polygon {
+  double xy[2 * kMaxVertices];
+  int n = 0;
+};
+
+// The part of `in` left of the line through (px, py) with unit direction (dx, dy), or within
+// `slack` of it: one Sutherland-Hodgman step, exact in topology for a convex polygon.
+void clipLeft(const Polygon& in, double px, double py, double dx, double dy, double slack, Polygon& out) {
+  out.n = 0;
+  auto side = [&](const double* a) { return dx * (a[1] - py) - dy * (a[0] - px) + slack; };
+  for (int i = 0; i < in.n && out.n + 2 <= kMaxVertices; ++i) {
+    const double* a = in.xy + 2 * i;
+    const double* b = in.xy + 2 * ((i + 1) % in.n);
+    const double sa = side(a), sb = side(b);
+    if (sa >= 0) out.xy[2 * out.n] = a[0], out.xy[2 * out.n + 1] = a[1], ++out.n;
+    if ((sa >= 0) != (sb >= 0)) {
+      const double t = sa / (sa - sb);
+      out.xy[2 * out.n] = a[0] + t * (b[0] - a[0]), out.xy[2 * out.n + 1] = a[1] + t * (b[1] - a[1]), ++out.n;
+    }
+  }
+}
+
+// Distance from c to the convex counter-clockwise polygon (0 inside).
+double distanceTo(const Polygon& poly, const double* c) {
+  bool inside = true;
+  double best = HUGE_VAL;
+  for (int i = 0; i < poly.n; ++i) {
+    const double* a = poly.xy + 2 * i;
+    const double* b = poly.xy + 2 * ((i + 1) % poly.n);
+    const double ex = b[0] - a[0], ey = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
+    if (ex * cy - ey * cx < 0) inside = false;
+    const double len2 = ex * ex + ey * ey;
+    const double t = len2 > 0 ? std::clamp((ex * cx + ey * cy) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, std::hypot(cx - t * ex, cy - t * ey));
+  }
+  return inside ? 0 : best;
+}
+
+struct Base {
+  const double* u;
+  const double* v;
+};
+
+// The centre and radius of the disk of points left of uv from which uv is seen at theta or more.
+void apexDisk(const Base& b, double cotTheta, double cscTheta, double centre[2], double& radius) {
+  const double ex = b.v[0] - b.u[0], ey = b.v[1] - b.u[1];
+  centre[0] = (b.u[0] + b.v[0]) / 2 - ey * cotTheta / 2;
+  centre[1] = (b.u[1] + b.v[1]) / 2 + ex * cotTheta / 2;
+  radius = std::hypot(ex, ey) * cscTheta / 2;
+}
+
+}  // namespace
+
+bool mayMeetBound(const OptimalPointQuery& query, double theta) {
+  Base bases[65];
+  int count = 0;
+  if (query.petal) bases[count++] = {query.p, query.q};
+  for (std::size_t i = 0; i < query.edgeCount && count < 65; ++i) bases[count++] = {query.edges[i].u, query.edges[i].v};
+  if (count == 0 || count < static_cast<int>(query.edgeCount) + (query.petal ? 1 : 0)) return true;
+  const double c = std::cos(theta), s = std::sin(theta), cotTheta = c / s, cscTheta = 1 / s;
+  // Start from the square around the first base's disk, which holds every feasible point.
+  double centre[2], radius;
+  apexDisk(bases[0], cotTheta, cscTheta, centre, radius);
+  radius *= 1 + kMargin;
+  Polygon a, b;
+  const double corners[8] = {-1, -1, 1, -1, 1, 1, -1, 1};
+  for (int k = 0; k < 4; ++k) a.xy[2 * k] = centre[0] + radius * corners[2 * k], a.xy[2 * k + 1] = centre[1] + radius * corners[2 * k + 1];
+  a.n = 4;
+  for (int i = 0; i < count; ++i) {
+    const double ex = bases[i].v[0] - bases[i].u[0], ey = bases[i].v[1] - bases[i].u[1];
+    const double len = std::hypot(ex, ey);
+    if (!(len > 0)) return false;  // a degenerate edge makes a degenerate triangle
+    const double dx = ex / len, dy = ey / len, slack = kMargin * len;
+    // At u: uv turned counter-clockwise by theta; at v: uv turned clockwise by theta.
+    clipLeft(a, bases[i].u[0], bases[i].u[1], c * dx - s * dy, s * dx + c * dy, slack, b);
+    clipLeft(b, bases[i].v[0], bases[i].v[1], c * dx + s * dy, c * dy - s * dx, slack, a);
+    if (a.n == 0) return false;
+  }
+  for (int i = 0; i < count; ++i) {
+    apexDisk(bases[i], cotTheta, cscTheta, centre, radius);
+    if (distanceTo(a, centre) > radius * (1 + kMargin)) return false;
+  }
+  return true;
+}
+
+}  // namespace ruppert::detail

@@ -1,0 +1,20 @@
+// A quick test of whether a locally optimal Steiner point (optimal_point.h) can meet the bound at
+// all, run before the search, which on most calls ends in a decline.
+//
+// A point x makes triangle (u, v, x) with all angles >= theta only in R_theta(uv): left of the ray
+// from u at theta above uv, left of the ray from v at theta above vu (two half-planes), and in the
+// disk whose arc through u and v sees uv at theta. The point searched for lies in the intersection
+// of these regions over the petal edge and every cavity edge. This test intersects the half-planes
+// exactly (a convex polygon) and asks whether each disk reaches that polygon: a necessary condition
+// only, so a "no" is certain and a "yes" leaves the answer to the search.
+#pragma once
+
+#include "optimal_point.h"
+
+namespace ruppert::detail {
+
+// False when no point gives every triangle of the query all angles >= theta (radians, in (0, pi/3]),
+// with a margin of about 1e-9 relative to the edges' lengths on the side of answering true.
+bool mayMeetBound(const OptimalPointQuery& query, double theta);
+
+}  // namespace ruppert::detail

@@ -1,0 +1,89 @@
+// The screen before the optimal-point search (feasible_region.h): a "no" must be certain, so it is
+// checked against a brute-force grid on many irregular cavities, at several bounds; and it must say
+// "no" often enough to be worth running, on cavities where no point meets the bound.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "feasible_region.h"
+
+namespace {
+
+using ruppert::detail::CavityEdge;
+using ruppert::detail::evaluateSteinerPoint;
+using ruppert::detail::mayMeetBound;
+using ruppert::detail::OptimalPointQuery;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = kPi / 180;
+
+// A star-shaped polygon around (0.5, 0.5) whose first edge is (0,0)-(1,0), with n - 2 more vertices
+// at random radii and angles: the boundary of a cavity, counter-clockwise.
+std::vector<CavityEdge> randomCavity(std::mt19937& rng, int n, double spread) {
+  std::uniform_real_distribution<double> jitter(-1, 1);
+  std::vector<double> xy = {0, 0, 1, 0};
+  for (int k = 1; k <= n - 2; ++k) {
+    const double a = -0.25 * kPi + k * 1.5 * kPi / (n - 1) + 0.2 * jitter(rng) / n;
+    const double radius = 0.75 * (1 + spread * jitter(rng));
+    xy.push_back(0.5 + radius * std::cos(a)), xy.push_back(0.5 + radius * std::sin(a));
+  }
+  std::vector<CavityEdge> edges;
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    edges.push_back({{xy[2 * i], xy[2 * i + 1]}, {xy[2 * j], xy[2 * j + 1]}, false});
+  }
+  return edges;
+}
+
+// Whether some point of a grid over the cavity's box gives every triangle all angles > theta.
+bool gridMeets(const OptimalPointQuery& query, double theta) {
+  for (double x = -1.0; x <= 2.0; x += 0.01)
+    for (double y = -1.0; y <= 2.0; y += 0.01) {
+      const double pt[2] = {x, y};
+      if (evaluateSteinerPoint(query, pt).minAngle > theta) return true;
+    }
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("feasible region: a no is never wrong, and comes on most cavities where the grid finds nothing", "[optimal]") {
+  std::mt19937 rng(20261202);
+  const double p[2] = {0, 0}, q[2] = {1, 0};
+  int grids = 0, screened = 0, infeasible = 0;
+  for (int trial = 0; trial < 240; ++trial) {
+    const auto edges = randomCavity(rng, 4 + trial % 6, 0.15 + 0.1 * (trial % 5));
+    const double theta = (25 + 5 * (trial % 4)) * kDeg;
+    for (bool petal : {true, false}) {
+      OptimalPointQuery query;
+      query.p = p, query.q = q, query.edges = edges.data(), query.edgeCount = edges.size();
+      query.maxApex = kPi, query.petal = petal;
+      const bool may = mayMeetBound(query, theta);
+      const bool meets = gridMeets(query, theta);
+      INFO("trial " << trial << (petal ? " with" : " without") << " the petal at " << theta / kDeg << " degrees");
+      if (meets) CHECK(may);  // the certain part
+      ++grids;
+      if (!meets) ++infeasible;
+      if (!may) ++screened;
+    }
+  }
+  INFO(grids << " cavities, " << infeasible << " with no grid point meeting the bound, " << screened << " screened out");
+  CHECK(infeasible >= 40);               // the sample holds both kinds
+  CHECK(screened >= infeasible * 7 / 10);
+}
+
+TEST_CASE("feasible region: a regular hexagon meets 59 degrees, and a needle's cavity not 30", "[optimal]") {
+  std::vector<CavityEdge> hex;
+  for (int k = 0; k < 6; ++k)
+    hex.push_back({{std::cos(k * kPi / 3), std::sin(k * kPi / 3)}, {std::cos((k + 1) * kPi / 3), std::sin((k + 1) * kPi / 3)}, false});
+  OptimalPointQuery query;
+  query.p = hex[0].u, query.q = hex[0].v, query.edges = hex.data(), query.edgeCount = hex.size(), query.maxApex = kPi;
+  CHECK(mayMeetBound(query, 59.9 * kDeg));
+  // A cavity with an edge a hundred times the petal edge: its triangle with any point near p-q is flat.
+  const std::vector<CavityEdge> needle = {{{0, 0}, {1, 0}, false}, {{1, 0}, {50, 1}, false}, {{50, 1}, {0, 0}, false}};
+  const double p[2] = {0, 0}, q[2] = {1, 0};
+  query.p = p, query.q = q, query.edges = needle.data(), query.edgeCount = needle.size();
+  CHECK_FALSE(mayMeetBound(query, 30 * kDeg));
+}
