@@ -8,7 +8,8 @@ namespace ruppert::detail {
 namespace {
 
 constexpr double kMargin = 1e-9;  // relative: half-planes are moved out and disks widened by this
-constexpr int kMaxVertices = 64;  // a convex polygon cut by at most 2 x 65 lines from a square
+constexpr int kMaxBases = 65;                  // the petal and up to 64 edges (a relocation's star)
+constexpr int kMaxVertices = 4 + 2 * kMaxBases;  // each cut adds at most one vertex to a convex polygon
 
 struct Polygon {
   double xy[2 * kMaxVertices];
@@ -16,11 +17,13 @@ struct Polygon {
 };
 
 // The part of `in` left of the line through (px, py) with unit direction (dx, dy), or within
-// `slack` of it: one Sutherland-Hodgman step, exact in topology for a convex polygon.
-void clipLeft(const Polygon& in, double px, double py, double dx, double dy, double slack, Polygon& out) {
+// `slack` of it: one Sutherland-Hodgman step. False if the result would not fit, which rounding on
+// a nearly degenerate polygon (more than two sign changes around it) could cause.
+bool clipLeft(const Polygon& in, double px, double py, double dx, double dy, double slack, Polygon& out) {
   out.n = 0;
   auto side = [&](const double* a) { return dx * (a[1] - py) - dy * (a[0] - px) + slack; };
-  for (int i = 0; i < in.n && out.n + 2 <= kMaxVertices; ++i) {
+  for (int i = 0; i < in.n; ++i) {
+    if (out.n + 2 > kMaxVertices) return false;
     const double* a = in.xy + 2 * i;
     const double* b = in.xy + 2 * ((i + 1) % in.n);
     const double sa = side(a), sb = side(b);
@@ -30,6 +33,7 @@ void clipLeft(const Polygon& in, double px, double py, double dx, double dy, dou
       out.xy[2 * out.n] = a[0] + t * (b[0] - a[0]), out.xy[2 * out.n + 1] = a[1] + t * (b[1] - a[1]), ++out.n;
     }
   }
+  return true;
 }
 
 // Distance from c to the convex counter-clockwise polygon (0 inside).
@@ -64,11 +68,12 @@ void apexDisk(const Base& b, double cotTheta, double cscTheta, double centre[2],
 }  // namespace
 
 bool mayMeetBound(const OptimalPointQuery& query, double theta) {
-  Base bases[65];
+  Base bases[kMaxBases];
   int count = 0;
   if (query.petal) bases[count++] = {query.p, query.q};
-  for (std::size_t i = 0; i < query.edgeCount && count < 65; ++i) bases[count++] = {query.edges[i].u, query.edges[i].v};
-  if (count == 0 || count < static_cast<int>(query.edgeCount) + (query.petal ? 1 : 0)) return true;
+  if (query.edgeCount + 1 > kMaxBases) return true;  // beyond the cap: leave it to the search
+  for (std::size_t i = 0; i < query.edgeCount; ++i) bases[count++] = {query.edges[i].u, query.edges[i].v};
+  if (count == 0) return true;
   const double c = std::cos(theta), s = std::sin(theta), cotTheta = c / s, cscTheta = 1 / s;
   // Start from the square around the first base's disk, which holds every feasible point.
   double centre[2], radius;
@@ -84,8 +89,9 @@ bool mayMeetBound(const OptimalPointQuery& query, double theta) {
     if (!(len > 0)) return false;  // a degenerate edge makes a degenerate triangle
     const double dx = ex / len, dy = ey / len, slack = kMargin * len;
     // At u: uv turned counter-clockwise by theta; at v: uv turned clockwise by theta.
-    clipLeft(a, bases[i].u[0], bases[i].u[1], c * dx - s * dy, s * dx + c * dy, slack, b);
-    clipLeft(b, bases[i].v[0], bases[i].v[1], c * dx + s * dy, c * dy - s * dx, slack, a);
+    if (!clipLeft(a, bases[i].u[0], bases[i].u[1], c * dx - s * dy, s * dx + c * dy, slack, b) ||
+        !clipLeft(b, bases[i].v[0], bases[i].v[1], c * dx + s * dy, c * dy - s * dx, slack, a))
+      return true;  // cannot tell: leave it to the search
     if (a.n == 0) return false;
   }
   for (int i = 0; i < count; ++i) {
