@@ -87,3 +87,19 @@ TEST_CASE("feasible region: a regular hexagon meets 59 degrees, and a needle's c
   query.p = p, query.q = q, query.edges = needle.data(), query.edgeCount = needle.size();
   CHECK_FALSE(mayMeetBound(query, 30 * kDeg));
 }
+
+TEST_CASE("feasible region: the largest stars fit, and beyond the cap the answer is left to the search", "[optimal]") {
+  // Around any point inside a regular n-gon the apex angles sum to 360 degrees, so with 64 edges
+  // one of them is under 6: no point meets 30 degrees.
+  for (int n : {64, 65}) {
+    std::vector<CavityEdge> ring;
+    for (int k = 0; k < n; ++k)
+      ring.push_back({{std::cos(2 * kPi * k / n), std::sin(2 * kPi * k / n)},
+                      {std::cos(2 * kPi * (k + 1) / n), std::sin(2 * kPi * (k + 1) / n)}, false});
+    OptimalPointQuery query;
+    query.p = ring[0].u, query.q = ring[0].v, query.edges = ring.data(), query.edgeCount = ring.size();
+    query.maxApex = kPi, query.petal = false;
+    INFO(n << " edges");
+    CHECK(mayMeetBound(query, 30 * kDeg) == (n > 64));
+  }
+}
