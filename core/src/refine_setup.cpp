@@ -10,10 +10,14 @@
 namespace ruppert::detail {
 
 // A corner is acute when two constrained edges at an input or intersection vertex are less than
-// 90 degrees apart. The value is 0 for none, else 1 + 254 cos(the smallest gap) (1..255: sharper is
-// larger), so that a split between two corners can favour the sharper (refine.cpp). The directions
-// are gathered per vertex in one flat array (counting sort by vertex), and the smallest gap is
-// between neighbours in angular order: sorted, O(d log d) for a vertex of degree d.
+// 90 degrees apart with the domain between them: a small gap outside the domain (the valley between
+// two spikes of a star, the mouth of a slot) has no triangles in it, so no shells are needed there,
+// and marking it would put the splits of a spike's side at midpoints instead of on its tip's shells
+// (stars: Triangle's 1.5x the boundary vertices). The value is 0 for none, else 1 + 254 cos(the
+// smallest gap) (1..255: sharper is larger), so that a split between two corners can favour the
+// sharper (refine_split.cpp). The directions are gathered per vertex in one flat array (counting
+// sort by vertex), and the gaps are between neighbours in angular order: sorted, O(d log d) for a
+// vertex of degree d.
 std::vector<std::uint8_t> acuteCorners(const MeshState& m) {
   const Triangulation& t = m.tri;
   const std::uint32_t n = t.vertexCount();
@@ -22,36 +26,41 @@ std::vector<std::uint8_t> acuteCorners(const MeshState& m) {
     return m.kind[v] == VertexKind::Input || m.kind[v] == VertexKind::Intersection;
   };
   std::vector<std::uint32_t> start(n + 1, 0);
+  // visit(v, w, domainAfter): the constrained edge from v to w, and whether the domain lies
+  // counterclockwise of it at v (a triangle on the left of v -> w: the half-edge's own for its
+  // origin, its twin's for its destination).
   auto forEachEnd = [&](auto&& visit) {
     for (std::uint32_t h = 0; h < t.tv.size(); ++h) {
       if (!t.alive(h / 3) || t.con[h] == kFree) continue;
-      if (t.twin[h] != kNone && t.twin[h] < h) continue;  // each edge once
+      const std::uint32_t twin = t.twin[h];
+      if (twin != kNone && twin < h && t.alive(twin / 3)) continue;  // each edge once
       const std::uint32_t a = t.origin(h), b = t.dest(h);
-      if (counted(a)) visit(a, b);
-      if (counted(b)) visit(b, a);
+      if (counted(a)) visit(a, b, true);
+      if (counted(b)) visit(b, a, twin != kNone && t.alive(twin / 3));
     }
   };
-  forEachEnd([&](std::uint32_t v, std::uint32_t) { ++start[v + 1]; });
+  forEachEnd([&](std::uint32_t v, std::uint32_t, bool) { ++start[v + 1]; });
   for (std::uint32_t v = 0; v < n; ++v) start[v + 1] += start[v];
-  std::vector<double> dir(2 * std::size_t(start[n]));
+  // Per end: its direction's angle, and whether the domain follows it counterclockwise.
+  std::vector<std::pair<double, bool>> ends(start[n]);
   std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-  forEachEnd([&](std::uint32_t v, std::uint32_t w) {
-    const std::uint32_t k = fill[v]++;
+  forEachEnd([&](std::uint32_t v, std::uint32_t w, bool domainAfter) {
     const double dx = t.xy[2 * w] - t.xy[2 * v], dy = t.xy[2 * w + 1] - t.xy[2 * v + 1];
-    const double len = length(dx, dy);
-    dir[2 * k] = dx / len, dir[2 * k + 1] = dy / len;
+    ends[fill[v]++] = {std::atan2(dy, dx), domainAfter};
   });
-  std::vector<double> angles;
   for (std::uint32_t v = 0; v < n; ++v) {
     if (start[v + 1] - start[v] < 2) continue;
-    angles.clear();
-    for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) angles.push_back(std::atan2(dir[2 * i + 1], dir[2 * i]));
-    std::sort(angles.begin(), angles.end());
-    double gap = angles.front() + 2 * kPi - angles.back();
-    for (std::size_t i = 1; i < angles.size(); ++i) gap = std::min(gap, angles[i] - angles[i - 1]);
-    // cos(gap) > sin(1e-12): the gap is below 90 degrees by more than rounding.
+    const auto first = ends.begin() + start[v], last = ends.begin() + start[v + 1];
+    std::sort(first, last);
+    double gap = 2 * kPi;
+    for (auto e = first; e != last; ++e) {
+      const double next = e + 1 != last ? (e + 1)->first : first->first + 2 * kPi;
+      if (e->second) gap = std::min(gap, next - e->first);
+    }
+    // cos(gap) > sin(1e-12): the gap is below 90 degrees by more than rounding (a reflex gap of the
+    // domain, past 270 degrees, has a positive cosine too).
     const double cosine = std::cos(gap);
-    if (cosine > 1e-12) corner[v] = static_cast<std::uint8_t>(1 + std::min(254.0, 254 * cosine));
+    if (gap < kPi && cosine > 1e-12) corner[v] = static_cast<std::uint8_t>(1 + std::min(254.0, 254 * cosine));
   }
   return corner;
 }

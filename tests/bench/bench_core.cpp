@@ -15,13 +15,17 @@
 //   copies after the originals), at 0 and 30 degrees: best of 3 each (the two alternating, after a
 //   warm-up), the ratio twice / once, and whether both meshes have the same triangles.
 //
-// Usage: ruppert_bench [--max-points N] [--big] [--chords] [--duplicates]
+//   --placement P: the refinement rows with placement P (offcenter, circumcenter, petal, optimal)
+//   instead of the default, for paired runs of two placements.
+//
+// Usage: ruppert_bench [--max-points N] [--big] [--chords] [--duplicates] [--placement P]
 //        (N default 1000000; --big adds 10^7)
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
 #include <vector>
@@ -123,11 +127,21 @@ void duplicatedPoints() {
   }
 }
 
+bool placementNamed(const char* name, ruppert::Placement& placement) {
+  for (std::size_t i = 0; i < std::size(ruppert::kPlacementNames); ++i)
+    if (!std::strcmp(name, ruppert::kPlacementNames[i])) {
+      placement = static_cast<ruppert::Placement>(i);
+      return true;
+    }
+  return false;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::size_t maxPoints = 1000000;
   bool big = false, chords = false, duplicates = false;
+  ruppert::Placement placement = ruppert::Options().placement;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--max-points") && i + 1 < argc) {
       maxPoints = std::strtoull(argv[++i], nullptr, 10);
@@ -137,8 +151,11 @@ int main(int argc, char** argv) {
       chords = true;
     } else if (!std::strcmp(argv[i], "--duplicates")) {
       duplicates = true;
+    } else if (!std::strcmp(argv[i], "--placement") && i + 1 < argc && placementNamed(argv[i + 1], placement)) {
+      ++i;
     } else {
-      std::fprintf(stderr, "usage: %s [--max-points N] [--big] [--chords] [--duplicates]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--max-points N] [--big] [--chords] [--duplicates] [--placement P]\n",
+                   argv[0]);
       return 2;
     }
   }
@@ -174,6 +191,7 @@ int main(int argc, char** argv) {
       if (area < 1e-6 && !big) continue;
       ruppert::Options o;
       o.maxArea = area;
+      o.placement = placement;
       char name[64];
       std::snprintf(name, sizeof name, "square, 30 deg, max area %g", area);
       refined.push_back(measure(name, square, o, area < 1e-6 ? 1 : 3));
@@ -184,6 +202,7 @@ int main(int argc, char** argv) {
       for (double area : {1e2, 1e1}) {  // the coastline spans about 4096 x 4096 units
         ruppert::Options o;
         o.maxArea = area;
+        o.placement = placement;
         char name[64];
         std::snprintf(name, sizeof name, "earcut_water_huge3, 30 deg, max area %g", area);
         refined.push_back(measure(name, coast, o));
@@ -202,7 +221,8 @@ int main(int argc, char** argv) {
   for (const Row& r : rows)
     std::printf("| %-40s | %9zu | %9zu | %10.1f | %12.0f |\n", r.name.c_str(), r.points, r.triangles, r.bestMs,
                 double(r.points) / (r.bestMs / 1000.0));
-  std::printf("\nRefinement (minAngle 30, off-centers, lenses), best of 3 after a warm-up (10^7: one run)\n");
+  std::printf("\nRefinement (minAngle 30, placement %s, lenses), best of 3 after a warm-up (10^7: one run)\n",
+              ruppert::enumName(placement));
   std::printf("| %-42s | %10s | %10s | %14s |\n", "input", "triangles", "ms", "triangles/s");
   std::printf("|%s|%s|%s|%s|\n", std::string(44, '-').c_str(), std::string(12, '-').c_str(),
               std::string(12, '-').c_str(), std::string(16, '-').c_str());
