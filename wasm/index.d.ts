@@ -90,9 +90,9 @@ export interface TriangulateOptions {
   /** Compute stats.lfsIntegral, the chapter's size measure (section 6.5). */
   sizeMeasure?: boolean;
   /**
-   * 'offcenter' (default); 'circumcenter'; 'petal' (fewest triangles); 'optimal': Erten and Üngör's
-   * locally optimal Steiner points and relocation of free vertices, for minAngle 35-40 (completes
-   * where off-centers run to the Steiner budget, not always: check complete).
+   * 'optimal' (default): Erten and Üngör's locally optimal Steiner points and relocation of free
+   * vertices, the fewest triangles and the bounds of 35-40 degrees (not always: check complete);
+   * 'offcenter': Üngör's off-centers, faster without maxArea; 'circumcenter'; 'petal'.
    */
   placement?: 'offcenter' | 'circumcenter' | 'petal' | 'optimal';
   /** 'lens' (default): diametral lenses, fewer splits; 'disk': the closed diametral disk of the chapter. */

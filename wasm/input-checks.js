@@ -293,7 +293,7 @@ export function checkOptions(options) {
     minAngle,
     maxArea,
     maxSteiner,
-    placement: enumOption(options, 'placement', PLACEMENTS, 'offcenter'),
+    placement: enumOption(options, 'placement', PLACEMENTS, 'optimal'),
     encroachment: enumOption(options, 'encroachment', ENCROACHMENTS, 'lens'),
     variant: enumOption(options, 'variant', VARIANTS, 'cdt'),
     convexHull: booleanOption(options, 'convexHull'),

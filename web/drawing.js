@@ -12,7 +12,7 @@
 import { boundsOf, hasBounds, includePoint } from './bounds.js';
 
 export const DEFAULT_OPTIONS = Object.freeze({
-  minAngle: 30, maxArea: null, placement: 'offcenter', maxSteiner: null, variant: 'cdt', encroachment: 'lens',
+  minAngle: 30, maxArea: null, placement: 'optimal', maxSteiner: null, variant: 'cdt', encroachment: 'lens',
 });
 
 export function emptyDrawing(options = DEFAULT_OPTIONS) {

@@ -39,10 +39,10 @@ export const EXEMPTION_LABELS = {
 
 /** options.placement, the Steiner placement box's entries (in this order). */
 export const PLACEMENT_LABELS = {
-  offcenter: 'off-center',
+  optimal: 'optimal points (fewest triangles, up to 40°)',
+  offcenter: 'off-center (faster)',
   circumcenter: 'circumcenter',
-  petal: 'petal (fewest triangles)',
-  optimal: 'optimal points (for 35-40°)',
+  petal: 'petal',
 };
 
 /** options.variant, the Algorithm box's entries. */

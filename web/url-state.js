@@ -37,7 +37,7 @@ export function encodeDrawing(d) {
     s: d.segments,
     h: d.holes,
     r: d.regions.map((r) => [r.x, r.y, r.attribute ?? 0, r.maxArea > 0 ? r.maxArea : 0]),
-    o: [o.minAngle, o.maxArea > 0 ? o.maxArea : 0, PLACEMENT_CODES.get(o.placement) ?? 'o',
+    o: [o.minAngle, o.maxArea > 0 ? o.maxArea : 0, PLACEMENT_CODES.get(o.placement) ?? 't',
       Number.isInteger(o.maxSteiner) ? o.maxSteiner : -1,
       o.variant === 'box' ? 'b' : 'c', o.encroachment === 'disk' ? 'd' : 'l'],
   };
@@ -71,7 +71,7 @@ export function decodeDrawing(hash) {
   const options = {
     minAngle: Number.isFinite(minAngle) ? Math.min(60, Math.max(0, minAngle)) : DEFAULT_OPTIONS.minAngle,
     maxArea: maxArea > 0 ? maxArea : null,
-    placement: PLACEMENT_NAMES.get(placement) ?? 'offcenter',
+    placement: PLACEMENT_NAMES.get(placement) ?? 'optimal',
     maxSteiner: Number.isInteger(maxSteiner) && maxSteiner >= 0 ? maxSteiner : null,
     variant: variant === 'b' ? 'box' : 'cdt',
     encroachment: encroachment === 'd' ? 'disk' : 'lens',

@@ -31,7 +31,7 @@ bool parseStrictCount(const std::string& text, std::uint64_t& value) {
 const char* usageLine() {
   return "usage: ruppert [--min-angle DEG] [--max-area A] [--max-steiner N] [-o BASE] "
          "[--format triangle|json|svg|msh|vtu|geojson] [--input-format poly|node|json|geojson] [--quiet] [--stats] [--trace FILE] "
-         "[--placement offcenter|circumcenter|petal|optimal] [--encroachment lens|disk] [--variant cdt|box] [--convex-hull] [--auto-holes] "
+         "[--placement optimal|offcenter|circumcenter|petal] [--encroachment lens|disk] [--variant cdt|box] [--convex-hull] [--auto-holes] "
          "[--order 1|2] [--voronoi] [-e|--edges] [--no-boundary-steiner] [--no-segment-steiner] [-j|--jettison] "
          "[--help] [--version] INPUT";
 }
@@ -58,10 +58,10 @@ std::string helpText() {
          "                       output; the summary and --stats then go to standard error\n"
          "  --input-format F     poly, node, json or geojson: how to read INPUT (default: its extension;\n"
          "                       for - the text decides: '{' is json or geojson, else .poly or .node)\n"
-         "  --placement P        offcenter (default), circumcenter, petal (fewest triangles: a point\n"
-         "                       of the shortest edge's petal where an off-center would make a skinny\n"
-         "                       triangle; slower when there is no --max-area), or optimal (the point\n"
-         "                       maximising the smallest new angle there: for 35-40 degrees)\n"
+         "  --placement P        optimal (default: off-centers, but where one would make a skinny\n"
+         "                       triangle the point maximising the smallest new angle; the fewest\n"
+         "                       triangles, and 35-40 degrees), offcenter (faster), circumcenter, or\n"
+         "                       petal (a point of the shortest edge's petal there)\n"
          "  --encroachment E     lens (default: diametral lenses) or disk (closed diametral disks)\n"
          "  --variant V          cdt (default: constrained, no triangles outside the domain) or box\n"
          "                       (Ruppert's original: conforming mesh of an enclosing box)\n"

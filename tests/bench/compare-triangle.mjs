@@ -6,7 +6,7 @@
 //   `npm install` in the repo prunes a --no-save package, even in the middle of a run)
 //   node tests/bench/compare-triangle.mjs [--runs N] [--timeout SECONDS] [--only SUBSTRING]
 //        [--angles 20,30,33] [--ruppert-only-angles 35,38,40] [--sizes 1e-4,...] [--no-native] [--no-write]
-//        [--placement offcenter|circumcenter|petal]   (ruppert's Steiner placement; default offcenter)
+//        [--placement optimal|offcenter|circumcenter|petal]   (ruppert's Steiner placement; default optimal)
 //   node tests/bench/compare-triangle.mjs --dir DIR [--families a,b] [--placements default,petal]
 //        [--angles 20,25,30,33] [--ruppert-only-angles 35,38,40] [--ruppert-timeout 30] [--timeout 10]
 //        [--only SUBSTRING] [--no-triangle-cache] [--write | --no-write]
@@ -19,7 +19,7 @@
 //
 // For every clean .poly in the shared data folder and every angle it meshes the same PLC with
 // Triangle (switches -pzQq<angle>, plus -a when a region carries an area bound) and with ruppert
-// (triangulate with minAngle, default off-centers), then a unit square with a global area bound for
+// (triangulate with minAngle, the default placement), then a unit square with a global area bound for
 // the size-driven case. Both meshers run in worker threads of this one Node process, each call
 // timed end to end (input copied in, output copied out) as the median of N runs after one warm-up
 // (a call over 1 s: its first run alone); a run slower than the time limit stops that case
@@ -234,7 +234,7 @@ function parseArgs(argv) {
     // Global area bounds on the unit square: Triangle and ruppert near 1e4, 1e5, 1e6 triangles.
     sizes: list(get('--sizes', '1.5e-4,1.5e-5,1.5e-6,5e-7')),
     sizeAngle: Number(get('--size-angle', 30)),
-    placement: get('--placement', 'offcenter'),
+    placement: get('--placement', 'optimal'),
     native: !argv.includes('--no-native'),
     write: !argv.includes('--no-write'),
   };
@@ -323,7 +323,7 @@ function markdownReport(report) {
   lines.push(`ruppert ${meta.ruppert} (wasm/dist + native CLI \`${meta.nativeCli ?? 'absent'}\`); Triangle: npm triangle-wasm ${meta.triangleWasm} (Triangle 1.6 compiled by Emscripten, fixed 16 MiB heap).`);
   lines.push(`Command: \`${meta.command}\``, '');
   lines.push('How: the same PLC (read by ruppert\'s .poly reader) goes to both meshers in worker threads of one Node process.',
-    `Triangle runs with \`-pzQq<angle>\` (plus \`-a\` when a region has an area bound); ruppert with \`{ minAngle, placement: '${meta.placement ?? 'offcenter'}' }\` (constrained variant).`,
+    `Triangle runs with \`-pzQq<angle>\` (plus \`-a\` when a region has an area bound); ruppert with \`{ minAngle, placement: '${meta.placement ?? 'optimal'}' }\` (constrained variant).`,
     `Times are per call, end to end (copy in, mesh, copy out), median of ${meta.runs} after one warm-up (a call over 1 s: its single first run); a single run longer than ${meta.timeoutMs / 1000} s is "timeout".`,
     'Min angles and triangle counts are measured from the output arrays by the same code for both. "native" is the core time printed by the ruppert CLI (`--stats`), measured at the angles compared with Triangle only.',
     'Ratios: tri ratio = ruppert triangles / Triangle triangles (< 1: ruppert smaller); speed = Triangle ms / ruppert wasm ms (> 1: ruppert faster).', '');
@@ -534,7 +534,7 @@ async function main() {
   if (options.write) {
     const dir = join(repoRoot, 'tests/bench/results');
     mkdirSync(dir, { recursive: true });
-    const base = options.placement === 'offcenter' ? 'triangle-comparison' : `triangle-comparison-${options.placement}`;
+    const base = options.placement === 'optimal' ? 'triangle-comparison' : `triangle-comparison-${options.placement}`;
     writeFileSync(join(dir, `${base}.md`), markdown);
     writeFileSync(join(dir, `${base}.json`), `${JSON.stringify(report, null, 1)}\n`);
     log(`wrote tests/bench/results/${base}.md and .json`);

@@ -153,6 +153,7 @@ test('each kind of event is described with its geometry', async () => {
       const kind = /^Split subsegment \(\d+, \d+\).* at its midpoint/.test(what) ? 'split'
         : /^Split subsegment \(\d+, \d+\).* on the concentric shell of radius [\d.e+-]+ around vertex \d+/.test(what) ? 'shell split'
           : /^Inserted the (circumcenter|off-center) of .*triangle \(\d+, \d+, \d+\)/.test(what) ? 'triangle'
+          : /^Inserted the optimal point of .*triangle \(\d+, \d+, \d+\) .*its off-center would have made a skinny triangle/.test(what) ? 'optimal point'
             : /^The (circumcenter|off-center) \(.*\) of \(\d+, \d+, \d+\)( \(smallest angle [\d.]+°( < [\d.]+°)?\))? encroached subsegment \(\d+, \d+\): rejected/.test(what)
               ? `rejected ${/^The (\S+)/.exec(what)[1]}` : 'unknown';
       assert.notEqual(kind, 'unknown', what);
@@ -163,8 +164,9 @@ test('each kind of event is described with its geometry', async () => {
     }
   }
   // The fan (5 degree input angles) splits on concentric shells, and with off-centers the point it
-  // rejects is sometimes the off-center, not the circumcenter: each is named as what it is.
-  for (const kind of ['split', 'shell split', 'triangle', 'rejected off-center', 'rejected circumcenter']) {
+  // rejects is sometimes the off-center, not the circumcenter: each is named as what it is. The
+  // default placement puts an optimal point where an off-center would make a skinny triangle.
+  for (const kind of ['split', 'shell split', 'triangle', 'optimal point', 'rejected off-center', 'rejected circumcenter']) {
     assert.ok(seen.has(kind), `${kind} not seen among ${[...seen].join(', ')}`);
   }
 });

@@ -100,7 +100,7 @@ test('diametral disks give a valid, complete mesh', async () => {
   await page.selectOption('#variant', 'box');
   await assertValidMesh(page, 'comb, box, disk again');
   assert.deepEqual((await decodeHash(page)).options, {
-    minAngle: 30, maxArea: null, placement: 'offcenter', maxSteiner: null, variant: 'box', encroachment: 'disk',
+    minAngle: 30, maxArea: null, placement: 'optimal', maxSteiner: null, variant: 'box', encroachment: 'disk',
   });
 });
 
@@ -125,7 +125,9 @@ test('a link with the new fields round-trips', async () => {
 
 test('an old link without the new fields loads with the defaults', async () => {
   const other = await harness.context.newPage();
-  await other.goto(link(presetDrawing('comb'), [30, 0, 'o', -1]));
+  // (Links of the time named the placement: 't', optimal points, the default now.)
+  await other.goto(link(presetDrawing('comb'), [30, 0, 't', -1]));
+  assert.equal(await other.locator('#placement').inputValue(), 'optimal');
   assert.equal(await other.locator('#variant').inputValue(), 'cdt');
   assert.equal(await other.locator('#encroachment').inputValue(), 'lens');
   assert.equal((await assertValidMesh(other, 'old link')).triangles, cdtTriangles);

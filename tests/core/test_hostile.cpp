@@ -55,14 +55,14 @@ struct Mode {
   const char* name;
   double minAngle;
   const char* cliArgs;
-  ruppert::Placement placement = ruppert::Placement::OffCenter;
+  ruppert::Placement placement = ruppert::Options().placement;  // the CLI's default too
 };
 const Mode kModes[] = {
     {"plain CDT", 0, "--min-angle 0"},
     {"min angle 30", 30, "--min-angle 30 --max-steiner 20000"},
     {"min angle 40", 40, "--min-angle 40 --max-steiner 20000"},
-    {"min angle 40, optimal points", 40, "--min-angle 40 --max-steiner 20000 --placement optimal",
-     ruppert::Placement::Optimal},
+    {"min angle 40, off-centers", 40, "--min-angle 40 --max-steiner 20000 --placement offcenter",
+     ruppert::Placement::OffCenter},
 };
 // At 40 degrees refinement often runs to this budget. Meshing 200,000 vertices takes well under a
 // second here, but validating some of those meshes does not: split-point-off-its-segment-broke-

@@ -348,7 +348,8 @@ TEST_CASE("random clusters of tiny crossing segments are meshed validly", "[repa
     const Plc plc = crossingClusters(seed, 10).plc;
     ruppert::Options o;
     o.minAngle = std::vector<double>{0, 20, 30, 34}[seed % 4];
-    o.placement = std::vector<Placement>{Placement::OffCenter, Placement::Circumcenter, Placement::Petal}[seed / 4 % 3];
+    o.placement = std::vector<Placement>{Placement::Optimal, Placement::OffCenter, Placement::Circumcenter,
+                                         Placement::Petal}[seed / 4 % 4];
     o.convexHull = seed / 12 % 3 == 0;
     o.autoHoles = true;
     o.maxSteiner = std::vector<std::uint64_t>{0, 10, 2000}[seed / 36 % 3];

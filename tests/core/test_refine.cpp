@@ -117,6 +117,7 @@ TEST_CASE("petal placement refines validly and with fewer triangles than off-cen
     for (const auto& [name, plc] : inputs) {
       Options o;
       o.minAngle = angle;
+      o.placement = ruppert::Placement::OffCenter;
       offCenter += ruppert::triangulate(plc, o).stats.triangles;
       o.placement = ruppert::Placement::Petal;
       const Mesh mesh = refineChecked(plc, o, name);

@@ -3,9 +3,10 @@
 // Input layout (missing bytes read as 0, so every byte string is an input):
 //   byte 0   minimum angle: value % 46 degrees (0..45)
 //   byte 1   global max area: 0 = none, else (bounding-box area) / value
-//   byte 2   flags: bit 0 circumcenters instead of off-centers, bit 1 convex hull, bit 2 auto holes,
-//            bit 3 petal placement (unless bit 0),
-//            bits 4-5 coordinate encoding (below), bit 6 the rest is .poly text, not binary
+//   byte 2   flags: bit 0 circumcenter placement, bit 1 convex hull, bit 2 auto holes,
+//            bit 3 petal placement (unless bit 0), bit 7 off-centers (unless bits 0, 3; else the
+//            default, optimal points), bits 4-5 coordinate encoding (below), bit 6 the rest is
+//            .poly text, not binary
 //   byte 3   scale: integer coordinates are multiplied by 2^(signed byte), reaching 2^-128..2^127
 //   binary:  count, then points; count, then segments (2 index bytes; 255 = one past the end);
 //            count, then holes; count, then regions (x, y, attribute byte, max-area byte)
@@ -113,7 +114,7 @@ void dumpPlc(const ruppert::Plc& plc, const ruppert::Options& o) {
   std::FILE* f = std::fopen(path, "w");
   if (!f) return;
   std::fprintf(f, "# options: minAngle %.17g maxArea %.17g placement %s convexHull %d autoHoles %d maxSteiner %llu\n",
-               o.minAngle, o.maxArea, o.placement == ruppert::Placement::OffCenter ? "offcenter" : o.placement == ruppert::Placement::Petal ? "petal" : "circumcenter",
+               o.minAngle, o.maxArea, ruppert::enumName(o.placement),
                o.convexHull, o.autoHoles, static_cast<unsigned long long>(o.maxSteiner));
   std::fprintf(f, "%zu 2 0 0\n", plc.points.size() / 2);
   for (std::size_t i = 0; i < plc.points.size() / 2; ++i)
@@ -142,7 +143,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const double scale = std::ldexp(1.0, static_cast<std::int8_t>(in.byte()));
   o.placement = (flags & 1) ? ruppert::Placement::Circumcenter
                 : (flags & 8) ? ruppert::Placement::Petal
-                              : ruppert::Placement::OffCenter;
+                : (flags & 128) ? ruppert::Placement::OffCenter
+                               : ruppert::Placement::Optimal;
   o.convexHull = (flags & 2) != 0;
   o.autoHoles = (flags & 4) != 0;
   o.maxSteiner = kMaxSteiner;

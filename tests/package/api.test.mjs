@@ -141,7 +141,7 @@ test("placement 'petal' gives valid meshes with fewer triangles than off-centers
   let petal = 0;
   for (let seed = 1; seed <= 12; seed++) {
     const plc = starPolygon(seed, 30);
-    offCenter += mesher.triangulate(plc, { minAngle: 33 }).triangles.length / 3;
+    offCenter += mesher.triangulate(plc, { minAngle: 33, placement: 'offcenter' }).triangles.length / 3;
     const mesh = mesher.triangulate(plc, { minAngle: 33, placement: 'petal' });
     assert.deepEqual(validateMesh(mesh, { input: plc }), [], `seed ${seed}`);
     assert.equal(mesh.complete, true, `seed ${seed}: ${JSON.stringify(mesh.reasons)}`);
@@ -150,13 +150,29 @@ test("placement 'petal' gives valid meshes with fewer triangles than off-centers
   assert.ok(petal < offCenter, `petal ${petal} triangles, off-centers ${offCenter}`);
 });
 
+test("the default placement is 'optimal', with fewer triangles than off-centers", async () => {
+  const mesher = await init();
+  let optimal = 0;
+  let offCenter = 0;
+  for (let seed = 1; seed <= 6; seed++) {
+    const plc = starPolygon(seed, 30);
+    const byDefault = mesher.triangulate(plc, { minAngle: 33 });
+    const named = mesher.triangulate(plc, { minAngle: 33, placement: 'optimal' });
+    assert.deepEqual(byDefault.triangles, named.triangles, `seed ${seed}`);
+    assert.deepEqual(byDefault.points, named.points, `seed ${seed}`);
+    optimal += byDefault.triangles.length / 3;
+    offCenter += mesher.triangulate(plc, { minAngle: 33, placement: 'offcenter' }).triangles.length / 3;
+  }
+  assert.ok(optimal < offCenter, `optimal ${optimal} triangles, off-centers ${offCenter}`);
+});
+
 test("placement 'optimal' gives valid meshes that meet 38 degrees where off-centers do not", async () => {
   const mesher = await init();
   let optimal = 0;
   let offCenter = 0;
   for (let seed = 1; seed <= 6; seed++) {
     const plc = starPolygon(seed, 30);
-    offCenter += mesher.triangulate(plc, { minAngle: 38, maxSteiner: 3000 }).complete ? 1 : 0;
+    offCenter += mesher.triangulate(plc, { minAngle: 38, placement: 'offcenter', maxSteiner: 3000 }).complete ? 1 : 0;
     const mesh = mesher.triangulate(plc, { minAngle: 38, placement: 'optimal', maxSteiner: 3000 });
     assert.deepEqual(validateMesh(mesh, { input: plc }), [], `seed ${seed}`);
     optimal += mesh.complete ? 1 : 0;

@@ -137,10 +137,11 @@ enum class Placement : std::uint8_t {
                      // the shortest edge's petal that makes none and lies farthest from its
                      // neighbours (after Erten and Üngör): fewer triangles still, slower without an
                      // area bound (with one it is the same as OffCenter)
-  Optimal = 3,       // off-centers, but where one would itself make a skinny triangle, the point that
-                     // maximises the smallest angle of the triangles it makes (Erten and Üngör's
-                     // locally optimal Steiner point), if that angle meets the bound: for bounds of
-                     // 35-40 degrees, which off-centers rarely reach
+  Optimal = 3,       // the default: off-centers, but where one would itself make a skinny triangle,
+                     // the point that maximises the smallest angle of the triangles it makes (Erten
+                     // and Üngör's locally optimal Steiner point), if that angle meets the bound, and
+                     // relocation of free vertices: the fewest triangles, and bounds of 35-40 degrees,
+                     // which off-centers rarely reach (with an area bound it places as OffCenter)
 };
 // The CLI's --placement and JavaScript's options.placement.
 inline constexpr const char* kPlacementNames[] = {"circumcenter", "offcenter", "petal", "optimal"};
@@ -188,7 +189,7 @@ struct Options {
   // Budget of Steiner vertices. kAutoSteinerBudget: a default proportional to the input that
   // reasonable inputs never reach. Running out is not an error: complete becomes false.
   std::uint64_t maxSteiner = kAutoSteinerBudget;
-  Placement placement = Placement::OffCenter;
+  Placement placement = Placement::Optimal;  // the fewest triangles, and 35-40 degrees
   Encroachment encroachment = Encroachment::DiametralLens;
   Variant variant = Variant::Constrained;
   bool convexHull = false;  // mesh the whole convex hull, not only what segments enclose
