@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "refine_geometry.h"  // length: sqrt, not the slower hypot (a library call in WebAssembly)
+
 namespace ruppert::detail {
 
 namespace {
@@ -47,7 +49,7 @@ double distanceTo(const Polygon& poly, const double* c) {
     if (ex * cy - ey * cx < 0) inside = false;
     const double len2 = ex * ex + ey * ey;
     const double t = len2 > 0 ? std::clamp((ex * cx + ey * cy) / len2, 0.0, 1.0) : 0.0;
-    best = std::min(best, std::hypot(cx - t * ex, cy - t * ey));
+    best = std::min(best, length(cx - t * ex, cy - t * ey));
   }
   return inside ? 0 : best;
 }
@@ -62,7 +64,7 @@ void apexDisk(const Base& b, double cotTheta, double cscTheta, double centre[2],
   const double ex = b.v[0] - b.u[0], ey = b.v[1] - b.u[1];
   centre[0] = (b.u[0] + b.v[0]) / 2 - ey * cotTheta / 2;
   centre[1] = (b.u[1] + b.v[1]) / 2 + ex * cotTheta / 2;
-  radius = std::hypot(ex, ey) * cscTheta / 2;
+  radius = length(ex, ey) * cscTheta / 2;
 }
 
 }  // namespace
@@ -85,7 +87,7 @@ bool mayMeetBound(const OptimalPointQuery& query, double theta) {
   a.n = 4;
   for (int i = 0; i < count; ++i) {
     const double ex = bases[i].v[0] - bases[i].u[0], ey = bases[i].v[1] - bases[i].u[1];
-    const double len = std::hypot(ex, ey);
+    const double len = length(ex, ey);
     if (!(len > 0)) return false;  // a degenerate edge makes a degenerate triangle
     const double dx = ex / len, dy = ey / len, slack = kMargin * len;
     // At u: uv turned counter-clockwise by theta; at v: uv turned clockwise by theta.

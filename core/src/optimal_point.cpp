@@ -95,7 +95,7 @@ struct Scorer {
 // at least a third of what is left), to the left of p->q.
 int petalSeeds(const double* p, const double* q, double* out) {
   static constexpr double kApex[] = {kPi / 3, kPi / 4, 35 * kPi / 180, 28 * kPi / 180};
-  const double len = std::hypot(q[0] - p[0], q[1] - p[1]);
+  const double len = length(q[0] - p[0], q[1] - p[1]);
   const double dx = (q[0] - p[0]) / len, dy = (q[1] - p[1]) / len;
   const double mx = (p[0] + q[0]) / 2, my = (p[1] + q[1]) / 2;
   int n = 0;
@@ -154,7 +154,7 @@ OptimalPoint optimalSteinerPoint(const OptimalPointQuery& query, const double* s
   };
   for (int i = 1; i < ownCount; ++i) consider(own + 2 * i);
   for (std::size_t i = 0; i < seedCount; ++i) consider(seeds + 2 * i);
-  const double len = std::hypot(query.q[0] - query.p[0], query.q[1] - query.p[1]);
+  const double len = length(query.q[0] - query.p[0], query.q[1] - query.p[1]);
   double step = 0.2 * len;
   int level = 0, evaluations = 0;
   while (step > 1e-3 * len && evaluations < 160) {

@@ -5,13 +5,13 @@
 //   npm install --no-save triangle-wasm     (or set TRIANGLE_WASM_DIR to an installed copy's folder,
 //                                            safer: a later plain `npm install` prunes --no-save)
 //   node tests/bench/speed-per-call.mjs [--dir DIR]... [--no-corpus] [--no-families] [--angle 30]
-//        [--batch-ms 40] [--rounds 5] [--only SUBSTRING] [--json FILE]
+//        [--batch-ms 40] [--rounds 5] [--only SUBSTRING] [--json FILE] [--placement P]
 //
 // Inputs: every .poly of the shared corpus (RUPPERT_SHARED_DATA or ../shared/data; family "corpus"),
 // every .poly of each --dir (family = the file name without a trailing -<seed>), and shape families
 // generated here (combs, stars, perforated squares, random points in a square) at a few sizes.
 // Triangle runs with -pzQq<angle> (plus -a when a region has an area bound), ruppert with
-// { minAngle: angle }. A call is timed end to end through each package's public API (input copied
+// { minAngle: angle } (and { placement } with --placement, else the default). A call is timed end to end through each package's public API (input copied
 // in, output copied out). Per input: one warm-up call each, then calls in batches of at least
 // --batch-ms, the two meshers alternating batch by batch for --rounds rounds; per-call time = the
 // median over rounds of batch time / calls. speedup = Triangle's time / ruppert's (> 1: ruppert
@@ -59,9 +59,10 @@ async function worker() {
   };
   parentPort.on('message', (job) => {
     try {
-      const { plc, angle } = job;
+      const { plc, angle, placement } = job;
+      const options = placement ? { minAngle: angle, placement } : { minAngle: angle };
       const switches = `pzQq${angle}${plc.regions.some((r) => r.maxArea > 0) ? 'a' : ''}`;
-      const result = timePair(() => meshTriangle(plc, switches), () => ruppert.triangulate(plc, { minAngle: angle }), job);
+      const result = timePair(() => meshTriangle(plc, switches), () => ruppert.triangulate(plc, options), job);
       parentPort.postMessage({ status: 'ok', ...result });
     } catch (error) {
       // An abort (Triangle out of its heap) leaves that module unusable: the main thread restarts us.
@@ -109,7 +110,7 @@ function parseArgs(argv) {
   return {
     dirs: values('--dir'), corpus: !argv.includes('--no-corpus'), families: !argv.includes('--no-families'),
     angle: Number(one('--angle', 30)), batchMs: Number(one('--batch-ms', 40)), rounds: Number(one('--rounds', 5)),
-    only: one('--only', ''), json: one('--json', null), timeoutMs: Number(one('--timeout', 60)) * 1000,
+    only: one('--only', ''), json: one('--json', null), placement: one('--placement', null), timeoutMs: Number(one('--timeout', 60)) * 1000,
   };
 }
 
@@ -177,7 +178,7 @@ const geoMean = (values) => Math.exp(values.reduce((s, v) => s + Math.log(v), 0)
 const us = (ms) => (ms * 1000).toFixed(ms < 0.1 ? 1 : 0);
 
 function report(rows, failed, options, meta) {
-  console.log(`\n# ruppert vs triangle-wasm ${meta.triangleWasm}, per call, one thread (${meta.node}); min angle ${options.angle}`);
+  console.log(`\n# ruppert vs triangle-wasm ${meta.triangleWasm}, per call, one thread (${meta.node}); min angle ${options.angle}; placement ${options.placement ?? 'default'}`);
   console.log(`command: node tests/bench/speed-per-call.mjs ${process.argv.slice(2).join(' ')}`.trim(), '\n');
   console.log('| family | input | in pts | Triangle tris | ruppert tris | Triangle us | ruppert us | speedup |');
   console.log('|---|---|---|---|---|---|---|---|');
@@ -210,7 +211,7 @@ async function main() {
   const worker = new MeshWorker(triangle.dir);
   const rows = [], failed = [];
   for (const { name, family, plc } of inputs) {
-    const job = { plc, angle: options.angle, batchMs: options.batchMs, rounds: options.rounds };
+    const job = { plc, angle: options.angle, placement: options.placement, batchMs: options.batchMs, rounds: options.rounds };
     const r = await worker.run(job, options.timeoutMs);
     if (r.status !== 'ok' || r.triangleTris === 0) {
       failed.push({ name, status: r.status, error: r.error ?? (r.triangleTris === 0 ? 'Triangle returned no triangles' : '') });
