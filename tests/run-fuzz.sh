@@ -60,6 +60,8 @@ for f in ${data:+"$data"/*.poly} "$root"/tests/fixtures/*.poly "$root"/tests/hos
   for angle in 0 30; do  # \x1e = 30 degrees; flags \x40 = text mode
     { printf "\\x$(printf %02x "$angle")\\x00\\x40\\x00"; cat "$f"; } >"$mesh_corpus/$angle-$(basename "$f")"
   done
+  # 30 degrees with off-centers (flags \xc0 = text mode + off-centers; without, the default placement)
+  { printf "\\x1e\\x00\\xc0\\x00"; cat "$f"; } >"$mesh_corpus/30offcenter-$(basename "$f")"
   # 33 degrees with petal placement (flags \x48 = text mode + petal)
   { printf "\\x21\\x00\\x48\\x00"; cat "$f"; } >"$mesh_corpus/33petal-$(basename "$f")"
 done
