@@ -2,7 +2,7 @@
 // that completes first, then raise it a degree at a time while the mesh keeps improving, and keep
 // track of the best mesh seen so that it, not a runaway's last state, is what the caller gets.
 //
-// Before that, the requested bound is tried directly, from the unrefined mesh, up to eight times the
+// Before that, the requested bound is tried directly, from the unrefined mesh, up to sixteen times the
 // 33-degree mesh's triangles: where it completes that way (most inputs at 35 degrees), the mesh is
 // the same as without stages. The push keeps a copy of its best mesh; the mesh is scored every
 // quarter of its size in insertions, so scores and copies cost a fraction of the refinement.
@@ -24,7 +24,7 @@ inline constexpr double kStageStepDegrees = 1;
 // at the requested bound once it has kDirectTriangleFactor times (a direct run that completes may
 // be larger: earcut_earcut.poly completes at 35 degrees with 6.1 times the 33-degree triangles).
 inline constexpr std::uint64_t kPushTriangleFactor = 4;
-inline constexpr std::uint64_t kDirectTriangleFactor = 8;
+inline constexpr std::uint64_t kDirectTriangleFactor = 16;
 
 // How one run proceeds.
 struct RefinePlan {

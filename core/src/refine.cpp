@@ -177,7 +177,7 @@ bool completeOutcome(const RefineOutcome& r) {
 std::uint64_t liveTriangles(const MeshState& m) { return m.tri.slotCount() - m.tri.freeSlots.size(); }
 
 // A request above kStagedAboveDegrees (bound_push.h): the 33-degree mesh first, for its size; then
-// the requested bound directly, up to eight times that size; else the push from the 33-degree mesh.
+// the requested bound directly, up to sixteen times that size; else the push from the 33-degree mesh.
 RefineOutcome refineStaged(MeshState& m) {
   const double requested = m.options->minAngle;
   MeshState start = m;

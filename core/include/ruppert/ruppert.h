@@ -176,7 +176,7 @@ struct Progress {
 struct Options {
   // Minimum angle in degrees, in [0, 60]. 0 and maxArea <= 0 and no size function: plain CDT.
   // Angles up to 60 are accepted; above ~34 completion is not guaranteed. Above 34 a caller gets:
-  // the mesh refined to minAngle directly, if that completes within eight times the triangles of the
+  // the mesh refined to minAngle directly, if that completes within sixteen times the triangles of the
   // 33-degree mesh; else the best mesh of a push from the 33-degree mesh, one degree at a time while
   // it improves, with complete = false, ReasonKind::AngleUnreachable and the angle reached in
   // Stats::reachedAngle: never below 33 degrees (outside the §6.6 exemptions) nor over four times
