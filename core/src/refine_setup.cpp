@@ -28,15 +28,14 @@ std::vector<std::uint8_t> acuteCorners(const MeshState& m) {
   std::vector<std::uint32_t> start(n + 1, 0);
   // visit(v, w, domainAfter): the constrained edge from v to w, and whether the domain lies
   // counterclockwise of it at v (a triangle on the left of v -> w: the half-edge's own for its
-  // origin, its twin's for its destination).
+  // origin, its twin's for its destination; removeOutside leaves no twin outside the domain).
   auto forEachEnd = [&](auto&& visit) {
     for (std::uint32_t h = 0; h < t.tv.size(); ++h) {
       if (!t.alive(h / 3) || t.con[h] == kFree) continue;
-      const std::uint32_t twin = t.twin[h];
-      if (twin != kNone && twin < h && t.alive(twin / 3)) continue;  // each edge once
+      if (t.twin[h] != kNone && t.twin[h] < h) continue;  // each edge once
       const std::uint32_t a = t.origin(h), b = t.dest(h);
       if (counted(a)) visit(a, b, true);
-      if (counted(b)) visit(b, a, twin != kNone && t.alive(twin / 3));
+      if (counted(b)) visit(b, a, t.twin[h] != kNone);
     }
   };
   forEachEnd([&](std::uint32_t v, std::uint32_t, bool) { ++start[v + 1]; });

@@ -11,8 +11,8 @@
 // every .poly of each --dir (family = the file name without a trailing -<seed>), and shape families
 // generated here (combs, stars, perforated squares, random points in a square) at a few sizes.
 // Triangle runs with -pzQq<angle> (plus -a when a region has an area bound), ruppert with
-// { minAngle: angle } (and { placement } with --placement, else the default). A call is timed end to end through each package's public API (input copied
-// in, output copied out). Per input: one warm-up call each, then calls in batches of at least
+// { minAngle: angle } (and { placement } with --placement, else the default). A call is timed end
+// to end through each package's public API (input copied in, output copied out). Per input: one warm-up call each, then calls in batches of at least
 // --batch-ms, the two meshers alternating batch by batch for --rounds rounds; per-call time = the
 // median over rounds of batch time / calls. speedup = Triangle's time / ruppert's (> 1: ruppert
 // faster). Printed: a row per input, then the geometric mean of the speedups per family and overall.

@@ -9,11 +9,12 @@
 #include <utility>
 #include <vector>
 
+#include "refine_geometry.h"
 #include "validator.h"
 
 namespace {
 
-const double kHalfTip = std::tan(1.0 * 3.14159265358979323846 / 180);  // a 2-degree tip
+const double kHalfTip = std::tan(ruppert::detail::kPi / 180);  // a 2-degree tip
 
 ruppert::Plc closedPolygon(const std::vector<std::pair<double, double>>& corners) {
   ruppert::Plc plc;
