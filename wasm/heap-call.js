@@ -14,61 +14,85 @@ const TYPES = { f64: Float64Array, u32: Uint32Array, i32: Int32Array, u8: Uint8A
 // not copies.
 const READ_AS_VIEWS = new Set(['reasonNumbers', 'reasonText', 'noticeNumbers', 'noticeText']);
 
-// { name, Type? } per field of each table, parsed once per instance.
+// Per table, parsed once per instance: its fields in order ({ name, group, key, Type?, view }),
+// the names of its arrays (an input table's lengths go to the binding in this order) and, for
+// reading, each field's position by name.
 const layouts = new WeakMap();
 function layoutOf(m) {
   let layout = layouts.get(m);
   if (layout === undefined) {
-    const parse = (fields) => fields.map((field) => {
-      const [name, type] = field.split(':');
-      const [group, key] = name.includes('.') ? name.split('.') : [null, name];
-      return { name, group, key, Type: type === undefined ? undefined : TYPES[type], view: READ_AS_VIEWS.has(name) };
-    });
+    const parse = (list) => {
+      const fields = list.map((field) => {
+        const [name, type] = field.split(':');
+        const [group, key] = name.includes('.') ? name.split('.') : [null, name];
+        return { name, group, key, Type: type === undefined ? undefined : TYPES[type], view: READ_AS_VIEWS.has(name) };
+      });
+      const at = Object.fromEntries(fields.map((f, i) => [f.name, i]));
+      return { fields, at, arrays: fields.filter((f) => f.Type).map((f) => f.name) };
+    };
     const { names, layout: tables } = readDescription(m);
     layout = { names };
-    for (const [table, fields] of Object.entries(tables)) layout[table] = parse(fields);
+    for (const [table, list] of Object.entries(tables)) layout[table] = parse(list);
     layouts.set(m, layout);
   }
   return layout;
 }
 
-// Fills an input table: arrays[name]'s values where the table holds an array's address (only when
-// there are values), numbers[name] into a number's slot.
-function writeTable(m, address, fields, arrays, numbers) {
-  const table = address >>> 3;
-  fields.forEach(({ name, Type }, i) => {
-    if (Type === undefined) m.HEAPF64[table + i] = Number(numbers[name]);
-    else if (arrays[name].length > 0) heapView(m, Type).set(arrays[name], m.HEAPF64[table + i] / Type.BYTES_PER_ELEMENT);
-  });
+// The lengths of `arrays` in the input's order (the staging call's first arguments).
+function lengthsOf(table, input) {
+  const lengths = new Array(table.arrays.length);
+  for (let i = 0; i < lengths.length; i++) lengths[i] = input[table.arrays[i]].length;
+  return lengths;
 }
 
-// An output table's fields by name: arrays copied out (or, for READ_AS_VIEWS, a function that makes
-// the view), numbers as they are. "stats.x" goes to fields.stats.x.
-function readTable(m, address, fields) {
-  const table = m.HEAPF64.subarray(address >>> 3);
-  const out = {};
-  let k = 0;
-  for (const { group, key, Type, view } of fields) {
-    let value;
-    if (Type === undefined) {
-      value = table[k++];
-    } else {
-      const start = table[k++] / Type.BYTES_PER_ELEMENT, length = table[k++];
-      // A view is made only when there is something to read (most calls have no reasons or notices).
-      if (view) value = () => heapView(m, Type).subarray(start, start + length);
-      else value = length > 0 ? heapView(m, Type).slice(start, start + length) : new Type(0);
-    }
-    if (group === null) out[key] = value;
-    else (out[group] ??= {})[key] = value;
+// Fills an input table: arrays[name]'s values where the table holds an array's address (only when
+// there are values), numbers[name] into a number's slot.
+function writeTable(m, address, { fields }, arrays, numbers) {
+  const heap = m.HEAPF64, table = address >>> 3;
+  for (let i = 0; i < fields.length; i++) {
+    const { name, Type } = fields[i];
+    if (Type === undefined) heap[table + i] = Number(numbers[name]);
+    else if (arrays[name].length > 0) heapView(m, Type).set(arrays[name], heap[table + i] / Type.BYTES_PER_ELEMENT);
   }
+}
+
+// An output table's values by position (layout's `at` names them): arrays copied out (or, for
+// READ_AS_VIEWS, [start, length] in elements, for viewOf), numbers as they are. One pass, no object
+// keyed by name: a call's fixed cost is most of a small mesh's.
+function readTable(m, address, { fields }) {
+  const heap = m.HEAPF64;
+  const values = new Array(fields.length);
+  for (let i = 0, k = address >>> 3; i < fields.length; i++) {
+    const { Type, view } = fields[i];
+    if (Type === undefined) {
+      values[i] = heap[k++];
+      continue;
+    }
+    const start = heap[k] / Type.BYTES_PER_ELEMENT, length = heap[k + 1];
+    k += 2;
+    if (view) values[i] = [start, length];
+    else values[i] = length > 0 ? heapView(m, Type).slice(start, start + length) : new Type(0);
+  }
+  return values;
+}
+
+// A READ_AS_VIEWS field's view, made only when there is something to read (most calls have no
+// reasons or notices), before anything can grow the heap.
+function viewOf(m, Type, [start, length]) {
+  return heapView(m, Type).subarray(start, start + length);
+}
+
+// Fields "group.key" of a table as one object (mesh.stats).
+function groupOf({ fields }, values, group) {
+  const out = {};
+  for (let i = 0; i < fields.length; i++) if (fields[i].group === group) out[fields[i].key] = values[i];
   return out;
 }
 
 // Issue 16, derived: the old mesh to refine, order and voronoi go in a table of their own
 // (rp_stage_derived); what they give comes back in another (rp_derived_table).
 function stageDerived(m, layout, input, options) {
-  const lengths = layout.derivedInput.filter((f) => f.Type).map(({ name }) => input[name].length);
-  const table = m._rp_stage_derived(...lengths, options.order, options.voronoi ? 1 : 0);
+  const table = m._rp_stage_derived(...lengthsOf(layout.derivedInput, input), options.order, options.voronoi ? 1 : 0);
   if (table === 0) return false;
   writeTable(m, table, layout.derivedInput, input, options);
   return true;
@@ -76,9 +100,11 @@ function stageDerived(m, layout, input, options) {
 
 // mesh.triangles6 (order 2; mesh.points already holds the midpoint nodes) and mesh.voronoi.
 function readDerived(m, layout, mesh, options) {
-  const { triangles6, voronoi } = readTable(m, m._rp_derived_table(), layout.derivedOutput);
-  if (options.order === 2) mesh.triangles6 = triangles6;
-  if (options.voronoi) mesh.voronoi = voronoi;
+  if (options.order !== 2 && !options.voronoi) return;
+  const table = layout.derivedOutput;
+  const values = readTable(m, m._rp_derived_table(), table);
+  if (options.order === 2) mesh.triangles6 = values[table.at.triangles6];
+  if (options.voronoi) mesh.voronoi = groupOf(table, values, 'voronoi');
 }
 
 // The module's view of the heap for an element type (fetched after every call that may grow it).
@@ -93,23 +119,25 @@ function heapView(m, Type) {
 
 const utf8 = new TextDecoder();
 
-// The messages of `count` items, when there are any.
-const textsFromHeap = (count, bytes) => (count > 0 ? utf8.decode(bytes()).split('\0') : []);
+// The messages of `count` items, when there are any (`text` is a READ_AS_VIEWS range of UTF-8).
+const textsFromHeap = (m, count, text) => (count > 0 ? utf8.decode(viewOf(m, Uint8Array, text)).split('\0') : []);
 
 // One object literal per item (its shape fixed, so building 10^5 of them stays cheap; a kind number
 // is made a small integer before it indexes an array, which a double key would make a slow lookup).
-// `kinds` are the core's names of the kinds, in enum order.
-function reasonsFromHeap(count, numberView, bytes, kinds) {
-  const numbers = count > 0 ? numberView() : null;
-  const messages = textsFromHeap(count, bytes);
+// `kinds` are the core's names of the kinds, in enum order; `numbers` and `text` READ_AS_VIEWS ranges.
+function reasonsFromHeap(m, count, numberRange, text, kinds) {
+  if (count === 0) return [];
+  const numbers = viewOf(m, Float64Array, numberRange);
+  const messages = textsFromHeap(m, count, text);
   const reasons = [];
   for (let i = 0; i < count; i++) reasons.push({ kind: kinds[numbers[2 * i] | 0], count: numbers[2 * i + 1], message: messages[i] });
   return reasons;
 }
 
-function noticesFromHeap(count, numberView, bytes, kinds) {
-  const numbers = count > 0 ? numberView() : null;
-  const messages = textsFromHeap(count, bytes);
+function noticesFromHeap(m, count, numberRange, text, kinds) {
+  if (count === 0) return [];
+  const numbers = viewOf(m, Float64Array, numberRange);
+  const messages = textsFromHeap(m, count, text);
   const notices = [];
   for (let i = 0, k = 0; i < count; i++, k += 5) {
     notices.push({
@@ -121,21 +149,22 @@ function noticesFromHeap(count, numberView, bytes, kinds) {
 }
 
 function readMesh(m, layout, options) {
-  const f = readTable(m, m._rp_output_table(), layout.output);
+  const table = layout.output, { at } = table;
+  const v = readTable(m, m._rp_output_table(), table);
   const { names } = layout;
   const mesh = {
-    points: f.points, triangles: f.triangles, neighbors: f.neighbors, segments: f.segments,
-    segmentIds: f.segmentIds, vertexKinds: f.vertexKinds, triangleAttributes: f.triangleAttributes,
-    pointMarkers: f.pointMarkers, segmentMarkers: f.segmentMarkers,
-    pointAttributes: f.pointAttributes, attributesPerPoint: f.attributesPerPoint, indexBase: f.indexBase,
-    complete: f.complete === 1,
-    reasons: reasonsFromHeap(f.reasonCount, f.reasonNumbers, f.reasonText, names.reasons),
-    notices: noticesFromHeap(f.noticeCount, f.noticeNumbers, f.noticeText, names.notices),
-    stats: f.stats,
+    points: v[at.points], triangles: v[at.triangles], neighbors: v[at.neighbors], segments: v[at.segments],
+    segmentIds: v[at.segmentIds], vertexKinds: v[at.vertexKinds], triangleAttributes: v[at.triangleAttributes],
+    pointMarkers: v[at.pointMarkers], segmentMarkers: v[at.segmentMarkers],
+    pointAttributes: v[at.pointAttributes], attributesPerPoint: v[at.attributesPerPoint], indexBase: v[at.indexBase],
+    complete: v[at.complete] === 1,
+    reasons: reasonsFromHeap(m, v[at.reasonCount], v[at.reasonNumbers], v[at.reasonText], names.reasons),
+    notices: noticesFromHeap(m, v[at.noticeCount], v[at.noticeNumbers], v[at.noticeText], names.notices),
+    stats: groupOf(table, v, 'stats'),
   };
-  // (f.eventCount: events come with the extras when traced.)
-  if (options.edges) mesh.edges = f.edges, mesh.edgeMarkers = f.edgeMarkers;
-  if (options.jettison) mesh.inputToOutput = f.inputToOutput;
+  // (eventCount: events come with the extras when traced.)
+  if (options.edges) mesh.edges = v[at.edges], mesh.edgeMarkers = v[at.edgeMarkers];
+  if (options.jettison) mesh.inputToOutput = v[at.inputToOutput];
   return mesh;
 }
 
@@ -148,8 +177,7 @@ function readMesh(m, layout, options) {
  */
 export function triangulateInHeap(m, input, options, report) {
   const layout = layoutOf(m);
-  const lengths = layout.input.filter((f) => f.Type).map(({ name }) => input[name].length);
-  const inputTable = m._rp_stage_input(...lengths, input.indexBase, input.attributesPerPoint);
+  const inputTable = m._rp_stage_input(...lengthsOf(layout.input, input), input.indexBase, input.attributesPerPoint);
   if (inputTable === 0) {
     return { errorCode: 'TOO_LARGE', errorMessage: 'out of memory: the input does not fit in 4 GB of WebAssembly memory', reset: true };
   }
