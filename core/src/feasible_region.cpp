@@ -69,7 +69,8 @@ void apexDisk(const Base& b, double cotTheta, double cscTheta, double centre[2],
 
 }  // namespace
 
-bool mayMeetBound(const OptimalPointQuery& query, double theta) {
+bool mayMeetBound(const OptimalPointQuery& query, double theta, double* candidate) {
+  if (candidate) candidate[0] = candidate[1] = NAN;  // no candidate unless the polygon is complete
   Base bases[kMaxBases];
   int count = 0;
   if (query.petal) bases[count++] = {query.p, query.q};
@@ -99,6 +100,13 @@ bool mayMeetBound(const OptimalPointQuery& query, double theta) {
   for (int i = 0; i < count; ++i) {
     apexDisk(bases[i], cotTheta, cscTheta, centre, radius);
     if (distanceTo(a, centre) > radius * (1 + kMargin)) return false;
+  }
+  // The mean of the polygon's vertices lies inside it (it is convex), away from its sides: where
+  // every disk reaches that deep, it is a point that meets the bound.
+  if (candidate && a.n > 0) {
+    double sx = 0, sy = 0;
+    for (int k = 0; k < a.n; ++k) sx += a.xy[2 * k], sy += a.xy[2 * k + 1];
+    candidate[0] = sx / a.n, candidate[1] = sy / a.n;
   }
   return true;
 }

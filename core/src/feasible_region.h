@@ -15,6 +15,8 @@ namespace ruppert::detail {
 
 // False when no point gives every triangle of the query all angles >= theta (radians, in (0, pi/3]),
 // with a margin of about 1e-9 relative to the edges' lengths on the side of answering true.
-bool mayMeetBound(const OptimalPointQuery& query, double theta);
+// `candidate`, when given, receives a point to try first where the answer is true (the mean of the
+// half-planes' polygon's vertices: it often lies in every disk too), else NaN.
+bool mayMeetBound(const OptimalPointQuery& query, double theta, double* candidate = nullptr);
 
 }  // namespace ruppert::detail

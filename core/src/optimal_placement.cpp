@@ -1,6 +1,7 @@
 #include "optimal_placement.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "feasible_region.h"
 #include "predicates.h"
@@ -14,6 +15,19 @@ void OptimalPlacement::edgesOf(const Triangulation& t, const std::vector<std::ui
     const double* b = t.pt(t.dest(h));
     edges_.push_back({{a[0], a[1]}, {b[0], b[1]}, t.con[h] != kFree});
   }
+}
+
+// A point that meets the bound, if one is found: the screen's candidate when it does (two thirds of
+// the time on a cloud of points at 30 degrees), else the search's first point past the bound.
+// Maximising the smallest angle further made no fewer triangles and cost about a sixth of a mesh.
+OptimalPoint OptimalPlacement::pointMeeting(OptimalPointQuery& query, const double* guess, const double* seeds,
+                                            std::size_t seedCount) const {
+  if (std::isfinite(guess[0])) {
+    const OptimalPoint r = evaluateSteinerPoint(query, guess);
+    if (!r.encroaches && r.minAngle > theta_) return r;
+  }
+  query.goodEnough = theta_;
+  return optimalSteinerPoint(query, seeds, seedCount);
 }
 
 // Whether x can be inserted for skinny triangle s: in a triangle of the domain, destroying s (in
@@ -59,8 +73,9 @@ OptimalPlacement::Result OptimalPlacement::propose(const MeshAccess& mesh, const
     query.edges = edges_.data(), query.edgeCount = edges_.size();
     // Most searches would end in a decline (star-1 at 30 degrees: 2,993 of 3,075), which the
     // screen foresees in 99% of cases at a small part of a search's cost.
-    if (!mayMeetBound(query, theta_)) return Result::None;
-    const OptimalPoint r = optimalSteinerPoint(query, seeds, seedCount);
+    double guess[2];
+    if (!mayMeetBound(query, theta_, guess)) return Result::None;
+    const OptimalPoint r = pointMeeting(query, guess, seeds, seedCount);
     Location l;
     if (r.encroaches || !(r.minAngle > theta_) || !fits(mesh, st.slot, r.x, l)) return Result::None;
     if (mesh.newMinSin2(r.x, candidateBoundary_) >= mesh.sin2Theta) {
@@ -108,8 +123,9 @@ bool OptimalPlacement::relocation(const MeshAccess& mesh, std::uint32_t v, doubl
   OptimalPointQuery query;
   query.p = edges_[0].u, query.q = edges_[0].v, query.petal = false;
   query.edges = edges_.data(), query.edgeCount = edges_.size(), query.maxApex = kPi;
-  if (!mayMeetBound(query, theta_)) return false;
-  const OptimalPoint r = optimalSteinerPoint(query, seeds, 2);
+  double guess[2];
+  if (!mayMeetBound(query, theta_, guess)) return false;
+  const OptimalPoint r = pointMeeting(query, guess, seeds, 2);
   if (!(r.minAngle > theta_) || !mesh.representable(r.x) || mesh.tooCloseToCavity(r.x, star_)) return false;
   for (const CavityEdge& c : edges_)
     if (!(orient2d(c.u, c.v, r.x) > 0) || qualityOf(c.u, c.v, r.x).sin2MinAngle < mesh.sin2Theta) return false;

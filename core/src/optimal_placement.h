@@ -41,6 +41,7 @@ class OptimalPlacement {
   std::vector<std::uint32_t> cavity_, candidateTris_, candidateBoundary_, star_;
 
   void edgesOf(const Triangulation& t, const std::vector<std::uint32_t>& boundary);
+  OptimalPoint pointMeeting(OptimalPointQuery& query, const double* guess, const double* seeds, std::size_t seedCount) const;
   bool fits(const MeshAccess& mesh, std::uint32_t s, const double* x, Location& loc);
   bool closedFreeFan(const Triangulation& t, std::uint32_t v);
 };

@@ -157,7 +157,9 @@ OptimalPoint optimalSteinerPoint(const OptimalPointQuery& query, const double* s
   const double len = length(query.q[0] - query.p[0], query.q[1] - query.p[1]);
   double step = 0.2 * len;
   int level = 0, evaluations = 0;
-  while (step > 1e-3 * len && evaluations < 160) {
+  // A non-encroaching point's score is its smallest pseudo-angle, so beating `enough` is meeting it.
+  const double enough = std::isfinite(query.goodEnough) ? pseudoOf(query.goodEnough) : HUGE_VAL;
+  while (step > 1e-3 * len && evaluations < 160 && !(bestScore > enough)) {
     double move[2] = {best[0], best[1]};
     double moveScore = bestScore;
     for (int k = level & 1; k < 16; k += 2) {  // the odd directions at odd levels

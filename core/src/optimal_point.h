@@ -16,6 +16,7 @@
 // rejected.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 
 namespace ruppert::detail {
@@ -33,6 +34,10 @@ struct OptimalPointQuery {
   std::size_t edgeCount = 0;
   double maxApex = 0;  // radians: the apex angle at which x starts to encroach a constrained edge
   bool petal = true;   // whether the triangle (p, q, x) counts too (else p-q only places the seeds)
+  // Radians: the search may stop at the first point whose smallest angle exceeds this (infinity:
+  // maximise). Refinement needs a point that meets its bound, not the best one: stopping there made
+  // the same number of triangles over the shape families.
+  double goodEnough = HUGE_VAL;
 };
 
 struct OptimalPoint {
@@ -48,7 +53,7 @@ OptimalPoint evaluateSteinerPoint(const OptimalPointQuery& query, const double* 
 // The point that maximises f, by compass search from the best of the given seeds and of points of
 // the petal of pq (on its bisector, where the apex angle is 60 degrees and where it is theta... ).
 // Points that encroach a constrained edge count as worse than any that does not. Always returns a
-// point; the caller decides from minAngle whether to use it.
+// point; the caller decides from minAngle whether to use it. Stops early past query.goodEnough.
 OptimalPoint optimalSteinerPoint(const OptimalPointQuery& query, const double* seeds, std::size_t seedCount);
 
 }  // namespace ruppert::detail

@@ -103,3 +103,64 @@ TEST_CASE("feasible region: the largest stars fit, and beyond the cap the answer
     CHECK(mayMeetBound(query, 30 * kDeg) == (n > 64));
   }
 }
+
+// Triangle (u, v, x)'s angles at u and at v, in radians (negative when x is right of u->v).
+double baseAngle(const double* u, const double* v, const double* x) {
+  const double ex = v[0] - u[0], ey = v[1] - u[1], fx = x[0] - u[0], fy = x[1] - u[1];
+  return std::atan2(ex * fy - ey * fx, ex * fx + ey * fy);
+}
+
+TEST_CASE("feasible region: the candidate lies in every half-plane, and meets the bound on most feasible cavities", "[optimal]") {
+  std::mt19937 rng(20261203);
+  const double p[2] = {0, 0}, q[2] = {1, 0};
+  int feasible = 0, candidates = 0, meeting = 0;
+  for (int trial = 0; trial < 160; ++trial) {
+    const auto edges = randomCavity(rng, 4 + trial % 6, 0.15 + 0.1 * (trial % 5));
+    const double theta = (25 + 5 * (trial % 4)) * kDeg;
+    OptimalPointQuery query;
+    query.p = p, query.q = q, query.edges = edges.data(), query.edgeCount = edges.size(), query.maxApex = kPi;
+    double candidate[2];
+    const bool may = mayMeetBound(query, theta, candidate);
+    INFO("trial " << trial << " at " << theta / kDeg << " degrees");
+    if (!may) CHECK(std::isnan(candidate[0]));
+    if (!gridMeets(query, theta)) continue;
+    ++feasible;
+    if (std::isnan(candidate[0])) continue;
+    ++candidates;
+    // Left of the rays at theta from both ends of the petal edge and of every cavity edge.
+    CHECK(baseAngle(p, q, candidate) >= theta - 1e-9);
+    CHECK(-baseAngle(q, p, candidate) >= theta - 1e-9);
+    for (const CavityEdge& e : edges) {
+      CHECK(baseAngle(e.u, e.v, candidate) >= theta - 1e-9);
+      CHECK(-baseAngle(e.v, e.u, candidate) >= theta - 1e-9);
+    }
+    if (evaluateSteinerPoint(query, candidate).minAngle > theta) ++meeting;
+  }
+  INFO(feasible << " feasible cavities, " << candidates << " candidates, " << meeting << " meeting the bound");
+  CHECK(feasible >= 30);
+  CHECK(candidates == feasible);  // the screen says yes on every feasible cavity, with its polygon
+  CHECK(meeting * 2 >= feasible);
+}
+
+TEST_CASE("feasible region: a search told what is good enough stops past it, on the same path", "[optimal]") {
+  std::mt19937 rng(20261204);
+  const double p[2] = {0, 0}, q[2] = {1, 0};
+  int passed = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    const auto edges = randomCavity(rng, 4 + trial % 6, 0.15 + 0.1 * (trial % 5));
+    const double theta = (25 + 5 * (trial % 4)) * kDeg;
+    OptimalPointQuery query;
+    query.p = p, query.q = q, query.edges = edges.data(), query.edgeCount = edges.size(), query.maxApex = kPi;
+    const double seed[2] = {0.5, 0.3};
+    const auto best = ruppert::detail::optimalSteinerPoint(query, seed, 1);
+    query.goodEnough = theta;
+    const auto early = ruppert::detail::optimalSteinerPoint(query, seed, 1);
+    INFO("trial " << trial << ": maximised " << best.minAngle / kDeg << ", early " << early.minAngle / kDeg);
+    CHECK(early.minAngle <= best.minAngle + 1e-12);
+    if (best.minAngle > theta) {
+      ++passed;
+      CHECK(early.minAngle > theta);
+    }
+  }
+  CHECK(passed >= 30);
+}
