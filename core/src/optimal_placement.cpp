@@ -53,7 +53,9 @@ bool OptimalPlacement::fits(const MeshAccess& mesh, std::uint32_t s, const doubl
 OptimalPlacement::Result OptimalPlacement::propose(const MeshAccess& mesh, const SkinnyTriangle& st, const double* cc,
                                                    double target[2], Location& loc) {
   const Triangulation& t = mesh.tri;
-  if (fits(mesh, st.slot, st.first, loc)) {
+  firstFits_ = fits(mesh, st.slot, st.first, loc);
+  if (firstFits_) {
+    firstLoc_ = loc, firstTris_ = candidateTris_, firstBoundary_ = candidateBoundary_;
     if (mesh.newMinSin2(st.first, candidateBoundary_) >= mesh.sin2Theta) return Result::FirstFine;
   } else {
     const double centroid[2] = {(st.p[0][0] + st.p[1][0] + st.p[2][0]) / 3, (st.p[0][1] + st.p[1][1] + st.p[2][1]) / 3};
@@ -86,6 +88,14 @@ OptimalPlacement::Result OptimalPlacement::propose(const MeshAccess& mesh, const
     cavity_.swap(candidateBoundary_);
   }
   return Result::None;
+}
+
+bool OptimalPlacement::takeFirst(Location& loc, std::vector<std::uint32_t>& tris, std::vector<std::uint32_t>& boundary) {
+  if (!firstFits_) return false;
+  firstFits_ = false;
+  loc = firstLoc_;
+  tris.swap(firstTris_), boundary.swap(firstBoundary_);
+  return true;
 }
 
 // The triangles around v, by their edges opposite v (into star_), all of whose edges are free;

@@ -35,10 +35,20 @@ class OptimalPlacement {
   bool relocation(const MeshAccess& mesh, std::uint32_t v, double x[2]);
   const std::vector<std::uint32_t>& star() const { return star_; }
 
+  // After propose() returned FirstFine or None with the mesh unchanged since: whether the first
+  // choice fitted (no subsegment in the way, none encroached, not too close to a vertex), and then
+  // its location and cavity, swapped into tris and boundary, so the insertion need not find them
+  // again. Each propose() answers once; forget() drops an answer no insertion will use.
+  bool takeFirst(Location& loc, std::vector<std::uint32_t>& tris, std::vector<std::uint32_t>& boundary);
+  void forget() { firstFits_ = false; }
+
  private:
   double theta_;
   std::vector<CavityEdge> edges_;
   std::vector<std::uint32_t> cavity_, candidateTris_, candidateBoundary_, star_;
+  bool firstFits_ = false;  // the first choice's location and cavity are in first*_
+  Location firstLoc_;
+  std::vector<std::uint32_t> firstTris_, firstBoundary_;
 
   void edgesOf(const Triangulation& t, const std::vector<std::uint32_t>& boundary);
   OptimalPoint pointMeeting(OptimalPointQuery& query, const double* guess, const double* seeds, std::size_t seedCount) const;

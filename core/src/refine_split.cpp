@@ -173,13 +173,17 @@ void Refiner::splitTriangle(const BadTriangle& bt) {
     ++floorHits_;
     return;
   }
-  // As for Petal, only where no area bound applies.
-  if (skinny && o_.placement == Placement::Optimal && !(maxAreaAt(s) > 0) && optimalOrRelocate(bt, p, sh, target))
-    return;
   Location loc;
+  bool located = false;
+  // As for Petal, only where no area bound applies.
+  if (skinny && o_.placement == Placement::Optimal && !(maxAreaAt(s) > 0)) {
+    if (optimalOrRelocate(bt, p, sh, target)) return;
+    // Nothing changed since the placement looked at the first choice: its cavity is known.
+    located = optimal_.takeFirst(loc, cavityTris_, cavityBoundary_);
+  }
   refusedSplit_ = false;
   const std::uint64_t before = inserted_;
-  if (!locateOrReject(bt, target, loc)) {
+  if (!located && !locateOrReject(bt, target, loc)) {
     // (Only when nothing was inserted meanwhile: p points into the coordinates, which may move.)
     // Only for triangles over their area bound: for skinny ones, centroids cascade into ever
     // smaller skinny triangles along the forbidden subsegment (measured: A.poly at 30 degrees ran
@@ -206,6 +210,7 @@ void Refiner::splitTriangle(const BadTriangle& bt) {
 // else move a free endpoint of the shortest edge. False: neither; the first choice goes ahead.
 bool Refiner::optimalOrRelocate(const BadTriangle& bt, const double* const* p, const TriangleShape& sh, const double* first) {
   double cc[2], x[2];
+  optimal_.forget();
   if (!circumcenter(p, cc)) return false;
   const SkinnyTriangle st{bt.slot, p, sh, first, nullptr};
   Location loc;
