@@ -18,7 +18,9 @@ void buildDelaunay(MeshState& m) {
   const PreparedInput& in = m.input;
   const std::uint32_t n = in.distinctCount();
   m.inputCount = n;
-  m.tri.xy.reserve(2 * (n + 4));
+  // The input, the box corners, and as many Steiner vertices again (refinement grows from there).
+  const std::size_t vertices = 2 * (std::size_t(n) + 4) + 16;
+  m.reserve(vertices, 2 * vertices + 8);
   for (std::uint32_t v = 0; v < n; ++v) m.addVertex(in.xy[2 * v], in.xy[2 * v + 1], VertexKind::Input, -1);
   if (n < 3)
     throw Error(ErrorCode::DegenerateInput, "the input has " + std::to_string(n) +
@@ -43,8 +45,6 @@ void buildDelaunay(MeshState& m) {
   m.addVertex(lo[0], hi[1], VertexKind::Unused, -1);
   Triangulation& t = m.tri;
   const std::uint32_t c = m.boxFirst;
-  for (auto* v : {&t.tv, &t.twin}) v->reserve(3 * (2 * std::size_t(n) + 8));
-  t.con.reserve(3 * (2 * std::size_t(n) + 8));
   const std::uint32_t t0 = t.newTriangle(c, c + 1, c + 2);
   const std::uint32_t t1 = t.newTriangle(c, c + 2, c + 3);
   t.link(3 * t0 + 1, 3 * t1 + 2);  // edge c+2 -> c  and  c -> c+2

@@ -69,6 +69,10 @@ struct MeshState {
   std::uint32_t attributeCount = 0;
   std::vector<double> attributes;
 
+  void reserve(std::size_t vertices, std::size_t slots) {
+    kind.reserve(vertices), onSegment.reserve(vertices);
+    tri.reserve(vertices, slots);
+  }
   std::uint32_t addVertex(double x, double y, VertexKind k, std::int32_t segment) {
     kind.push_back(k);
     onSegment.push_back(segment);

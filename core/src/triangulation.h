@@ -65,6 +65,12 @@ class Triangulation {
     vtri[a] = vtri[b] = vtri[c] = t;
     return t;
   }
+  // Room for this many vertices and triangle slots without regrowing (a small mesh otherwise spends
+  // a sixth of its time growing these arrays from empty one doubling at a time).
+  void reserve(std::size_t vertices, std::size_t slots) {
+    xy.reserve(2 * vertices), vtri.reserve(vertices), scratch_.reserve(vertices);
+    tv.reserve(3 * slots), twin.reserve(3 * slots), con.reserve(3 * slots), mark_.reserve(slots);
+  }
   void killTriangle(std::uint32_t t) {
     tv[3 * t] = tv[3 * t + 1] = tv[3 * t + 2] = kNone;
     freeSlots.push_back(t);
