@@ -191,12 +191,15 @@ export interface Stats {
   milliseconds: number;
 }
 
-/** The trace, one entry per insertion, as a structure of arrays. */
+/**
+ * The trace, one entry per step (an insertion, or a RELOCATED move of a vertex), as a structure of
+ * arrays. Step k's mesh is the one `maxSteiner: k` gives with the same options.
+ */
 export interface Events {
   count: number;
   /** EventKind per event. */
   kind: Uint8Array;
-  /** Id of the vertex inserted. */
+  /** Id of the vertex inserted (RELOCATED: moved). */
   vertex: Uint32Array;
   /** Where: x, y per event. */
   xy: Float64Array;
@@ -205,9 +208,9 @@ export interface Events {
   b: Uint32Array;
   /** Encroaching vertex (SEGMENT_SPLIT), -1 if none. */
   by: Int32Array;
-  /** The skinny triangle's three vertices per event (CIRCUMCENTER, OFF_CENTER, REJECTED, PETAL_POINT, OPTIMAL_POINT). */
+  /** The skinny triangle's three vertices per event (every kind but SEGMENT_SPLIT). */
   triangle: Uint32Array;
-  /** Rejected circumcenter: x, y per event (REJECTED). */
+  /** x, y per event: the rejected circumcenter (REJECTED); where the vertex was before (RELOCATED). */
   circumcenter: Float64Array;
 }
 
@@ -305,6 +308,8 @@ export declare const EventKind: Readonly<{
   SEGMENT_SPLIT: 0; CIRCUMCENTER: 1; OFF_CENTER: 2; REJECTED: 3;
   /** The point placement 'petal' or 'optimal' chose instead of the off-center (never rejected). */
   PETAL_POINT: 4; OPTIMAL_POINT: 5;
+  /** A free vertex the placement 'optimal' moved from `circumcenter` to `xy` (no vertex added). */
+  RELOCATED: 6;
 }>;
 export declare const NO_NEIGHBOR: -1;
 export declare const NO_INPUT_SEGMENT: -1;

@@ -26,7 +26,8 @@ export const VertexKind = enumObject(NAMES.vertexKinds);
 /**
  * EventKind values in mesh.events.kind (ruppert::EventKind): SEGMENT_SPLIT 0, CIRCUMCENTER 1,
  * OFF_CENTER 2, REJECTED 3, and the point placement 'petal' or 'optimal' chose instead of the
- * off-center (never rejected): PETAL_POINT 4, OPTIMAL_POINT 5.
+ * off-center (never rejected): PETAL_POINT 4, OPTIMAL_POINT 5; and RELOCATED 6, a free vertex the
+ * 'optimal' placement moved (no vertex added; it uses one unit of maxSteiner, as an insertion does).
  */
 export const EventKind = enumObject(NAMES.events);
 /** mesh.neighbors entry for an edge on the domain boundary. */

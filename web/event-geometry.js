@@ -51,3 +51,41 @@ export function rejectedIsCircumcenter(events, e, points) {
   const py = events.circumcenter[2 * e + 1];
   return Math.hypot(px - c.x, py - c.y) <= RELATIVE * Math.max(c.r, 1e-300) + 1e-12 * Math.hypot(c.x, c.y);
 }
+
+// Events of kind RELOCATED (6, EventKind.RELOCATED): a vertex moved, no vertex added.
+const RELOCATED = 6;
+const lastMove = new WeakMap();  // events -> index of the last RELOCATED event (-1: none)
+let rewound = { events: null, k: -1, final: null, points: null };
+
+/**
+ * The points as they were after the first k events: the final mesh's points with every later move
+ * (RELOCATED, from `circumcenter` to `xy`) undone. Vertex numbers are the final mesh's; a vertex
+ * inserted later keeps its final place (nothing refers to it before its insertion). Without moves
+ * after step k, `final` itself.
+ */
+export function pointsAtStep(events, k, final) {
+  let last = lastMove.get(events);
+  if (last === undefined) {
+    last = -1;
+    for (let e = events.count - 1; e >= 0 && last < 0; e--) if (events.kind[e] === RELOCATED) last = e;
+    lastMove.set(events, last);
+  }
+  if (last < k) return final;
+  if (rewound.events === events && rewound.k === k && rewound.final === final) return rewound.points;
+  const points = Float64Array.from(final);
+  for (let e = last; e >= k; e--) {
+    if (events.kind[e] !== RELOCATED) continue;
+    const v = events.vertex[e];
+    points[2 * v] = events.circumcenter[2 * e];
+    points[2 * v + 1] = events.circumcenter[2 * e + 1];
+  }
+  rewound = { events, k, final, points };
+  return points;
+}
+
+/** How many of the first k events inserted a vertex (all but RELOCATED). */
+export function insertionsBefore(events, k) {
+  let n = 0;
+  for (let e = 0; e < k; e++) n += events.kind[e] !== RELOCATED;
+  return n;
+}

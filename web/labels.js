@@ -25,6 +25,7 @@ export const EVENT_KIND_LABELS = {
   OFF_CENTER: 'off-center',
   PETAL_POINT: 'petal point',
   OPTIMAL_POINT: 'optimal point',
+  RELOCATED: 'relocated vertex',
   REJECTED: { circumcenter: 'rejected circumcenter', offCenter: 'rejected off-center' },
 };
 

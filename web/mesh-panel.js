@@ -84,7 +84,7 @@ export function drawHistogram(canvas, histogram) {
   }
 }
 
-const { SEGMENT_SPLIT, CIRCUMCENTER, OFF_CENTER, REJECTED, PETAL_POINT, OPTIMAL_POINT } = EventKind;
+const { SEGMENT_SPLIT, CIRCUMCENTER, OFF_CENTER, REJECTED, PETAL_POINT, OPTIMAL_POINT, RELOCATED } = EventKind;
 const L = EVENT_KIND_LABELS;
 
 /** Event names, in the panel's order, and how to tell each from the trace (points: the final mesh's). */
@@ -95,15 +95,26 @@ const EVENT_NAMES = [
   [L.OFF_CENTER, (ev, e) => ev.kind[e] === OFF_CENTER],
   [L.PETAL_POINT, (ev, e) => ev.kind[e] === PETAL_POINT],
   [L.OPTIMAL_POINT, (ev, e) => ev.kind[e] === OPTIMAL_POINT],
+  [L.RELOCATED, (ev, e) => ev.kind[e] === RELOCATED],
   [L.REJECTED.circumcenter, (ev, e, p) => ev.kind[e] === REJECTED && rejectedIsCircumcenter(ev, e, p)],
   [L.REJECTED.offCenter, (ev, e, p) => ev.kind[e] === REJECTED && !rejectedIsCircumcenter(ev, e, p)],
 ];
 
-/** The count of each event kind: [[name, count], ...] (every kind, zeros included). */
+/**
+ * The count of each event kind: [[name, count], ...] (every kind, zeros included). `points`: the
+ * final mesh's; each event is measured with the points as they were before it (undoing, from the
+ * last event back, the moves of RELOCATED events).
+ */
 export function countEvents(events, points) {
   const counts = EVENT_NAMES.map(([name]) => [name, 0]);
-  for (let e = 0; e < events.count; e++) {
-    const i = EVENT_NAMES.findIndex(([, is]) => is(events, e, points));
+  let p = points;
+  for (let e = events.count - 1; e >= 0; e--) {
+    if (events.kind[e] === RELOCATED) {
+      if (p === points) p = Float64Array.from(points);
+      const v = events.vertex[e];
+      p[2 * v] = events.circumcenter[2 * e], p[2 * v + 1] = events.circumcenter[2 * e + 1];
+    }
+    const i = EVENT_NAMES.findIndex(([, is]) => is(events, e, p));
     if (i >= 0) counts[i][1]++;
   }
   return counts;

@@ -1,7 +1,7 @@
 // Step mode's overlay: the event that made the step on screen, drawn over that step's mesh on the
 // renderer's 2D canvas (render.js calls it after the drawing, in both the WebGL and the 2D paths).
 import { EventKind } from '../wasm/index.js';
-import { circumcircle, splitShell } from './event-geometry.js';
+import { circumcircle, insertionsBefore, pointsAtStep, splitShell } from './event-geometry.js';
 
 const STEP_COLOURS = {
   step: '#d6336c',
@@ -9,24 +9,32 @@ const STEP_COLOURS = {
   newVertex: '#d6336c',
 };
 
-/** Whether `mesh`, the mesh on screen, is that of step s.index (it arrives from a worker). */
+/**
+ * Whether `mesh`, the mesh on screen, is that of step s.index (it arrives from a worker): it has the
+ * input's points plus one per insertion among the first s.index events (a RELOCATED event moves a
+ * vertex and adds none).
+ */
 export function showsStep(step, mesh) {
-  return step.shown !== null && step.shown === mesh
-    && step.shown.points.length === step.final.points.length - 2 * (step.events.count - step.index);
+  if (step.shown === null || step.shown !== mesh) return false;
+  const { events } = step;
+  const added = (k) => insertionsBefore(events, k);
+  return step.shown.points.length === step.final.points.length - 2 * (added(events.count) - added(step.index));
 }
 
 /**
  * Step mode: the event that made step `index` (the index-th insertion) drawn over that step's
  * mesh: its new triangles (the star of the new vertex: the cavity it retriangulated), the
  * skinny triangle and its circumcircle, the encroached subsegment and its diametral circle, the
- * rejected point. Vertex numbers are those of the final mesh, the same in every step. `mesh`:
+ * rejected point; for a RELOCATED event, the move, as an arrow from where the vertex was. Vertex
+ * numbers are those of the final mesh, the same in every step; their places are those before the
+ * event (pointsAtStep: later moves undone). `mesh`:
  * the renderer's mesh on screen; `world`/`screen` set the context's transform, `px` one CSS pixel.
  */
 export function drawStep(ctx, mesh, step, view, world, screen, px) {
   const { final, events, index } = step;
   if (!events || events.count === 0 || index === 0) return;
   const e = index - 1;
-  const p = final.points;
+  const p = pointsAtStep(events, e, final.points);
   const at = (v) => view.toScreen(p[2 * v], p[2 * v + 1]);
   if (showsStep(step, mesh)) drawNewTriangles(ctx, step.shown, events.vertex[e], world, screen, px);
 
@@ -81,6 +89,20 @@ export function drawStep(ctx, mesh, step, view, world, screen, px) {
     ctx.beginPath();
     ctx.moveTo(q.x, q.y - 12); ctx.lineTo(q.x + 12, q.y); ctx.lineTo(q.x, q.y + 12); ctx.lineTo(q.x - 12, q.y); ctx.closePath();
     ctx.strokeStyle = STEP_COLOURS.stepSecondary; ctx.lineWidth = 2.5; ctx.stroke();
+  } else if (kind === EventKind.RELOCATED) {  // the skinny triangle as it was, and the move
+    triangle(STEP_COLOURS.stepSecondary);
+    const from = view.toScreen(events.circumcenter[2 * e], events.circumcenter[2 * e + 1]);
+    const to = view.toScreen(events.xy[2 * e], events.xy[2 * e + 1]);
+    const angle = Math.atan2(to.y - from.y, to.x - from.x);
+    ctx.beginPath();
+    ctx.moveTo(from.x, from.y); ctx.lineTo(to.x, to.y);
+    for (const side of [-1, 1]) {
+      ctx.moveTo(to.x, to.y);
+      ctx.lineTo(to.x - 10 * Math.cos(angle + side * 0.45), to.y - 10 * Math.sin(angle + side * 0.45));
+    }
+    ctx.strokeStyle = STEP_COLOURS.stepSecondary; ctx.lineWidth = 2.5; ctx.stroke();
+    ctx.beginPath(); ctx.arc(from.x, from.y, 4, 0, 2 * Math.PI);
+    ctx.strokeStyle = STEP_COLOURS.stepSecondary; ctx.lineWidth = 2; ctx.stroke();
   } else if (kind === EventKind.REJECTED) {
     triangle(STEP_COLOURS.stepSecondary);
     subsegment(STEP_COLOURS.step);

@@ -1,8 +1,9 @@
 // The mesh as it was at every step of the refinement.
 //
-// Step k is the triangulation after k Steiner insertions: exactly the mesh that `maxSteiner: k`
-// gives with the same options (refinement is deterministic, so its first k insertions are those of
-// the full run, with the same vertex numbers), and step 0 is the constrained Delaunay
+// Step k is the triangulation after k events (Steiner insertions, and the optimal placement's moves
+// of free vertices, each of which uses one unit of the budget): exactly the mesh that `maxSteiner: k`
+// gives with the same options (refinement is deterministic and a trace changes nothing, so its
+// first k events are those of the full run, with the same vertex numbers), and step 0 is the constrained Delaunay
 // triangulation before refinement. Each step is meshed on demand in a worker of its own, so the
 // page's main mesher is never interrupted. Requests do not abort one another (aborting terminates
 // a worker, and a new one costs more than most steps): while one step is being meshed, only the

@@ -1,10 +1,10 @@
 // Step-by-step mode: play, pause, step and scrub through the refinement recorded in mesh.events
-// (options.trace). Position k (0..events.count) is the mesh after k Steiner insertions, the k-th
-// event being the one that made it; position 0 is the constrained Delaunay triangulation before
+// (options.trace). Position k (0..events.count) is the mesh after k events (Steiner insertions, and
+// the moves of free vertices the optimal placement makes), the k-th event being the one that made it; position 0 is the constrained Delaunay triangulation before
 // refinement. StepReplay (step-replay.js) provides each position's mesh.
 
 import { EventKind } from '../wasm/index.js';
-import { rejectedIsCircumcenter, splitShell } from './event-geometry.js';
+import { pointsAtStep, rejectedIsCircumcenter, splitShell } from './event-geometry.js';
 import { EVENT_KIND_LABELS as L } from './labels.js';
 
 const fmt = (v) => (Math.abs(v) >= 1e4 || (Math.abs(v) < 1e-3 && v !== 0) ? v.toExponential(3) : Number(v.toFixed(4)).toString());
@@ -31,15 +31,17 @@ export function describeEvent(events, e, context = null) {
   const vertex = events.vertex[e];
   const [i, j, k] = [events.triangle[3 * e], events.triangle[3 * e + 1], events.triangle[3 * e + 2]];
   let triangle = `(${i}, ${j}, ${k})`;
-  if (context?.points && i >= 0 && events.kind[e] !== EventKind.SEGMENT_SPLIT) {
-    const angle = smallestAngle(context.points, i, j, k);
+  // The points as they were before this event (a later RELOCATED event may have moved some).
+  const points = context?.points ? pointsAtStep(events, e, context.points) : null;
+  if (points && i >= 0 && events.kind[e] !== EventKind.SEGMENT_SPLIT) {
+    const angle = smallestAngle(points, i, j, k);
     const bound = context.minAngle ?? 0;
     triangle += ` (smallest angle ${angle.toFixed(2)}°${angle < bound ? ` < ${bound}°` : ''})`;
   }
   switch (kind) {
     case EventKind.SEGMENT_SPLIT: {
       const by = events.by[e];
-      const shell = context?.points ? splitShell(events, e, context.points) : null;
+      const shell = points ? splitShell(events, e, points) : null;
       const at = shell === null ? `at its midpoint ${where}`
         : `on the concentric shell of radius ${fmt(shell.radius)} around vertex ${shell.center} (a power of two, §6.6), at ${where}`;
       return `Split subsegment (${events.a[e]}, ${events.b[e]})${by >= 0 ? `, encroached by vertex ${by},` : ''} ${at}: vertex ${vertex}.`;
@@ -49,7 +51,7 @@ export function describeEvent(events, e, context = null) {
     case EventKind.OFF_CENTER:
       return `Inserted the ${L.OFF_CENTER} of skinny triangle ${triangle} at ${where}: vertex ${vertex}.`;
     case EventKind.REJECTED: {
-      const circum = !context?.points || rejectedIsCircumcenter(events, e, context.points);
+      const circum = !points || rejectedIsCircumcenter(events, e, points);
       // Petal and optimal points are never rejected (they encroach nothing): what is, is the first choice.
       const what = circum ? L.CIRCUMCENTER : L.OFF_CENTER;
       return `The ${what} (${fmt(events.circumcenter[2 * e])}, ${fmt(events.circumcenter[2 * e + 1])}) of ${triangle} ` +
@@ -59,6 +61,9 @@ export function describeEvent(events, e, context = null) {
       return `Inserted the ${L.PETAL_POINT} of skinny triangle ${triangle} at ${where} (its off-center would have made a skinny triangle): vertex ${vertex}.`;
     case EventKind.OPTIMAL_POINT:
       return `Inserted the ${L.OPTIMAL_POINT} of skinny triangle ${triangle} at ${where} (its off-center would have made a skinny triangle): vertex ${vertex}.`;
+    case EventKind.RELOCATED:
+      return `Moved vertex ${vertex} from (${fmt(events.circumcenter[2 * e])}, ${fmt(events.circumcenter[2 * e + 1])}) to ${where}: ` +
+        `no point fixed skinny triangle ${triangle}, so an endpoint of its shortest edge moved to where every triangle around it meets the bound.`;
     default:
       return `Event of unknown kind ${kind}.`;
   }

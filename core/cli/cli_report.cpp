@@ -106,6 +106,7 @@ void traceTo(TextOut& out, const Mesh& mesh) {
       out << ",\"triangle\":[" << e.t0 << ',' << e.t1 << ',' << e.t2 << ']';
     }
     if (e.kind == EventKind::Rejected) out << ",\"cx\":" << real(e.cx) << ",\"cy\":" << real(e.cy);
+    if (e.kind == EventKind::Relocated) out << ",\"from\":[" << real(e.cx) << ',' << real(e.cy) << ']';
     out << "}\n";
   }
 }

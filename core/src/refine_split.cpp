@@ -225,17 +225,23 @@ bool Refiner::optimalOrRelocate(const BadTriangle& bt, const double* const* p, c
   }
   const std::uint32_t ends[2] = {t_.tv[3 * bt.slot + (sh.shortestEdge + 1) % 3], t_.tv[3 * bt.slot + (sh.shortestEdge + 2) % 3]};
   for (std::uint32_t v : ends)
-    if (relocate(v)) return true;
+    if (relocate(v, bt)) return true;
   return false;
 }
 
-bool Refiner::relocate(std::uint32_t v) {
-  if (o_.trace || v < m_.inputCount || (m_.kind[v] != VertexKind::Interior && m_.kind[v] != VertexKind::OffCenter))
-    return false;
+bool Refiner::relocate(std::uint32_t v, const BadTriangle& bt) {
+  if (v < m_.inputCount || (m_.kind[v] != VertexKind::Interior && m_.kind[v] != VertexKind::OffCenter)) return false;
   if (relocations_.size() <= v) relocations_.resize(t_.vertexCount(), 0);
   double x[2];
   if (relocations_[v] >= kMaxRelocations || !mayInsert() || !optimal_.relocation(mesh_, v, x)) return false;
   if (m_.attributeCount) reinterpolateMoved(v, x);
+  if (o_.trace) {
+    Event e;
+    e.kind = EventKind::Relocated;
+    e.vertex = v, e.x = x[0], e.y = x[1], e.cx = t_.xy[2 * v], e.cy = t_.xy[2 * v + 1];
+    e.t0 = bt.a, e.t1 = bt.b, e.t2 = bt.c;
+    out_.events.push_back(e);
+  }
   t_.xy[2 * v] = x[0], t_.xy[2 * v + 1] = x[1];
   ++relocations_[v], ++inserted_;
   // The star's edges, and those of the triangles beyond it, may no longer be locally Delaunay.

@@ -263,9 +263,10 @@ class Refiner {
   // every triangle of its star meets the bound (OptimalPlacement::relocation), then restore the
   // Delaunay property by flips and re-check what changed. Each vertex moves at most
   // kMaxRelocations times and every move counts against the Steiner budget, so refinement still
-  // ends. Not with a trace: the replay knows only insertions.
+  // ends. Traced as EventKind::Relocated (for bad triangle bt): a trace changes nothing, so that
+  // the replay's step k is the run's.
   static constexpr std::uint8_t kMaxRelocations = 4;
-  bool relocate(std::uint32_t v);
+  bool relocate(std::uint32_t v, const BadTriangle& bt);
 
   // Locate target for bad triangle bt. Where it lies beyond or on a subsegment, or encroaches one on
   // its cavity's boundary (§6.2, §6.3), it is rejected and those subsegments are split instead;

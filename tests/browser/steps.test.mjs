@@ -1,8 +1,9 @@
 // Step-by-step mode: the trace (options.trace) played, stepped and scrubbed; step k shows the mesh
-// after k insertions, the one `maxSteiner: k` gives through the package.
+// after k events (insertions, and moves of free vertices), the one `maxSteiner: k` gives through the
+// package.
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
-import { init } from '../../wasm/index.js';
+import { EventKind, init } from '../../wasm/index.js';
 import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/drawing.js';
 import { presetDrawing } from '../../web/presets.js';
 import { SCREENSHOTS, canvasFingerprint, launch, openPage, settle } from './harness.mjs';
@@ -41,9 +42,15 @@ test('step mode records the events and steps through them', async () => {
   assert.equal(first.index, 0);
   assert.match(first.what, /before refinement/);
   assert.ok(first.count > 5, `${first.count} events`);
-  // Every event inserts one vertex: the mesh has the input's points plus one per event.
+  // Step mode meshes what the page meshes without it (a trace changes nothing), and every event but
+  // a RELOCATED move inserts one vertex.
   const vertices = Number((await page.locator('#stat-vertices').textContent()).replace(/\D/g, ''));
-  assert.equal(vertices, presetDrawing('comb').points.length / 2 + first.count);
+  const drawing = { ...presetDrawing('comb'), options: { ...DEFAULT_OPTIONS } };
+  const traced = (await init()).triangulate(toPlc(drawing), toMeshOptions(drawing, { trace: true }));
+  const plain = (await init()).triangulate(toPlc(drawing), toMeshOptions(drawing));
+  assert.equal(traced.events.count, first.count);
+  assert.equal(vertices, plain.stats.vertices);
+  assert.equal(vertices, presetDrawing('comb').points.length / 2 + insertions(traced.events, first.count));
 
   const picture = await canvasFingerprint(page);
   await page.click('#step-forward');
@@ -67,6 +74,13 @@ test('step mode records the events and steps through them', async () => {
   assert.equal(parseStep(await stepInfo()).index, Math.floor(first.count / 2));
 });
 
+/** How many of the first k events insert a vertex (all but RELOCATED moves). */
+function insertions(events, k) {
+  let n = 0;
+  for (let e = 0; e < k; e++) n += events.kind[e] !== EventKind.RELOCATED;
+  return n;
+}
+
 /** Waits until the page shows step k's mesh; returns its counts as the page states them. */
 async function shownStep(k) {
   await page.waitForFunction((want) => document.body.dataset.stepShown === String(want), k, { timeout: 20_000 });
@@ -78,22 +92,28 @@ async function shownStep(k) {
 
 test('step k shows the mesh that maxSteiner: k gives through the package', async () => {
   const mesher = await init();
-  for (const preset of ['comb', 'fan']) {
+  // two-sizes: its trace has RELOCATED moves, each a step that adds no vertex.
+  for (const preset of ['comb', 'fan', 'two-sizes']) {
     await page.selectOption('#preset', preset);
     assert.equal(await settle(page), 'done');
     const drawing = { ...presetDrawing(preset), options: { ...DEFAULT_OPTIONS } };  // the page's defaults
     const plc = toPlc(drawing);
     const options = toMeshOptions(drawing, { trace: true });
+    const { events } = mesher.triangulate(plc, options);
     const { count } = parseStep(await stepInfo());
-    for (const k of [0, 1, 2, Math.floor(count / 3), count - 1, count]) {
+    assert.equal(count, events.count);
+    const moves = [];
+    for (let e = 0; e < count; e++) if (events.kind[e] === EventKind.RELOCATED) moves.push(e + 1);
+    if (preset === 'two-sizes') assert.ok(moves.length > 0, 'two-sizes no longer relocates: pick another preset');
+    for (const k of [0, 1, 2, Math.floor(count / 3), ...moves.slice(0, 2), count - 1, count]) {
       await page.fill('#step-scrub', String(k));
       const shown = await shownStep(k);
       const expected = mesher.triangulate(plc, { ...options, trace: false, maxSteiner: k });
       assert.equal(shown.k, k);
       assert.equal(shown.vertices, expected.stats.vertices, `${preset} step ${k}: vertices`);
       assert.equal(shown.triangles, expected.stats.triangles, `${preset} step ${k}: triangles`);
-      // Each insertion adds one vertex: step k has the input's points plus k.
-      assert.equal(expected.stats.vertices, plc.points.length / 2 + k, `${preset} step ${k}`);
+      // Each insertion adds one vertex (a move none): step k has the input's points plus its insertions.
+      assert.equal(expected.stats.vertices, plc.points.length / 2 + insertions(events, k), `${preset} step ${k}`);
     }
     await page.screenshot({ path: `${SCREENSHOTS}step-${preset}-middle.png` });
   }
@@ -154,6 +174,7 @@ test('each kind of event is described with its geometry', async () => {
         : /^Split subsegment \(\d+, \d+\).* on the concentric shell of radius [\d.e+-]+ around vertex \d+/.test(what) ? 'shell split'
           : /^Inserted the (circumcenter|off-center) of .*triangle \(\d+, \d+, \d+\)/.test(what) ? 'triangle'
           : /^Inserted the optimal point of .*triangle \(\d+, \d+, \d+\) .*its off-center would have made a skinny triangle/.test(what) ? 'optimal point'
+          : /^Moved vertex \d+ from \([-\d.e+]+, [-\d.e+]+\) to \([-\d.e+]+, [-\d.e+]+\): no point fixed skinny triangle \(\d+, \d+, \d+\)/.test(what) ? 'relocated vertex'
             : /^The (circumcenter|off-center) \(.*\) of \(\d+, \d+, \d+\)( \(smallest angle [\d.]+°( < [\d.]+°)?\))? encroached subsegment \(\d+, \d+\): rejected/.test(what)
               ? `rejected ${/^The (\S+)/.exec(what)[1]}` : 'unknown';
       assert.notEqual(kind, 'unknown', what);
@@ -166,7 +187,8 @@ test('each kind of event is described with its geometry', async () => {
   // The fan (5 degree input angles) splits on concentric shells, and with off-centers the point it
   // rejects is sometimes the off-center, not the circumcenter: each is named as what it is. The
   // default placement puts an optimal point where an off-center would make a skinny triangle.
-  for (const kind of ['split', 'shell split', 'triangle', 'optimal point', 'rejected off-center', 'rejected circumcenter']) {
+  // two-sizes moves free vertices where no point fixes a skinny triangle.
+  for (const kind of ['split', 'shell split', 'triangle', 'optimal point', 'relocated vertex', 'rejected off-center', 'rejected circumcenter']) {
     assert.ok(seen.has(kind), `${kind} not seen among ${[...seen].join(', ')}`);
   }
 });

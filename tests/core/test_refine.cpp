@@ -2,6 +2,7 @@
 // area bounds, the Steiner budget and termination on inputs built to make refinement run away.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <random>
@@ -533,12 +534,18 @@ TEST_CASE("the trace names petal and optimal points as such", "[refine][events]"
       o.trace = true;
       const Mesh mesh = ruppert::triangulate(g.plc, o);
       std::size_t petal = 0, optimal = 0;
-      for (const ruppert::Event& e : mesh.events) {
+      // A vertex ends where its last event put it (a later Relocated event may move it).
+      std::vector<std::size_t> last(mesh.vertexKinds.size(), mesh.events.size());
+      for (std::size_t i = 0; i < mesh.events.size(); ++i)
+        if (mesh.events[i].vertex < last.size()) last[mesh.events[i].vertex] = i;
+      for (std::size_t i = 0; i < mesh.events.size(); ++i) {
+        const ruppert::Event& e = mesh.events[i];
         if (e.kind != EventKind::PetalPoint && e.kind != EventKind::OptimalPoint) continue;
         (e.kind == EventKind::PetalPoint ? petal : optimal) += 1;
         REQUIRE(e.vertex < mesh.vertexKinds.size());
-        CHECK(mesh.points[2 * e.vertex] == e.x);
-        CHECK(mesh.points[2 * e.vertex + 1] == e.y);
+        const ruppert::Event& at = mesh.events[last[e.vertex]];
+        CHECK(mesh.points[2 * e.vertex] == at.x);
+        CHECK(mesh.points[2 * e.vertex + 1] == at.y);
         CHECK(mesh.vertexKinds[e.vertex] == static_cast<std::uint8_t>(ruppert::VertexKind::OffCenter));
       }
       INFO("placement " << int(placement) << ": " << petal << " petal points, " << optimal << " optimal points");
@@ -551,4 +558,48 @@ TEST_CASE("the trace names petal and optimal points as such", "[refine][events]"
   INFO(withPetal << " and " << withOptimal << " of " << families << " families with petal / optimal points");
   CHECK(2 * withPetal > families);
   CHECK(2 * withOptimal > families);
+}
+
+// The page replays a run step by step: step k is the mesh maxSteiner = k gives without a trace, drawn
+// with the trace's event k. So a trace must change nothing, relocations (Placement::Optimal's moves
+// of free vertices) included, and each event must use one unit of the budget.
+TEST_CASE("a trace changes nothing: relocations are events, and step k is the run with maxSteiner k", "[refine][events]") {
+  using ruppert::EventKind;
+  const ruppert_test::GeneratedPlc g = ruppert_test::randomPointsInSquare(7, 300);
+  Options o;
+  o.minAngle = 30;
+  const Mesh plain = ruppert::triangulate(g.plc, o);
+  o.trace = true;
+  const Mesh traced = ruppert::triangulate(g.plc, o);
+  CHECK(traced.points == plain.points);
+  CHECK(traced.triangles == plain.triangles);
+  std::size_t firstMove = traced.events.size(), moves = 0;
+  for (std::size_t i = 0; i < traced.events.size(); ++i) {
+    const ruppert::Event& e = traced.events[i];
+    if (e.kind != EventKind::Relocated) continue;
+    ++moves, firstMove = std::min(firstMove, i);
+    CHECK((e.x != e.cx || e.y != e.cy));
+    CHECK(e.vertex >= g.plc.points.size() / 2);
+  }
+  INFO(moves << " relocations among " << traced.events.size() << " events");
+  REQUIRE(moves > 0);  // else this input no longer tests what it is for
+  CHECK(traced.points.size() / 2 == g.plc.points.size() / 2 + traced.events.size() - moves);
+  for (std::size_t k : {firstMove, firstMove + 1, firstMove + 2, traced.events.size() / 2}) {
+    INFO("budget " << k);
+    Options budget = o;
+    budget.trace = false, budget.maxSteiner = k;
+    const Mesh step = ruppert::triangulate(g.plc, budget);
+    budget.trace = true;
+    const Mesh stepTraced = ruppert::triangulate(g.plc, budget);
+    CHECK(step.points == stepTraced.points);
+    CHECK(step.triangles == stepTraced.triangles);
+    REQUIRE(stepTraced.events.size() == k);
+    std::size_t inserted = 0;
+    for (std::size_t i = 0; i < k; ++i) {
+      CHECK(stepTraced.events[i].kind == traced.events[i].kind);
+      CHECK(stepTraced.events[i].x == traced.events[i].x);
+      inserted += traced.events[i].kind != EventKind::Relocated;
+    }
+    CHECK(step.points.size() / 2 == g.plc.points.size() / 2 + inserted);
+  }
 }

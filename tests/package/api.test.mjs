@@ -4,7 +4,7 @@ import { existsSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { test } from 'node:test';
 import { gzipSync } from 'node:zlib';
-import { init, MeshError, ERROR_CODES, VertexKind, parsePoly, toPoly, toSvg } from 'ruppert';
+import { init, MeshError, ERROR_CODES, EventKind, VertexKind, parsePoly, toPoly, toSvg } from 'ruppert';
 import { validateMesh, triangleArea } from './validate-mesh.mjs';
 
 const dataDir = process.env.RUPPERT_SHARED_DATA;
@@ -345,6 +345,43 @@ test('trace records every insertion as typed arrays', async () => {
   assert.ok(mesh.events.count >= inserted, `${mesh.events.count} events for ${inserted} new vertices`);
   assert.equal(mesh.events.xy.length, 2 * mesh.events.count);
   assert.equal(mesher.triangulate(square, { minAngle: 30, maxArea: 0.01 }).events, undefined);
+});
+
+// The page's replay shows step k as the mesh maxSteiner: k gives, with the trace's event k: a trace
+// must change nothing, and the optimal placement's moves of free vertices are events of their own.
+test('a trace changes nothing: RELOCATED moves are events, and step k is maxSteiner: k', async () => {
+  const mesher = await init();
+  let seed = 12345;
+  const random = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
+  const points = [0, 0, 1, 0, 1, 1, 0, 1];
+  for (let i = 0; i < 300; i++) points.push(random(), random());
+  const plc = { points, segments: [0, 1, 1, 2, 2, 3, 3, 0] };
+  const plain = mesher.triangulate(plc, { minAngle: 30 });
+  const traced = mesher.triangulate(plc, { minAngle: 30, trace: true });
+  assert.deepEqual(traced.points, plain.points);
+  assert.deepEqual(traced.triangles, plain.triangles);
+  const { events } = traced;
+  const moves = [];
+  for (let e = 0; e < events.count; e++) {
+    if (events.kind[e] !== EventKind.RELOCATED) continue;
+    moves.push(e);
+    assert.ok(events.xy[2 * e] !== events.circumcenter[2 * e] || events.xy[2 * e + 1] !== events.circumcenter[2 * e + 1]);
+  }
+  assert.ok(moves.length > 0, 'no RELOCATED event: this input no longer tests what it is for');
+  assert.equal(traced.points.length / 2, points.length / 2 + events.count - moves.length);
+  for (const k of [moves[0], moves[0] + 1, events.count - 1]) {
+    const step = mesher.triangulate(plc, { minAngle: 30, maxSteiner: k });
+    const stepTraced = mesher.triangulate(plc, { minAngle: 30, maxSteiner: k, trace: true });
+    assert.deepEqual(step.points, stepTraced.points, `step ${k}`);
+    assert.equal(stepTraced.events.count, k);
+    assert.deepEqual(stepTraced.events.kind, events.kind.subarray(0, k));
+    // The moved vertex is where the move put it, until a later event moves it again.
+    const e = moves[0];
+    if (k === e + 1) {
+      const v = events.vertex[e];
+      assert.deepEqual([step.points[2 * v], step.points[2 * v + 1]], [events.xy[2 * e], events.xy[2 * e + 1]]);
+    }
+  }
 });
 
 // Notices and reasons come back through the heap (wasm/heap-call.js), not as embind objects.

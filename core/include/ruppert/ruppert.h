@@ -318,23 +318,27 @@ enum class EventKind : std::uint8_t {
   // off-center, inserted at (x, y). Never rejected: both choose only points that encroach nothing.
   PetalPoint = 4,
   OptimalPoint = 5,
+  // Placement::Optimal, where no point meets the bound for (t0,t1,t2): an endpoint of its shortest
+  // edge, `vertex` (a free vertex refinement placed), moved from (cx, cy) to (x, y). No vertex is
+  // added; the move counts against the Steiner budget like an insertion.
+  Relocated = 6,
 };
 // JavaScript's EventKind keys; the CLI's --trace file spells them in camelCase ("segmentSplit").
 inline constexpr const char* kEventKindNames[] = {"SEGMENT_SPLIT", "CIRCUMCENTER", "OFF_CENTER", "REJECTED",
-                                                  "PETAL_POINT", "OPTIMAL_POINT"};
-static_assert(detail::countOf(kEventKindNames) == 1 + static_cast<std::size_t>(EventKind::OptimalPoint));
+                                                  "PETAL_POINT", "OPTIMAL_POINT", "RELOCATED"};
+static_assert(detail::countOf(kEventKindNames) == 1 + static_cast<std::size_t>(EventKind::Relocated));
 constexpr const char* enumName(EventKind k) { return detail::nameIn(kEventKindNames, k); }
 
 // Vertex ids are indices into Mesh::points, or kNoVertex for a vertex that is not in the output (in
 // the bounding-box variant, vertices inserted outside the domain are removed with it).
 struct Event {
   EventKind kind;
-  std::uint32_t vertex = 0;          // id of the vertex inserted
+  std::uint32_t vertex = 0;          // id of the vertex inserted (Relocated: moved)
   double x = 0, y = 0;               // where
   std::uint32_t a = 0, b = 0;        // subsegment endpoints (SegmentSplit, Rejected)
   std::int64_t by = -1;              // encroaching vertex (SegmentSplit), -1 if none
-  std::uint32_t t0 = 0, t1 = 0, t2 = 0;  // skinny triangle's vertices (Circumcenter, OffCenter, Rejected)
-  double cx = 0, cy = 0;             // rejected circumcenter (Rejected)
+  std::uint32_t t0 = 0, t1 = 0, t2 = 0;  // skinny triangle's vertices (all but SegmentSplit)
+  double cx = 0, cy = 0;             // rejected circumcenter (Rejected); where the vertex was (Relocated)
 };
 
 // Boundary markers (Triangle's convention), in Mesh::pointMarkers, segmentMarkers and edgeMarkers:
