@@ -3,12 +3,12 @@
 //
 //   host -> page  { type: 'ruppert:load', poly: '<.poly text>', id,
 //                   options: { minAngle, maxArea, placement, algorithm, encroachment, maxSteiner } }
-//                 { type: 'ruppert:step', index }     show the mesh after `index` insertions
+//                 { type: 'ruppert:step', index }     show the mesh after `index` steps (insertions or moves)
 //                                                     (turns step mode on when it is off)
 //   page -> host  { type: 'ruppert:meshed', id, stats: { vertices, triangles, minAngle, maxAngle, complete } }
 //                 after every mesh (id: that of the load it answers, null for the page's own changes)
 //                 { type: 'ruppert:stepped', index, total, vertices, triangles, event }
-//                 after every step shown (event: the text of the insertion that made it, or null
+//                 after every step shown (event: the text of the step's event (an insertion or a move), or null
 //                 at index 0)
 //                 { type: 'ruppert:error', id, code, message }   a load, an option or a mesh failed
 //

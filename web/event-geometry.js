@@ -83,9 +83,15 @@ export function pointsAtStep(events, k, final) {
   return points;
 }
 
-/** How many of the first k events inserted a vertex (all but RELOCATED). */
+const insertionCounts = new WeakMap();  // events -> Uint32Array: insertions among the first k, per k
+
+/** How many of the first k events inserted a vertex (all but RELOCATED); counted once per trace. */
 export function insertionsBefore(events, k) {
-  let n = 0;
-  for (let e = 0; e < k; e++) n += events.kind[e] !== RELOCATED;
-  return n;
+  let counts = insertionCounts.get(events);
+  if (counts === undefined) {
+    counts = new Uint32Array(events.count + 1);
+    for (let e = 0; e < events.count; e++) counts[e + 1] = counts[e] + (events.kind[e] !== RELOCATED);
+    insertionCounts.set(events, counts);
+  }
+  return counts[Math.max(0, Math.min(k, events.count))];
 }

@@ -22,7 +22,7 @@ export function showsStep(step, mesh) {
 }
 
 /**
- * Step mode: the event that made step `index` (the index-th insertion) drawn over that step's
+ * Step mode: the event that made step `index` (the index-th event) drawn over that step's
  * mesh: its new triangles (the star of the new vertex: the cavity it retriangulated), the
  * skinny triangle and its circumcircle, the encroached subsegment and its diametral circle, the
  * rejected point; for a RELOCATED event, the move, as an arrow from where the vertex was. Vertex

@@ -89,7 +89,7 @@ export class Stepper {
     el.speed.addEventListener('change', () => { if (this.playing) { this.pause(); this.play(); } });
   }
 
-  /** The number of insertions: positions run from 0 (none) to count (the final mesh). */
+  /** The number of events: positions run from 0 (none) to count (the final mesh). */
   get count() { return this.events ? this.events.count : 0; }
   get playing() { return this.timer !== null; }
 
