@@ -3,6 +3,8 @@
 // concentric-shell split from a midpoint split, and a rejected circumcenter from a rejected
 // off-center, by measuring.
 
+import { EventKind } from '../wasm/index.js';
+
 const RELATIVE = 1e-9;
 
 /** The circumcircle { x, y, r } of the triangle of vertices i, j, k of points, or null if flat. */
@@ -52,8 +54,8 @@ export function rejectedIsCircumcenter(events, e, points) {
   return Math.hypot(px - c.x, py - c.y) <= RELATIVE * Math.max(c.r, 1e-300) + 1e-12 * Math.hypot(c.x, c.y);
 }
 
-// Events of kind RELOCATED (6, EventKind.RELOCATED): a vertex moved, no vertex added.
-const RELOCATED = 6;
+// A RELOCATED event moves a vertex (from `circumcenter` to `xy`) and adds none.
+const { RELOCATED } = EventKind;
 const lastMove = new WeakMap();  // events -> index of the last RELOCATED event (-1: none)
 let rewound = { events: null, k: -1, final: null, points: null };
 
@@ -73,14 +75,17 @@ export function pointsAtStep(events, k, final) {
   if (last < k) return final;
   if (rewound.events === events && rewound.k === k && rewound.final === final) return rewound.points;
   const points = Float64Array.from(final);
-  for (let e = last; e >= k; e--) {
-    if (events.kind[e] !== RELOCATED) continue;
-    const v = events.vertex[e];
-    points[2 * v] = events.circumcenter[2 * e];
-    points[2 * v + 1] = events.circumcenter[2 * e + 1];
-  }
+  for (let e = last; e >= k; e--) undoMove(events, e, points);
   rewound = { events, k, final, points };
   return points;
+}
+
+/** Puts event e's vertex back where it was before e, if e is a move (RELOCATED); points is changed. */
+export function undoMove(events, e, points) {
+  if (events.kind[e] !== RELOCATED) return;
+  const v = events.vertex[e];
+  points[2 * v] = events.circumcenter[2 * e];
+  points[2 * v + 1] = events.circumcenter[2 * e + 1];
 }
 
 const insertionCounts = new WeakMap();  // events -> Uint32Array: insertions among the first k, per k

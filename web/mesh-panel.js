@@ -1,7 +1,7 @@
 // The Mesh panel: counts, angle range, completeness with reasons, the angle histogram, the event
 // counts and the triangles left skinny on purpose.
 import { EventKind } from '../wasm/index.js';
-import { rejectedIsCircumcenter, splitShell } from './event-geometry.js';
+import { rejectedIsCircumcenter, splitShell, undoMove } from './event-geometry.js';
 import { findExemptions } from './exemptions.js';
 import { EVENT_KIND_LABELS, EXEMPTION_LABELS } from './labels.js';
 
@@ -87,7 +87,7 @@ export function drawHistogram(canvas, histogram) {
 const { SEGMENT_SPLIT, CIRCUMCENTER, OFF_CENTER, REJECTED, PETAL_POINT, OPTIMAL_POINT, RELOCATED } = EventKind;
 const L = EVENT_KIND_LABELS;
 
-/** Event names, in the panel's order, and how to tell each from the trace (points: the final mesh's). */
+/** Event names, in the panel's order, and how to tell each from the trace (p: the points before event e). */
 const EVENT_NAMES = [
   [L.SEGMENT_SPLIT.midpoint, (ev, e, p) => ev.kind[e] === SEGMENT_SPLIT && splitShell(ev, e, p) === null],
   [L.SEGMENT_SPLIT.shell, (ev, e, p) => ev.kind[e] === SEGMENT_SPLIT && splitShell(ev, e, p) !== null],
@@ -109,11 +109,8 @@ export function countEvents(events, points) {
   const counts = EVENT_NAMES.map(([name]) => [name, 0]);
   let p = points;
   for (let e = events.count - 1; e >= 0; e--) {
-    if (events.kind[e] === RELOCATED) {
-      if (p === points) p = Float64Array.from(points);
-      const v = events.vertex[e];
-      p[2 * v] = events.circumcenter[2 * e], p[2 * v + 1] = events.circumcenter[2 * e + 1];
-    }
+    if (events.kind[e] === RELOCATED && p === points) p = Float64Array.from(points);
+    undoMove(events, e, p);
     const i = EVENT_NAMES.findIndex(([, is]) => is(events, e, p));
     if (i >= 0) counts[i][1]++;
   }
