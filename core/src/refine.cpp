@@ -177,7 +177,9 @@ bool completeOutcome(const RefineOutcome& r) {
 std::uint64_t liveTriangles(const MeshState& m) { return m.tri.slotCount() - m.tri.freeSlots.size(); }
 
 // A request above kStagedAboveDegrees (bound_push.h): the 33-degree mesh first, for its size; then
-// the requested bound directly, up to sixteen times that size; else the push from the 33-degree mesh.
+// the requested bound directly, up to sixteen times that size, as without stages; with the optimal
+// placement, where that fails, directly again with RefinePlan::bestBelowBound; else the push from
+// the 33-degree mesh.
 RefineOutcome refineStaged(MeshState& m) {
   const double requested = m.options->minAngle;
   MeshState start = m;
@@ -188,14 +190,21 @@ RefineOutcome refineStaged(MeshState& m) {
     return Refiner(m, RefinePlan::direct(requested)).run();
   }
   const std::uint64_t base = liveTriangles(m);
-  RefinePlan direct = RefinePlan::direct(requested);
-  direct.triangleCap = kDirectTriangleFactor * base;
-  Refiner attempt(start, direct);
-  RefineOutcome out = attempt.run();
-  if (!attempt.capHit() && completeOutcome(out)) {
-    m = std::move(start);
-    return out;
-  }
+  // True (and m the mesh) where a direct run from the unrefined mesh completes within the cap.
+  auto direct = [&](MeshState from, bool bestBelowBound, RefineOutcome& out) {
+    RefinePlan plan = RefinePlan::direct(requested);
+    plan.triangleCap = kDirectTriangleFactor * base;
+    plan.bestBelowBound = bestBelowBound;
+    Refiner attempt(from, plan);
+    out = attempt.run();
+    if (attempt.capHit() || !completeOutcome(out)) return false;
+    m = std::move(from);
+    return true;
+  };
+  RefineOutcome out;
+  // The second attempt only where its placement applies (no area bound: refine_split.cpp).
+  const bool second = m.options->placement == Placement::Optimal && !(m.options->maxArea > 0);
+  if (direct(start, false, out) || (second && direct(start, true, out))) return out;
   start = MeshState{};  // free it before the push
   const std::uint64_t used = m.kind.size() - unrefined;
   RefinePlan push{requested, kReachableDegrees, true, kPushTriangleFactor * base, used};

@@ -207,12 +207,18 @@ void Refiner::splitTriangle(const BadTriangle& bt) {
 }
 
 // Placement::Optimal (optimal_placement.h): insert the locally optimal point if one meets the bound,
-// else move a free endpoint of the shortest edge. False: neither; the first choice goes ahead.
+// else move a free endpoint of the shortest edge. With plan_.bestBelowBound, any free corner may
+// move, and before the search; where nothing meets the bound, the best point below it goes in if
+// one qualifies. False: none of these; the first choice goes ahead.
 bool Refiner::optimalOrRelocate(const BadTriangle& bt, const double* const* p, const TriangleShape& sh, const double* first) {
   double cc[2], x[2];
   optimal_.forget();
   if (!circumcenter(p, cc)) return false;
   const SkinnyTriangle st{bt.slot, p, sh, first, nullptr};
+  const std::uint32_t corners[3] = {bt.a, bt.b, bt.c};
+  if (plan_.bestBelowBound)
+    for (std::uint32_t v : corners)
+      if (relocate(v, bt)) return true;
   Location loc;
   switch (optimal_.propose(mesh_, st, cc, x, loc)) {
     case OptimalPlacement::Result::Found:
@@ -224,9 +230,14 @@ bool Refiner::optimalOrRelocate(const BadTriangle& bt, const double* const* p, c
       break;
   }
   const std::uint32_t ends[2] = {t_.tv[3 * bt.slot + (sh.shortestEdge + 1) % 3], t_.tv[3 * bt.slot + (sh.shortestEdge + 2) % 3]};
-  for (std::uint32_t v : ends)
-    if (relocate(v, bt)) return true;
-  return false;
+  if (!plan_.bestBelowBound) {
+    for (std::uint32_t v : ends)
+      if (relocate(v, bt)) return true;
+    return false;
+  }
+  if (!optimal_.bestBelowBound(mesh_, st, x, loc)) return false;
+  insertSteiner(bt, x, loc, VertexKind::OffCenter, {}, EventKind::OptimalPoint);
+  return true;
 }
 
 bool Refiner::relocate(std::uint32_t v, const BadTriangle& bt) {

@@ -514,6 +514,23 @@ TEST_CASE("optimal placement at 35, 38 and 40 degrees is valid on every shape fa
   CHECK(completeAt38 >= 3);
 }
 
+// Above 34 degrees, where the direct attempt with off-center fallbacks fails, a second one inserts
+// the best point below the bound instead (RefinePlan::bestBelowBound). These members failed at 38
+// degrees before it (each ended as the push's best mesh, at 35-37 degrees) and complete with it.
+TEST_CASE("at 38 degrees the best point below the bound completes what off-center fallbacks did not", "[refine][optimal]") {
+  const std::pair<const char*, std::uint64_t> members[] = {
+      {"subdivision", 13}, {"serpentine", 5}, {"skyline", 4}, {"strip", 11}, {"comb", 9}};
+  for (const auto& [name, seed] : members) {
+    const ruppert_test::ShapeFamily* family = ruppert_test::findShapeFamily(name);
+    REQUIRE(family != nullptr);
+    Options o;
+    o.minAngle = 38;
+    const Mesh mesh = refineChecked(ruppert_test::familyMember(*family, seed).plc, o, std::string(name) + "-" + std::to_string(seed));
+    INFO(name << "-" << seed << ": " << mesh.stats.reachedAngle << " degrees reached");
+    CHECK(mesh.complete);
+  }
+}
+
 // The trace names the point a placement chose: a petal point or an optimal point is its own event
 // kind (never Rejected: both choose only points that encroach nothing), at the vertex it inserted,
 // an off-center vertex; with off-centers and circumcenters neither kind appears. Not every input
