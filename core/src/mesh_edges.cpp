@@ -2,6 +2,10 @@
 #include <vector>
 
 #include "boundary_markers.h"
+#include "cold_code.h"
+
+// The edge list, asked for by option: compiled for size (cold_code.h).
+RUPPERT_COLD_BEGIN
 
 namespace ruppert {
 
@@ -37,3 +41,5 @@ MeshEdges edgesWith(const Mesh& mesh, const std::vector<std::int32_t>& segmentMa
 MeshEdges meshEdges(const Mesh& mesh) { return detail::edgesWith(mesh, mesh.segmentMarkers); }
 
 }  // namespace ruppert
+
+RUPPERT_COLD_END

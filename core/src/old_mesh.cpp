@@ -6,7 +6,12 @@
 
 #include "mesh_state.h"
 #include "message.h"
+#include "cold_code.h"
 #include "predicates.h"
+
+// The checks, the boundary and the grid's build run once per call: compiled for size (cold_code.h);
+// the grid's lookups (boundFor, overlapsAny), asked per new triangle, are not.
+RUPPERT_COLD_BEGIN
 
 namespace ruppert::detail {
 namespace {
@@ -145,6 +150,8 @@ void OldMesh::Grid::build(const OldMesh& mesh, const std::vector<std::uint32_t>&
   for (std::uint32_t t : triangles) forEachCell(t, [&](std::size_t k) { items[fill[k]++] = t; });
 }
 
+RUPPERT_COLD_END
+
 // Monotone in x (a subtraction, a product and a floor), so two bounding boxes that meet have cell
 // ranges that meet: no overlap is missed however the coordinates round.
 std::uint32_t OldMesh::Grid::column(double x) const {
@@ -202,6 +209,8 @@ bool OldMesh::overlapsAny(const double* p0, const double* p1, const double* p2) 
   return found;
 }
 
+RUPPERT_COLD_BEGIN
+
 const Plc& plcToMesh(const Plc& userPlc, const Options& options, Plc& storage) {
   if (!userPlc.triangles.empty()) {
     if (options.variant == Variant::BoundingBox)
@@ -224,3 +233,5 @@ void keepOldMeshDomain(MeshState& m) {
 }
 
 }  // namespace ruppert::detail
+
+RUPPERT_COLD_END

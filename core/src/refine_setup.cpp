@@ -6,6 +6,10 @@
 #include "old_mesh.h"
 #include "refine_geometry.h"
 #include "triangle_shape.h"
+#include "cold_code.h"
+
+// Runs once per refinement: compiled for size (cold_code.h).
+RUPPERT_COLD_BEGIN
 
 namespace ruppert::detail {
 
@@ -87,3 +91,5 @@ std::uint64_t steinerBudget(const MeshState& m) {
 }
 
 }  // namespace ruppert::detail
+
+RUPPERT_COLD_END

@@ -14,6 +14,10 @@
 
 #include "predicates.h"
 #include "refine.h"
+#include "cold_code.h"
+
+// The size measure, asked for with the statistics: compiled for size (cold_code.h).
+RUPPERT_COLD_BEGIN
 
 namespace ruppert::detail {
 namespace {
@@ -173,3 +177,5 @@ double estimateLfsIntegral(const MeshState& m) {
 }
 
 }  // namespace ruppert::detail
+
+RUPPERT_COLD_END
