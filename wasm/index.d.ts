@@ -76,7 +76,10 @@ export interface TriangulateOptions {
    * Minimum angle in degrees, in [0, 60]. Default 30. Above 34 it may be out of reach: then the
    * result is the best mesh reached (complete: false, reason 'ANGLE_UNREACHABLE', the angle reached
    * in stats.reachedAngle), never below 33 degrees outside the chapter's exemptions nor over four
-   * times the triangles of the 33-degree mesh, when 33 degrees completes.
+   * times the triangles of the 33-degree mesh, when 33 degrees completes. With the default
+   * placement the bound held on 100% / 93% / 5% of the benchmark's 300 generated PLCs at 35 / 38 /
+   * 40 degrees (README, Measured); a complete mesh at 38 has a median 4-10 times the triangles of
+   * the 33-degree one.
    */
   minAngle?: number;
   /** Global upper bound on triangle area; 0 or absent: none. */
