@@ -34,14 +34,24 @@ struct RefinePlan {
   double first = 0;      // degrees: the first stage's bound (== requested: one stage)
   bool track = false;    // push: raise the bound stage by stage, keep the best mesh, stop on a stall
   std::uint64_t triangleCap = 0;  // stop once the mesh has more triangles (0: no cap)
-  std::uint64_t used = 0;         // Steiner vertices an earlier run already inserted (budget)
+  std::uint64_t used = 0;         // steps (insertions, moves) an earlier run already took (budget)
+  // The request's Steiner budget in steps, this run's being budget - used; kAutoSteinerBudget:
+  // steinerBudget() (Options::maxSteiner or the automatic one).
+  std::uint64_t budget = kAutoSteinerBudget;
+  // Replaying the first `budget` steps of a longer run (refine.cpp): at the budget the mesh as it
+  // stands, not the push's best mesh so far.
+  bool prefix = false;
   // Optimal placement, where no point meets the bound: first try moving any free vertex of the
   // skinny triangle (not only its shortest edge's), and where nothing helps insert the best point
   // below the bound (OptimalPlacement::bestBelowBound) rather than the off-center. Only above
   // kReachableDegrees, for the second direct attempt (refine.cpp).
   bool bestBelowBound = false;
 
-  static RefinePlan direct(double degrees) { return {degrees, degrees, false, 0, 0, false}; }
+  static RefinePlan direct(double degrees) {
+    RefinePlan plan;
+    plan.requested = plan.first = degrees;
+    return plan;
+  }
 };
 
 // One look at the whole mesh.

@@ -45,7 +45,7 @@ bool refinementRequested(const MeshState& m) {
 
 RefineOutcome Refiner::run() {
   corner_ = acuteCorners(m_);
-  const std::uint64_t budget = steinerBudget(m_);
+  const std::uint64_t budget = plan_.budget != kAutoSteinerBudget ? plan_.budget : steinerBudget(m_);
   budget_ = budget > plan_.used ? budget - plan_.used : 0;
   // Initial queues: every subsegment and every triangle (linear in the mesh size, §6.3).
   for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
@@ -73,7 +73,8 @@ RefineOutcome Refiner::run() {
     splitTriangle(bt);
     stop = outOfBudget() || overCap() || pushStopped();
   }
-  if (pushing_ && stop && !cancelled_) endPush();
+  steps_ = inserted_;
+  if (pushing_ && stop && !cancelled_ && !(plan_.prefix && budgetHit_)) endPush();
   finish();
   return std::move(out_);
 }
@@ -141,6 +142,7 @@ void Refiner::endPush() {
   if (!capHit_) observe();  // a mesh over the cap is never the result
   unreachable_ = true;
   if (push_.bestStep() == inserted_) return;
+  steps_ = push_.bestStep();
   m_ = std::move(best_.mesh);
   out_.events.resize(best_.events);
   out_.rejected = best_.rejected;
@@ -176,29 +178,65 @@ bool completeOutcome(const RefineOutcome& r) {
 
 std::uint64_t liveTriangles(const MeshState& m) { return m.tri.slotCount() - m.tri.freeSlots.size(); }
 
-// A request above kStagedAboveDegrees (bound_push.h): the 33-degree mesh first, for its size; then
-// the requested bound directly, up to sixteen times that size, as without stages; with the optimal
-// placement, where that fails, directly again with RefinePlan::bestBelowBound; else the push from
-// the 33-degree mesh.
-RefineOutcome refineStaged(MeshState& m) {
+// Which way refineStaged went, and what replaying its first steps needs.
+struct StagedPath {
+  enum Branch { AsAsked, Direct, DirectBelowBound, Push } branch = AsAsked;
+  std::uint64_t steps = 0;       // steps (insertions, moves) of the mesh returned
+  std::uint64_t reachSteps = 0;  // of the 33-degree mesh (the push's first part)
+  std::uint64_t base = 0;        // the 33-degree mesh's triangles (the caps' unit)
+};
+
+RefinePlan directPlan(double requested, std::uint64_t base, bool bestBelowBound, std::uint64_t budget) {
+  RefinePlan plan = RefinePlan::direct(requested);
+  plan.triangleCap = kDirectTriangleFactor * base;
+  plan.bestBelowBound = bestBelowBound;
+  plan.budget = budget;
+  return plan;
+}
+
+RefinePlan pushPlan(double requested, std::uint64_t base, std::uint64_t reachSteps, std::uint64_t budget) {
+  RefinePlan plan{requested, kReachableDegrees, true, kPushTriangleFactor * base, reachSteps};
+  plan.budget = budget;
+  return plan;
+}
+
+// The push continues the 33-degree run: its trace and rejections come first.
+RefineOutcome afterReach(RefineOutcome reach, RefineOutcome out) {
+  reach.events.insert(reach.events.end(), out.events.begin(), out.events.end());
+  out.events = std::move(reach.events);
+  out.rejected += reach.rejected;
+  return out;
+}
+
+// A request above kStagedAboveDegrees (bound_push.h), with a Steiner budget of `budget` steps: the
+// 33-degree mesh first, for its size; then the requested bound directly, up to sixteen times that
+// size, as without stages; with the optimal placement, where that fails, directly again with
+// RefinePlan::bestBelowBound; else the push from the 33-degree mesh. The way taken goes to path.
+RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path) {
   const double requested = m.options->minAngle;
   MeshState start = m;
-  const std::size_t unrefined = m.kind.size();
-  RefineOutcome reach = Refiner(m, RefinePlan::direct(kReachableDegrees)).run();
+  RefinePlan first = RefinePlan::direct(kReachableDegrees);
+  first.budget = budget;
+  Refiner reachRun(m, first);
+  RefineOutcome reach = reachRun.run();
   if (!completeOutcome(reach)) {  // not even 33 degrees: refine as asked, as without stages
     m = std::move(start);
-    return Refiner(m, RefinePlan::direct(requested)).run();
+    RefinePlan asked = RefinePlan::direct(requested);
+    asked.budget = budget;
+    Refiner run(m, asked);
+    RefineOutcome out = run.run();
+    path.branch = StagedPath::AsAsked, path.steps = run.steps();
+    return out;
   }
-  const std::uint64_t base = liveTriangles(m);
+  path.reachSteps = reachRun.steps();
+  path.base = liveTriangles(m);
   // True (and m the mesh) where a direct run from the unrefined mesh completes within the cap.
   auto direct = [&](MeshState from, bool bestBelowBound, RefineOutcome& out) {
-    RefinePlan plan = RefinePlan::direct(requested);
-    plan.triangleCap = kDirectTriangleFactor * base;
-    plan.bestBelowBound = bestBelowBound;
-    Refiner attempt(from, plan);
+    Refiner attempt(from, directPlan(requested, path.base, bestBelowBound, budget));
     out = attempt.run();
     if (attempt.capHit() || !completeOutcome(out)) return false;
     m = std::move(from);
+    path.branch = bestBelowBound ? StagedPath::DirectBelowBound : StagedPath::Direct, path.steps = attempt.steps();
     return true;
   };
   RefineOutcome out;
@@ -206,21 +244,55 @@ RefineOutcome refineStaged(MeshState& m) {
   const bool second = m.options->placement == Placement::Optimal && !(m.options->maxArea > 0);
   if (direct(start, false, out) || (second && direct(start, true, out))) return out;
   start = MeshState{};  // free it before the push
-  const std::uint64_t used = m.kind.size() - unrefined;
-  RefinePlan push{requested, kReachableDegrees, true, kPushTriangleFactor * base, used};
-  out = Refiner(m, push).run();
-  // The push continues the 33-degree run: its trace and rejections come first.
-  reach.events.insert(reach.events.end(), out.events.begin(), out.events.end());
-  out.events = std::move(reach.events);
-  out.rejected += reach.rejected;
-  return out;
+  Refiner push(m, pushPlan(requested, path.base, path.reachSteps, budget));
+  out = push.run();
+  path.branch = StagedPath::Push, path.steps = push.steps();
+  return afterReach(std::move(reach), std::move(out));
+}
+
+// The first k steps of the way refineStaged went (with the automatic budget), from the unrefined
+// mesh m: the same plans, stopped at k.
+RefineOutcome replayStaged(MeshState& m, const StagedPath& path, std::uint64_t k) {
+  const double requested = m.options->minAngle;
+  switch (path.branch) {
+    case StagedPath::AsAsked: {
+      RefinePlan asked = RefinePlan::direct(requested);
+      asked.budget = k;
+      return Refiner(m, asked).run();
+    }
+    case StagedPath::Direct:
+    case StagedPath::DirectBelowBound:
+      return Refiner(m, directPlan(requested, path.base, path.branch == StagedPath::DirectBelowBound, k)).run();
+    case StagedPath::Push:
+      break;
+  }
+  RefinePlan first = RefinePlan::direct(kReachableDegrees);
+  first.budget = std::min(k, path.reachSteps);
+  RefineOutcome reach = Refiner(m, first).run();
+  if (k <= path.reachSteps) return reach;
+  RefinePlan push = pushPlan(requested, path.base, path.reachSteps, k);
+  push.prefix = true;
+  return afterReach(std::move(reach), Refiner(m, push).run());
 }
 
 }  // namespace
 
+// Above kStagedAboveDegrees with a budget k under the automatic one, the result is the first k steps
+// of the automatic run's (what maxSteiner gives below that by itself, and what the page's replay of
+// a run step by step relies on): that run first, and where it took more than k steps, its way again
+// from the start, stopped at k. (Budgeting each stage instead would take another way: a 33-degree
+// mesh done within k steps and a direct attempt cut short by the budget lead to the push.)
 RefineOutcome refine(MeshState& m) {
   if (!(m.options->minAngle > kStagedAboveDegrees)) return Refiner(m, RefinePlan::direct(m.options->minAngle)).run();
-  return refineStaged(m);
+  const std::uint64_t automatic = automaticSteinerBudget(m);
+  const std::uint64_t k = std::min(m.options->maxSteiner, automatic);
+  StagedPath path;
+  if (k == automatic) return refineStaged(m, steinerBudget(m), path);
+  MeshState start = m;
+  RefineOutcome out = refineStaged(m, automatic, path);
+  if (path.steps <= k) return out;
+  m = std::move(start);
+  return replayStaged(m, path, k);
 }
 
 }  // namespace ruppert::detail

@@ -59,7 +59,7 @@ void Refiner::finish() {
   else if (unreachable_)
     add(ReasonKind::AngleUnreachable, unmet, unreachableMessage(unmet, out_.reachedAngle));
   else if (budgetHit_)
-    add(ReasonKind::SteinerBudget, unmet, "the Steiner budget of " + std::to_string(budget_) +
+    add(ReasonKind::SteinerBudget, unmet, "the Steiner budget of " + std::to_string(budget_ + plan_.used) +
                                               " vertices was reached; " + std::to_string(unmet) +
                                               " triangle(s) do not meet the bounds");
   else if (unmet > 0 && forbiddenHits_ > 0)

@@ -77,7 +77,11 @@ std::vector<std::uint8_t> acuteCorners(const MeshState& m) {
 // bound (area A with triangles of area a needs about A / (2 a) vertices).
 std::uint64_t steinerBudget(const MeshState& m) {
   const Options& o = *m.options;
-  if (o.maxSteiner != kAutoSteinerBudget) return o.maxSteiner;
+  return o.maxSteiner != kAutoSteinerBudget ? o.maxSteiner : automaticSteinerBudget(m);
+}
+
+std::uint64_t automaticSteinerBudget(const MeshState& m) {
+  const Options& o = *m.options;
   const Triangulation& t = m.tri;
   const auto crossings = std::count(m.kind.begin(), m.kind.end(), VertexKind::Intersection);
   double estimate = 1e4 + 200.0 * m.inputCount + 100.0 * static_cast<double>(crossings);

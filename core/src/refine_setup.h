@@ -14,5 +14,7 @@ std::vector<std::uint8_t> acuteCorners(const MeshState& m);
 
 // The Steiner budget: Options::maxSteiner, or the automatic one for kAutoSteinerBudget.
 std::uint64_t steinerBudget(const MeshState& m);
+// The automatic one, whatever Options::maxSteiner says.
+std::uint64_t automaticSteinerBudget(const MeshState& m);
 
 }  // namespace ruppert::detail

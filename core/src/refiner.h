@@ -90,6 +90,7 @@ class Refiner {
     std::uint64_t rejected = 0;
   } best_;
   std::uint64_t budget_ = 0, inserted_ = 0;
+  std::uint64_t steps_ = 0;  // steps (insertions, moves) in the mesh run() returns
   bool cancelled_ = false, budgetHit_ = false;
   std::uint64_t floorHits_ = 0;  // insertions refused at the precision limit
   std::uint64_t forbiddenHits_ = 0;  // splits refused by noBoundarySteiner / noSegmentSteiner
@@ -119,6 +120,8 @@ class Refiner {
 
   // After run(): whether it stopped at plan_.triangleCap.
   bool capHit() const { return capHit_; }
+  // After run(): the steps that make the mesh returned, an earlier run's (plan_.used) included.
+  std::uint64_t steps() const { return plan_.used + steps_; }
 
   RefineOutcome run();
 

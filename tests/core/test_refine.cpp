@@ -7,6 +7,7 @@
 #include <initializer_list>
 #include <random>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -618,5 +619,44 @@ TEST_CASE("a trace changes nothing: relocations are events, and step k is the ru
       inserted += traced.events[i].kind != EventKind::Relocated;
     }
     CHECK(step.points.size() / 2 == g.plc.points.size() / 2 + inserted);
+  }
+}
+
+// Above 34 degrees refinement is staged (bound_push.h), and a budget k must still give the first k
+// steps of the automatic run, whichever way that run went: directly (skyline-4 at 35), directly
+// with the best points below the bound (skyline-4 at 38), the push from the 33-degree mesh (comb-1 at
+// 40). Before, a 33-degree mesh done within k steps and a direct attempt cut short by the budget sent
+// the budgeted run to the push: the page's replay at 38 degrees showed meshes the run never had.
+TEST_CASE("above 34 degrees, maxSteiner k is the first k steps of the automatic run", "[refine][events]") {
+  const std::tuple<const char*, std::uint64_t, double> cases[] = {{"skyline", 4, 35}, {"skyline", 4, 38}, {"comb", 1, 40}};
+  for (const auto& [name, seed, angle] : cases) {
+    const ruppert_test::GeneratedPlc g = ruppert_test::familyMember(*ruppert_test::findShapeFamily(name), seed);
+    Options o;
+    o.minAngle = angle;
+    o.trace = true;
+    const Mesh full = ruppert::triangulate(g.plc, o);
+    const std::size_t n = full.events.size();
+    INFO(name << "-" << seed << " at " << angle << " degrees: " << n << " steps");
+    REQUIRE(n > 8);
+    for (std::size_t k : {std::size_t(1), n / 8, n / 3, n / 2, n - 1, n}) {
+      INFO("maxSteiner " << k);
+      Options budget = o;
+      budget.maxSteiner = k;
+      const Mesh step = ruppert::triangulate(g.plc, budget);
+      REQUIRE(step.events.size() == k);
+      for (std::size_t i = 0; i < k; ++i) {
+        CHECK(step.events[i].kind == full.events[i].kind);
+        CHECK(step.events[i].x == full.events[i].x);
+        CHECK(step.events[i].y == full.events[i].y);
+      }
+      if (k == n) {
+        CHECK(step.points == full.points);
+        CHECK(step.triangles == full.triangles);
+      } else {
+        CHECK_FALSE(step.complete);
+      }
+      budget.trace = false;
+      CHECK(ruppert::triangulate(g.plc, budget).points == step.points);
+    }
   }
 }
