@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "cold_code.h"
 #include "old_mesh.h"
 #include "refine_setup.h"
 #include "refiner.h"
@@ -80,6 +81,9 @@ RefineOutcome Refiner::run() {
 }
 
 // ---- stages (bound_push.h) -------------------------------------------------------------------
+// Once per stage or per quarter of the mesh's size in insertions: compiled for size (cold_code.h).
+RUPPERT_COLD_BEGIN
+
 void Refiner::setBound(double degrees) {
   stageDegrees_ = degrees;
   theta_ = radians(degrees);
@@ -168,6 +172,8 @@ MeshScore Refiner::score() const {
   return sc;
 }
 
+RUPPERT_COLD_END
+
 namespace {
 
 bool completeOutcome(const RefineOutcome& r) {
@@ -177,6 +183,9 @@ bool completeOutcome(const RefineOutcome& r) {
 }
 
 std::uint64_t liveTriangles(const MeshState& m) { return m.tri.slotCount() - m.tri.freeSlots.size(); }
+
+// The stages' plans, run once per call: compiled for size (cold_code.h).
+RUPPERT_COLD_BEGIN
 
 // Which way refineStaged went, and what replaying its first steps needs.
 struct StagedPath {
@@ -294,5 +303,7 @@ RefineOutcome refine(MeshState& m) {
   m = std::move(start);
   return replayStaged(m, path, k);
 }
+
+RUPPERT_COLD_END
 
 }  // namespace ruppert::detail

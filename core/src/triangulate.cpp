@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "assemble_output.h"
+#include "cold_code.h"
 #include "mesh_state.h"
 #include "old_mesh.h"
 #include "point_attributes.h"
@@ -40,6 +41,9 @@ Domain meshHullInstead(MeshState& m, const Domain& first) {
 
 }  // namespace
 }  // namespace detail
+
+// The steps, once per call (the work is in what they call): compiled for size (cold_code.h).
+RUPPERT_COLD_BEGIN
 
 Mesh triangulate(const Plc& userPlc, const Options& options) {
   using namespace detail;
@@ -85,5 +89,7 @@ Mesh triangulate(const Plc& userPlc, const Options& options) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return mesh;
 }
+
+RUPPERT_COLD_END
 
 }  // namespace ruppert
