@@ -275,7 +275,9 @@ RefineOutcome replayStaged(MeshState& m, const StagedPath& path, std::uint64_t k
     case StagedPath::Push:
       break;
   }
-  RefinePlan first = RefinePlan::direct(kReachableDegrees);
+  // The 33-degree run again, judged by the requested bound where it is the result (stopped at k
+  // steps, it ends before the bound could be raised).
+  RefinePlan first{requested, kReachableDegrees, false, 0, 0};
   first.budget = std::min(k, path.reachSteps);
   RefineOutcome reach = Refiner(m, first).run();
   if (k <= path.reachSteps) return reach;
@@ -297,6 +299,11 @@ RefineOutcome refine(MeshState& m) {
   const std::uint64_t k = std::min(m.options->maxSteiner, automatic);
   StagedPath path;
   if (k == automatic) return refineStaged(m, steinerBudget(m), path);
+  if (k == 0) {  // every way starts with nothing inserted
+    RefinePlan none = RefinePlan::direct(m.options->minAngle);
+    none.budget = 0;
+    return Refiner(m, none).run();
+  }
   MeshState start = m;
   RefineOutcome out = refineStaged(m, automatic, path);
   if (path.steps <= k) return out;
