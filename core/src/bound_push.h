@@ -6,8 +6,9 @@
 // 33-degree mesh's triangles: where it completes that way (most inputs at 35 degrees), the mesh is
 // the same as without stages. With the optimal placement a second direct attempt follows, which
 // inserts the best point below the bound where the first fell back to an off-center
-// (RefinePlan::bestBelowBound): 38 degrees on 278 of 300 generated PLCs against 226 without it. The push keeps a copy of its best mesh; the mesh is scored every
-// quarter of its size in insertions, so scores and copies cost a fraction of the refinement.
+// (RefinePlan::bestBelowBound): 38 degrees on 278 of 300 generated PLCs against 226 without it.
+// The push keeps a copy of its best mesh; the mesh is scored every quarter of its size in
+// insertions, so scores and copies cost a fraction of the refinement.
 #pragma once
 
 #include <algorithm>
@@ -47,12 +48,17 @@ struct RefinePlan {
   // kReachableDegrees, for the second direct attempt (refine.cpp).
   bool bestBelowBound = false;
 
-  static RefinePlan direct(double degrees) {
+  static RefinePlan direct(double degrees, std::uint64_t budget = kAutoSteinerBudget) {
     RefinePlan plan;
     plan.requested = plan.first = degrees;
+    plan.budget = budget;
     return plan;
   }
 };
+
+// Whether a staged request gets the second direct attempt (RefinePlan::bestBelowBound): only where
+// its placement applies, the optimal one without an area bound (refine_split.cpp).
+inline bool secondDirectAttempt(const Options& o) { return o.placement == Placement::Optimal && !(o.maxArea > 0); }
 
 // One look at the whole mesh.
 struct MeshScore {

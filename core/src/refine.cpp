@@ -196,10 +196,9 @@ struct StagedPath {
 };
 
 RefinePlan directPlan(double requested, std::uint64_t base, bool bestBelowBound, std::uint64_t budget) {
-  RefinePlan plan = RefinePlan::direct(requested);
+  RefinePlan plan = RefinePlan::direct(requested, budget);
   plan.triangleCap = kDirectTriangleFactor * base;
   plan.bestBelowBound = bestBelowBound;
-  plan.budget = budget;
   return plan;
 }
 
@@ -224,15 +223,11 @@ RefineOutcome afterReach(RefineOutcome reach, RefineOutcome out) {
 RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path) {
   const double requested = m.options->minAngle;
   MeshState start = m;
-  RefinePlan first = RefinePlan::direct(kReachableDegrees);
-  first.budget = budget;
-  Refiner reachRun(m, first);
+  Refiner reachRun(m, RefinePlan::direct(kReachableDegrees, budget));
   RefineOutcome reach = reachRun.run();
   if (!completeOutcome(reach)) {  // not even 33 degrees: refine as asked, as without stages
     m = std::move(start);
-    RefinePlan asked = RefinePlan::direct(requested);
-    asked.budget = budget;
-    Refiner run(m, asked);
+    Refiner run(m, RefinePlan::direct(requested, budget));
     RefineOutcome out = run.run();
     path.branch = StagedPath::AsAsked, path.steps = run.steps();
     return out;
@@ -249,9 +244,7 @@ RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path)
     return true;
   };
   RefineOutcome out;
-  // The second attempt only where its placement applies (no area bound: refine_split.cpp).
-  const bool second = m.options->placement == Placement::Optimal && !(m.options->maxArea > 0);
-  if (direct(start, false, out) || (second && direct(start, true, out))) return out;
+  if (direct(start, false, out) || (secondDirectAttempt(*m.options) && direct(start, true, out))) return out;
   start = MeshState{};  // free it before the push
   Refiner push(m, pushPlan(requested, path.base, path.reachSteps, budget));
   out = push.run();
@@ -264,11 +257,8 @@ RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path)
 RefineOutcome replayStaged(MeshState& m, const StagedPath& path, std::uint64_t k) {
   const double requested = m.options->minAngle;
   switch (path.branch) {
-    case StagedPath::AsAsked: {
-      RefinePlan asked = RefinePlan::direct(requested);
-      asked.budget = k;
-      return Refiner(m, asked).run();
-    }
+    case StagedPath::AsAsked:
+      return Refiner(m, RefinePlan::direct(requested, k)).run();
     case StagedPath::Direct:
     case StagedPath::DirectBelowBound:
       return Refiner(m, directPlan(requested, path.base, path.branch == StagedPath::DirectBelowBound, k)).run();
@@ -299,11 +289,8 @@ RefineOutcome refine(MeshState& m) {
   const std::uint64_t k = std::min(m.options->maxSteiner, automatic);
   StagedPath path;
   if (k == automatic) return refineStaged(m, steinerBudget(m), path);
-  if (k == 0) {  // every way starts with nothing inserted
-    RefinePlan none = RefinePlan::direct(m.options->minAngle);
-    none.budget = 0;
-    return Refiner(m, none).run();
-  }
+  // A budget of 0 inserts nothing, on every way: no need to know which.
+  if (k == 0) return Refiner(m, RefinePlan::direct(m.options->minAngle, 0)).run();
   MeshState start = m;
   RefineOutcome out = refineStaged(m, automatic, path);
   if (path.steps <= k) return out;

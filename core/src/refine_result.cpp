@@ -36,9 +36,8 @@ Refiner::Unmet Refiner::countUnmet() const {
 std::string Refiner::unreachableMessage(std::uint64_t unmet, double reached) const {
   char angles[96];
   std::snprintf(angles, sizeof angles, "%.6g degrees is out of reach; the smallest angle reached is %.2f", plan_.requested, reached);
-  const char* twice = o_.placement == Placement::Optimal && !(o_.maxArea > 0)
-                          ? " (twice: the second time with the best point below the bound where no point meets it)"
-                          : "";
+  const char* twice =
+      secondDirectAttempt(o_) ? " (twice: the second time with the best point below the bound where no point meets it)" : "";
   return std::string("a minimum angle of ") + angles + " degrees (section 6.6's exemptions aside): refining to it directly" + twice + " did not complete within sixteen times the "
          "triangles of the " + std::to_string(static_cast<int>(kReachableDegrees)) + "-degree mesh, and from that mesh "
          "refinement raised the bound a degree at a time until " + pushStop_ + "; this is the best mesh it reached; " + std::to_string(unmet) +
