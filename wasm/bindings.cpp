@@ -6,11 +6,12 @@
 //   js_objects.h/.cpp       JavaScript objects <-> the core's Plc, Mesh, Voronoi and events
 //   heap_layout.h           the layout of triangulate()'s tables through the heap
 //   heap_triangulate.cpp    triangulate() through those tables (Module._rp_*, the hot path)
-//   text_formats.cpp        the readers and writers of text formats
-//   cli_texts.h/.cpp        the native CLI's parser and texts, for wasm/cli.js
+//   text_formats.cpp        the readers and writers of text formats (ruppert-formats.wasm)
+//   geojson_reader.cpp      the GeoJSON reader, which needs the mesher (ruppert.wasm)
+//   cli_texts.h/.cpp        the native CLI's parser and texts, for wasm/cli.js (ruppert-cli.wasm)
 //   describe.cpp            the enums' names and the tables' layout, exported to JavaScript
 //   bindings.cpp            this file: test hooks
-// Each file registers its own embind functions.
+// Each file registers its own embind functions; wasm/CMakeLists.txt says which module links which.
 #include <emscripten/bind.h>
 #include <malloc.h>
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env node
-// `npm run build:wasm`: configure and build the WebAssembly target with Emscripten into
-// build-wasm/, then copy ruppert.mjs + ruppert.wasm into wasm/dist/ (what the package ships) and
+// `npm run build:wasm`: configure and build the WebAssembly targets with Emscripten into
+// build-wasm/, then copy each module's .mjs + .wasm into wasm/dist/ (what the package ships: the
+// mesher ruppert, the text formats ruppert-formats and, for wasm/cli.js, ruppert-cli) and
 // write wasm/dist/names.js: the core's enum names as the binding exports them (describe.cpp), for
 // the package's constants and option checks, which need them before any module is instantiated.
 // Debian's emcc needs NODE_PATH=/usr/share/nodejs to find its JS optimizer's `acorn`.
@@ -22,15 +23,16 @@ function run(command, args) {
 }
 
 run('emcmake', ['cmake', '-S', root, '-B', buildDir, '-DCMAKE_BUILD_TYPE=Release']);
-run('cmake', ['--build', buildDir, '--target', 'ruppert_wasm', '-j2']);
+run('cmake', ['--build', buildDir, '--target', 'ruppert_wasm', 'ruppert_wasm_formats', 'ruppert_wasm_cli', '-j2']);
 
 mkdirSync(distDir, { recursive: true });
-for (const file of ['ruppert.mjs', 'ruppert.wasm']) {
-  copyFileSync(`${buildDir}/wasm/dist/${file}`, `${distDir}${file}`);
+for (const name of ['ruppert', 'ruppert-formats', 'ruppert-cli']) {
+  for (const file of [`${name}.mjs`, `${name}.wasm`]) copyFileSync(`${buildDir}/wasm/dist/${file}`, `${distDir}${file}`);
+  const wasm = `${distDir}${name}.wasm`;
+  const gzipped = gzipSync(readFileSync(wasm), { level: 9 }).length;
+  console.log(`wasm/dist/${name}.wasm: ${statSync(wasm).size} bytes, ${gzipped} bytes gzipped`);
 }
 const wasm = `${distDir}ruppert.wasm`;
-const gzipped = gzipSync(readFileSync(wasm), { level: 9 }).length;
-console.log(`wasm/dist/ruppert.wasm: ${statSync(wasm).size} bytes, ${gzipped} bytes gzipped`);
 
 // Instantiated here without wasm/loader.js, which imports what this writes.
 const { readDescription } = await import('./describe.js');

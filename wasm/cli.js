@@ -9,7 +9,8 @@
 // Exit status: 0 success, 1 invalid input, 2 usage error, 3 an output file could not be written.
 import { readFile, writeFile } from 'node:fs/promises';
 import { extname } from 'node:path';
-import { init, MeshError } from './node.js';
+import { initCli } from './cli-mesher.js';
+import { MeshError } from './errors.js';
 
 const EXIT_OK = 0;
 const EXIT_INVALID_INPUT = 1;
@@ -119,7 +120,7 @@ async function write(path, text) {
 }
 
 async function main(argv) {
-  const mesher = await init();
+  const mesher = await initCli();
   const args = mesher._parseCliArgs(argv);
   if (args.usageError !== undefined) {
     process.stderr.write(`error: ${args.usageError}\n${args.usageLine}\n`);

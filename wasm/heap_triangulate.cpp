@@ -248,7 +248,11 @@ val stagedExtras(val report, bool trace) {
     const ruppert::Mesh& mesh = staged().mesh;
     val out = val::object();
     if (trace) out.set("events", eventsToJs(mesh.events));
+#ifdef RUPPERT_WASM_CLI_TEXTS
     if (!report.isNull() && !report.isUndefined()) out.set("report", reportToJs(mesh, report));
+#else
+    (void)report;  // the mesher module has no CLI texts (ruppert-cli.wasm has them)
+#endif
     return out;
   });
 }

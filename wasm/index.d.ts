@@ -324,9 +324,18 @@ export interface InitOptions {
    * beside the bundle.
    */
   wasmUrl?: string | URL;
+  /** Called with 'ruppert.wasm' and 'ruppert-formats.wasm'; returns where each is served. */
   locateFile?: (file: string) => string;
   wasmBinary?: ArrayBuffer | ArrayBufferView;
   wasmModule?: WebAssembly.Module;
+  /**
+   * The text formats module (ruppert-formats.wasm: parsePoly, parseNode, parseJson, parseEle and
+   * every to*() writer; parseGeoJson is in the mesher). true (default): loaded with the mesher, from
+   * locateFile's answer, else beside `wasmUrl`, else where the package keeps it (as for
+   * ruppert.wasm). false: not loaded (the mesher alone, as createMeshWorker's worker runs it); the
+   * readers and writers then throw MeshError INVALID_OPTION. An object: its own source.
+   */
+  formats?: boolean | { wasmUrl?: string | URL; wasmBinary?: ArrayBuffer | ArrayBufferView; wasmModule?: WebAssembly.Module };
 }
 
 /** The second argument of parsePoly: a name for messages, or these. */
@@ -365,12 +374,14 @@ export interface Mesher {
   /** Triangle's .v.node / .v.edge texts of mesh.voronoi. */
   toVoronoiNode(mesh: Mesh): string;
   toVoronoiEdge(mesh: Mesh): string;
+  /** Whether the text formats module is loaded (init() without formats: false). */
+  readonly hasFormats: boolean;
   /** Resolves once a wasm instance is available (pending only right after an abort). */
   readonly ready: Promise<void>;
   memoryUsage(): { heapBytes: number; allocatedBytes: number };
 }
 
-/** Loads the WebAssembly module (once, when called without options). */
+/** Loads the WebAssembly modules (once, when called without options). */
 export declare function init(options?: InitOptions): Promise<Mesher>;
 
 /** The helpers below use the most recently initialised mesher: `await init()` first. */

@@ -8,7 +8,8 @@
 // goes stale when the wasm heap grows. See index.d.ts for every field.
 import { NAMES } from './dist/names.js';
 import { MeshError, ERROR_CODES } from './errors.js';
-import { compileWasm, instantiate } from './loader.js';
+import { instanceHost } from './instance-host.js';
+import { MODULES } from './loader.js';
 import { rejectUnknownKeys } from './known-keys.js';
 import { createMesher } from './mesher.js';
 
@@ -35,24 +36,62 @@ export const NO_NEIGHBOR = -1;
 /** mesh.segmentIds entry for a convex-hull edge that no input segment covers. */
 export const NO_INPUT_SEGMENT = -1;
 
-const INIT_KEYS = ['wasmUrl', 'locateFile', 'wasmBinary', 'wasmModule'];
+const INIT_KEYS = ['wasmUrl', 'locateFile', 'wasmBinary', 'wasmModule', 'formats'];
+const SOURCE_KEYS = ['wasmUrl', 'wasmBinary', 'wasmModule'];
 const invalidOption = (message) => new MeshError('INVALID_OPTION', message);
 
 let defaultMesher = null;  // Promise of the mesher for init() without options: loaded once
 let lastMesher = null;     // the most recent mesher, used by the top-level helpers below
 
+// `file` in the folder of `url` (resolved against the page), or undefined where `url` does not resolve
+// (a relative path under Node, which has no page): then the package's own copy is used.
+function besideUrl(url, file) {
+  try {
+    return new URL(file, new URL(url, globalThis.location?.href));
+  } catch {
+    return undefined;
+  }
+}
+
+// Where the text formats module comes from: options.formats' own source if it names one, else
+// locateFile's answer, else beside the mesher's wasmUrl, else where the package keeps it. null: none.
+function formatsSource(options) {
+  const { formats = true } = options;
+  if (formats === false) return null;
+  if (formats === true) {
+    const source = { locateFile: options.locateFile };
+    if (options.wasmUrl !== undefined && typeof options.locateFile !== 'function') {
+      source.fallbackUrl = besideUrl(options.wasmUrl, MODULES.formats.file);
+    }
+    return source;
+  }
+  if (formats === null || typeof formats !== 'object') {
+    throw invalidOption(`init(options): formats must be true, false or { ${SOURCE_KEYS.join(', ')} }, got ${typeof formats === 'string' ? JSON.stringify(formats) : String(formats)}`);
+  }
+  rejectUnknownKeys(formats, SOURCE_KEYS, 'init(options).formats', invalidOption);
+  return { locateFile: options.locateFile, ...formats };
+}
+
 async function build(options) {
-  const compiled = await compileWasm(options);
-  const mesher = createMesher(compiled, await instantiate(compiled));
+  const formats = formatsSource(options);
+  const { fallbackUrl, ...formatsOptions } = formats ?? {};
+  // Both modules load at once; the mesher's failure is the one reported when both fail.
+  const mesherHost = instanceHost(options, MODULES.mesher);
+  const formatsHost = formats === null ? Promise.resolve(null) : instanceHost(formatsOptions, MODULES.formats, fallbackUrl);
+  formatsHost.catch(() => {});
+  const mesher = createMesher(await mesherHost, await formatsHost);
   lastMesher = mesher;
   return mesher;
 }
 
 /**
- * Loads the WebAssembly module. Without options the module is loaded once and every call
- * resolves to the same mesher.
+ * Loads the WebAssembly modules: the mesher (ruppert.wasm) and, unless `formats: false`, the text
+ * formats (ruppert-formats.wasm: parsePoly, toVtu and the other readers and writers). Without
+ * options they are loaded once and every call resolves to the same mesher.
  * @param {{ wasmUrl?: string | URL, locateFile?: (file: string) => string,
- *           wasmBinary?: ArrayBuffer | ArrayBufferView, wasmModule?: WebAssembly.Module }} [options]
+ *           wasmBinary?: ArrayBuffer | ArrayBufferView, wasmModule?: WebAssembly.Module,
+ *           formats?: boolean | { wasmUrl?: string | URL, wasmBinary?: ArrayBuffer | ArrayBufferView,
+ *                                 wasmModule?: WebAssembly.Module } }} [options]
  */
 export function init(options) {
   if (options !== undefined && (options === null || typeof options !== 'object')) {

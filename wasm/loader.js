@@ -1,23 +1,44 @@
-// Finds, compiles and instantiates dist/ruppert.wasm.
+// Finds, compiles and instantiates the package's WebAssembly modules: dist/ruppert.wasm (the
+// mesher) and dist/ruppert-formats.wasm (the readers and writers of text formats). Each is a
+// MODULES entry: its Emscripten factory, its file name and where the package keeps it.
 //
 // The compiled WebAssembly.Module is kept so that a fresh instance can be made after an abort
 // (out of memory, a trap): instantiating an already compiled module is cheap and can be done
 // synchronously where the platform allows it (Node, workers).
 import createRuppertModule from './dist/ruppert.mjs';
+import createFormatsModule from './dist/ruppert-formats.mjs';
 import { MeshError } from './errors.js';
 import { absoluteUrl, classicScriptUrl, getNodeHost } from './host.js';
 
-function defaultWasmUrl() {
-  // A classic-script bundle (esbuild's default iife format) has no import.meta.url.
-  if (import.meta.url === undefined) return new URL('ruppert.wasm', classicScriptUrl);
-  // Written literally so that bundlers that copy assets (vite, webpack) see it and copy the file.
-  const url = new URL('./dist/ruppert.wasm', import.meta.url);
-  // A bundler that copies no assets (esbuild) leaves that URL as it is, relative to the bundle: then,
-  // as the README says, ruppert.wasm is expected beside the bundle rather than in a dist/ below it.
+// A classic-script bundle (esbuild's default iife format) has no import.meta.url: the file is
+// expected beside the bundle.
+// Otherwise `packaged` is the literal new URL('./dist/<file>', import.meta.url), written out per file
+// so that bundlers that copy assets (vite, webpack) see it and copy the file. A bundler that copies
+// no assets (esbuild) leaves that URL as it is, relative to the bundle: then, as the README says,
+// the file is expected beside the bundle rather than in a dist/ below it.
+function packagedOrBeside(file, packaged) {
+  if (packaged === undefined) return new URL(file, classicScriptUrl);
   const inPackage = new URL(import.meta.url).pathname.endsWith('/loader.js');
-  const rewritten = url.href !== besideThisModule('./dist/ruppert.wasm').href;
-  return inPackage || rewritten ? url : besideThisModule('./ruppert.wasm');
+  const rewritten = packaged.href !== besideThisModule(`./dist/${file}`).href;
+  return inPackage || rewritten ? packaged : besideThisModule(`./${file}`);
 }
+
+export const MODULES = Object.freeze({
+  mesher: Object.freeze({
+    file: 'ruppert.wasm',
+    factory: createRuppertModule,
+    probe: 'triangulateStaged',  // a binding that is there once the instance is ready
+    defaultUrl: () => packagedOrBeside('ruppert.wasm',
+      import.meta.url === undefined ? undefined : new URL('./dist/ruppert.wasm', import.meta.url)),
+  }),
+  formats: Object.freeze({
+    file: 'ruppert-formats.wasm',
+    factory: createFormatsModule,
+    probe: 'readPlc',
+    defaultUrl: () => packagedOrBeside('ruppert-formats.wasm',
+      import.meta.url === undefined ? undefined : new URL('./dist/ruppert-formats.wasm', import.meta.url)),
+  }),
+});
 
 // new URL(file, import.meta.url) as the platform resolves it, out of bundlers' sight: webpack
 // rewrites that form even with a variable first argument, so the base goes through a variable too.
@@ -26,9 +47,11 @@ function besideThisModule(file) {
   return new URL(file, here);
 }
 
-function loadFailure(url, reason, cause) {
-  return new MeshError('IO_ERROR', `could not load the WebAssembly module ${absoluteUrl(url)}: ${reason}` +
-    ' (pass init({ wasmUrl }) to say where ruppert.wasm is served)', { cause });
+function loadFailure(url, reason, cause, kind) {
+  const hint = kind === MODULES.formats
+    ? ' (pass init({ formats: { wasmUrl } }) to say where ruppert-formats.wasm is served, or init({ formats: false }) to mesh without the text formats)'
+    : kind === MODULES.mesher ? ' (pass init({ wasmUrl }) to say where ruppert.wasm is served)' : '';
+  return new MeshError('IO_ERROR', `could not load the WebAssembly module ${absoluteUrl(url)}: ${reason}${hint}`, { cause });
 }
 
 // Node without the package's node entry (a direct import of wasm/index.js, as the benchmarks do).
@@ -37,60 +60,62 @@ function builtinReadFile() {
   return fs ? (url) => fs.promises.readFile(url) : null;
 }
 
-async function compileBytes(bytes, url, contentType) {
+async function compileBytes(bytes, url, contentType, kind) {
   try {
     return await WebAssembly.compile(bytes);
   } catch (cause) {
     const served = contentType ? `, served as ${contentType}` : '';
-    throw loadFailure(url, `not a WebAssembly module (${cause.message}${served})`, cause);
+    throw loadFailure(url, `not a WebAssembly module (${cause.message}${served})`, cause, kind);
   }
 }
 
-async function readLocal(url) {
+async function readLocal(url, kind) {
   const readFile = getNodeHost()?.readFile ?? builtinReadFile();
-  if (readFile === null) throw loadFailure(url, 'file: URLs can only be read in Node');
+  if (readFile === null) throw loadFailure(url, 'file: URLs can only be read in Node', undefined, kind);
   let bytes;
   try {
     bytes = await readFile(new URL(url));
   } catch (cause) {
-    throw loadFailure(url, cause.message, cause);
+    throw loadFailure(url, cause.message, cause, kind);
   }
-  return compileBytes(bytes, url);
+  return compileBytes(bytes, url, undefined, kind);
 }
 
-async function fetchAndCompile(url) {
-  if (String(url).startsWith('file:')) return readLocal(url);
+async function fetchAndCompile(url, kind) {
+  if (String(url).startsWith('file:')) return readLocal(url, kind);
   let response;
   try {
     response = await fetch(url, { credentials: 'same-origin' });
   } catch (cause) {
-    throw loadFailure(url, `the request failed (${cause.message})`, cause);
+    throw loadFailure(url, `the request failed (${cause.message})`, cause, kind);
   }
-  if (!response.ok) throw loadFailure(url, `HTTP ${response.status}${response.statusText ? ` ${response.statusText}` : ''}`);
+  if (!response.ok) throw loadFailure(url, `HTTP ${response.status}${response.statusText ? ` ${response.statusText}` : ''}`, undefined, kind);
   const contentType = response.headers.get('content-type') ?? '';
   // Streaming compilation needs the application/wasm MIME type; fall back when a server lacks it.
   if (typeof WebAssembly.compileStreaming === 'function' && contentType.startsWith('application/wasm')) {
     try {
       return await WebAssembly.compileStreaming(response);
     } catch (cause) {
-      throw loadFailure(url, `not a WebAssembly module (${cause.message})`, cause);
+      throw loadFailure(url, `not a WebAssembly module (${cause.message})`, cause, kind);
     }
   }
-  return compileBytes(await response.arrayBuffer(), url, contentType);
+  return compileBytes(await response.arrayBuffer(), url, contentType, kind);
 }
 
 /**
  * @param {{ wasmUrl?: string | URL, locateFile?: (file: string) => string,
  *           wasmBinary?: ArrayBuffer | ArrayBufferView, wasmModule?: WebAssembly.Module }} options
+ * @param {object} kind a MODULES entry (default: the mesher)
+ * @param {string | URL} [fallbackUrl] where to look when the options name no source
  * @returns {Promise<WebAssembly.Module>}
  */
-export async function compileWasm(options = {}) {
+export async function compileWasm(options = {}, kind = MODULES.mesher, fallbackUrl = undefined) {
   if (options.wasmModule instanceof WebAssembly.Module) return options.wasmModule;
   if (options.wasmBinary) return WebAssembly.compile(options.wasmBinary);
   let url = options.wasmUrl;
-  if (url === undefined && typeof options.locateFile === 'function') url = options.locateFile('ruppert.wasm');
-  if (url === undefined) url = defaultWasmUrl();
-  return fetchAndCompile(url);
+  if (url === undefined && typeof options.locateFile === 'function') url = options.locateFile(kind.file);
+  if (url === undefined) url = fallbackUrl ?? kind.defaultUrl();
+  return fetchAndCompile(url, kind);
 }
 
 function moduleArgument(instantiate) {
@@ -106,14 +131,14 @@ function moduleArgument(instantiate) {
 }
 
 /** Asynchronous instantiation: always allowed, also on a browser's main thread. */
-export async function instantiate(compiled) {
+export async function instantiate(compiled, kind = MODULES.mesher) {
   let fail;
   const failed = new Promise((resolve, reject) => { fail = reject; });
   const module = moduleArgument((imports, receive) => {
     WebAssembly.instantiate(compiled, imports).then((instance) => receive(instance, compiled), fail);
     return {};
   });
-  await Promise.race([createRuppertModule(module), failed]);
+  await Promise.race([kind.factory(module), failed]);
   return module;
 }
 
@@ -122,7 +147,7 @@ export async function instantiate(compiled) {
  * returns, so the bindings are usable at once. Browsers may refuse this on their main thread for
  * large modules; then it throws and the caller falls back to the asynchronous path.
  */
-export function instantiateSync(compiled) {
+export function instantiateSync(compiled, kind = MODULES.mesher) {
   const module = moduleArgument((imports, receive) => {
     const instance = new WebAssembly.Instance(compiled, imports);
     receive(instance, compiled);
@@ -130,7 +155,7 @@ export function instantiateSync(compiled) {
   });
   // The factory's promise only matters for the asynchronous path; silence a later rejection
   // (an abort rejects it again).
-  createRuppertModule(module).catch(() => {});
-  if (typeof module.triangulateStaged !== 'function') throw new Error('synchronous instantiation failed');
+  kind.factory(module).catch(() => {});
+  if (typeof module[kind.probe] !== 'function') throw new Error('synchronous instantiation failed');
   return module;
 }

@@ -1,14 +1,17 @@
-// The object init() resolves to: triangulate(), the readers and writers, over one wasm instance.
+// The object init() resolves to: triangulate(), the readers and writers, over the mesher's and the
+// text formats' wasm instances (instance-host.js replaces an instance after an abort).
 //
 // Every binding returns a plain object; a failure is { errorCode, errorMessage, reset? } and
-// becomes a MeshError here. Anything else that escapes a binding (an abort, a trap, a stack
-// overflow) leaves the instance in an unknown state, so it is dropped and the next call runs on a
-// fresh instance of the same compiled module.
+// becomes a MeshError here.
 import { MeshError } from './errors.js';
 import { triangulateInHeap } from './heap-call.js';
-import { instantiate, instantiateSync } from './loader.js';
 import { rejectUnknownKeys } from './known-keys.js';
 import { checkMesh, checkOptions, checkPlc } from './input-checks.js';
+
+// The binding's name -> what the user called, for the message of a mesher without formats.
+const PUBLIC_NAMES = { readPlc: 'parsePoly, parseNode and parseJson', readPolyWithNode: 'parsePoly',
+  writeMesh: 'the to*() writers', readMeshFiles: 'parseEle', writeVoronoi: 'toVoronoiNode and toVoronoiEdge',
+  parseCliArgs: 'the CLI' };
 
 function describeReturn(value) {
   if (typeof value === 'string') return JSON.stringify(value);
@@ -23,54 +26,19 @@ function requireText(text, what) {
 }
 
 /**
- * @param {WebAssembly.Module} compiled
- * @param {object} firstModule an instantiated Emscripten module (see loader.js)
+ * @param {object} mesher the mesher module's host (instance-host.js): triangulate(), GeoJSON
+ * @param {object | null} formats the text formats module's host, or null (init({ formats: false }));
+ *   the same host as `mesher` for wasm/cli.js's module, which holds both
+ * @param {boolean} [cli] add what wasm/cli.js uses (its module holds the CLI's parser and texts)
  */
-export function createMesher(compiled, firstModule) {
-  let module = firstModule;
-  let replacement = null;
-
-  // Forget the current instance and start preparing the next one in the background, so that a
-  // browser main thread (where synchronous instantiation may be refused) has it ready in time.
-  function discard() {
-    module = null;
-    const pending = instantiate(compiled).then((fresh) => {
-      if (module === null) module = fresh;
-      if (replacement === pending) replacement = null;
-    });
-    pending.catch(() => { if (replacement === pending) replacement = null; });
-    replacement = pending;
-  }
-
-  function current() {
-    if (module !== null) return module;
-    try {
-      module = instantiateSync(compiled);
-      return module;
-    } catch (cause) {
-      throw new MeshError('INTERNAL',
-        'the WebAssembly module is being re-instantiated after an abort; await mesher.ready and retry', { cause });
-    }
-  }
-
-  // Runs body(module); an exception out of it (an abort, a trap) discards the instance.
-  function run(name, body) {
-    const m = current();
-    let result;
-    try {
-      result = body(m);
-    } catch (cause) {
-      discard();
-      const detail = cause instanceof Error ? cause.message : String(cause);
-      throw new MeshError('INTERNAL',
-        `the WebAssembly module aborted in ${name}() (${detail}); the next call runs on a fresh instance`, { cause });
-    }
-    if (result && result.reset) discard();
-    return result;
-  }
-
+export function createMesher(mesher, formats, cli = false) {
+  // The readers and writers other than GeoJSON's (see wasm/geojson_reader.cpp) are in `formats`.
   function call(name, ...args) {
-    return run(name, (m) => m[name](...args));
+    if (formats === null) {
+      throw new MeshError('INVALID_OPTION', `this mesher was made with init({ formats: false }), which loads no text formats: ` +
+        `call init() (or init({ formats: { wasmUrl } })) for ${PUBLIC_NAMES[name] ?? name}`);
+    }
+    return formats.call(name, ...args);
   }
 
   function check(result) {
@@ -110,7 +78,7 @@ export function createMesher(compiled, firstModule) {
         }
       };
     }
-    const result = run('triangulate', (m) => triangulateInHeap(m, input, native, report));
+    const result = mesher.run('triangulate', (m) => triangulateInHeap(m, input, native, report));
     if (result.errorCode === 'CALLBACK_FAILED') {
       throw callbackError ?? new MeshError('INTERNAL', 'a callback failed without an error');
     }
@@ -120,6 +88,7 @@ export function createMesher(compiled, firstModule) {
   function read(text, format, name, what) {
     requireText(text, what);
     if (typeof name !== 'string') throw new MeshError('MALFORMED_INPUT', `${what}: name must be a string`);
+    if (format === 'geojson') return check(mesher.call('readGeoJson', text, name)).plc;
     return check(call('readPlc', text, format, name)).plc;
   }
 
@@ -175,15 +144,18 @@ export function createMesher(compiled, firstModule) {
     return check(call('writeVoronoi', mesh.voronoi, indexBase, which)).text;
   }
 
-  return {
-    parseEle: (text, options) => readEle(text, options),
-    toVoronoiNode: (mesh) => writeVoronoi(mesh, 'node'),
-    toVoronoiEdge: (mesh) => writeVoronoi(mesh, 'edge'),
-    triangulate: (plc, options) => triangulate(plc, options),
+  const forCli = cli ? {
     /** For wasm/cli.js: also returns mesh.report = { summary?, stats?, trace? } (the native CLI's texts). */
     _triangulateWithReport: (plc, options, report) => triangulate(plc, options, report),
     /** For wasm/cli.js: the native CLI's argument parser. */
     _parseCliArgs: (args) => check(call('parseCliArgs', args)),
+  } : {};
+  return {
+    ...forCli,
+    parseEle: (text, options) => readEle(text, options),
+    toVoronoiNode: (mesh) => writeVoronoi(mesh, 'node'),
+    toVoronoiEdge: (mesh) => writeVoronoi(mesh, 'edge'),
+    triangulate: (plc, options) => triangulate(plc, options),
     parsePoly: (text, options) => readPoly(text, options),
     parseNode: (text, name = '<node>') => read(text, 'node', name, 'parseNode'),
     parseJson: (text, name = '<json>') => read(text, 'json', name, 'parseJson'),
@@ -197,18 +169,20 @@ export function createMesher(compiled, firstModule) {
     toMsh: (mesh, input) => write(mesh, input, 'msh'),
     toVtu: (mesh) => write(mesh, null, 'vtu'),
     toGeoJson: (mesh) => write(mesh, null, 'geojson'),
+    /** Whether the text formats are loaded (init() without formats: false). */
+    hasFormats: formats !== null,
     /** Resolves once an instance is available (only ever pending right after an abort). */
     get ready() {
-      return module !== null || replacement === null ? Promise.resolve() : replacement;
+      return Promise.all([mesher.ready, formats?.ready]).then(() => {});
     },
-    /** Size of the wasm heap and bytes currently allocated in it. */
+    /** Size of the mesher's wasm heap and bytes currently allocated in it. */
     memoryUsage() {
-      const m = current();
+      const m = mesher.current();
       return { heapBytes: m.HEAPU8.length, allocatedBytes: m.allocatedBytes() };
     },
     /** Test hook: aborts the current instance (as an out-of-memory abort would). */
     _abortForTesting() {
-      return call('abortForTesting');
+      return mesher.call('abortForTesting');
     },
   };
 }

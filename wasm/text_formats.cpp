@@ -11,7 +11,7 @@
 namespace ruppert_wasm {
 namespace {
 
-// format: "poly", "node", "json" or "geojson".
+// format: "poly", "node" or "json" (GeoJSON is read by geojson_reader.cpp, in the mesher module).
 val readPlc(std::string text, std::string format, std::string name) {
   return guarded([&] {
     ruppert::Plc plc;
@@ -21,8 +21,6 @@ val readPlc(std::string text, std::string format, std::string name) {
       plc = ruppert::parseNode(text, name);
     } else if (format == "json") {
       plc = ruppert::parseJson(text, name);
-    } else if (format == "geojson") {
-      plc = ruppert::parseGeoJson(text, name);
     } else {
       throw ruppert::Error(ruppert::ErrorCode::InvalidOption, "unknown input format '" + format + "'");
     }

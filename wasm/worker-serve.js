@@ -14,16 +14,18 @@ import { meshBuffers } from './mesh-transfer.js';
  */
 export function meshRequestHandler(init, post) {
   let mesherPromise = null;
+  // A worker only meshes: the text formats module stays unloaded.
+  const initMesher = (options = {}) => init({ formats: false, ...options });
   return async function handle(message) {
     if (message.type === 'init') {
-      mesherPromise = init(message.options ?? {});
+      mesherPromise = initMesher(message.options);
       mesherPromise.catch(() => {});  // reported with the first request
       return;
     }
     if (message.type !== 'triangulate') return;
     const { id } = message;
     try {
-      const mesher = await (mesherPromise ??= init());
+      const mesher = await (mesherPromise ??= initMesher());
       const options = { ...message.options };
       if (message.progress) {
         options.onProgress = (progress) => { post({ type: 'progress', id, progress }); };

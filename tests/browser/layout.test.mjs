@@ -110,6 +110,7 @@ test('keyboard only: tools, zoom, step mode, and a visible focus ring', async ()
 test('the server sends the right types and refuses paths outside the repository', async () => {
   const get = (path) => fetch(`${harness.baseUrl}${path}`);
   assert.equal((await get('/wasm/dist/ruppert.wasm')).headers.get('content-type'), 'application/wasm');
+  assert.equal((await get('/wasm/dist/ruppert-formats.wasm')).headers.get('content-type'), 'application/wasm');
   assert.match((await get('/wasm/index.js')).headers.get('content-type'), /^text\/javascript/);
   assert.match((await get('/web/')).headers.get('content-type'), /^text\/html/);
   for (const path of ['/../../etc/passwd', '/web/..%2f..%2f..%2fetc%2fpasswd', '/%2e%2e/%2e%2e/etc/passwd']) {

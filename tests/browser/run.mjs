@@ -22,7 +22,7 @@ if (!existsSync(CHROMIUM)) {
     'or set CHROMIUM_PATH');
   process.exit(1);
 }
-if (!existsSync(`${root}wasm/dist/ruppert.wasm`)) {
+if (!['ruppert', 'ruppert-formats', 'ruppert-cli'].every((name) => existsSync(`${root}wasm/dist/${name}.wasm`))) {
   const env = { ...process.env, NODE_PATH: [process.env.NODE_PATH, '/usr/share/nodejs'].filter(Boolean).join(':') };
   const status = run('node', ['wasm/build-wasm.mjs'], env);
   if (status !== 0) process.exit(status);

@@ -4,8 +4,9 @@
 // configuration beyond the entry; esbuild gets the .wasm copied beside the bundle, as the README
 // says), serve each output on 127.0.0.1 (and the sources through vite's development server) and
 // run it in Debian's Chromium: a mesh on the main
-// thread, a worker mesh with progress, a cancel and a request after it, and the two load
-// failures (a missing .wasm, a missing worker script) named with their URL and HTTP status.
+// thread, the text formats module read and write there, a worker mesh with progress, a cancel and a
+// request after it, and the three load failures (a missing mesher or formats .wasm, a missing worker
+// script) named with their URL and HTTP status.
 // Set RUPPERT_KEEP_TMP=1 to keep the folder for inspection.
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
@@ -41,7 +42,9 @@ const esbuildEntries = ['src/main.js', 'node_modules/ruppert/wasm/worker.js', '-
   '--entry-names=[name]'];
 
 function copyWasmBeside(out) {
-  cpSync(join(app, 'node_modules/ruppert/wasm/dist/ruppert.wasm'), join(app, out, 'ruppert.wasm'));
+  for (const file of ['ruppert.wasm', 'ruppert-formats.wasm']) {
+    cpSync(join(app, `node_modules/ruppert/wasm/dist/${file}`), join(app, out, file));
+  }
 }
 
 // Each build: its command and the page that loads its output (vite writes its own from index.html).
@@ -90,20 +93,25 @@ function checkResults(results, url, devServer) {
   assert.deepEqual(Object.keys(results.mainThread).sort(), ['complete', 'minAngle', 'triangles'],
     `main thread: ${JSON.stringify(results.mainThread)}`);
   assert.ok(results.mainThread.triangles > 100 && results.mainThread.complete && results.mainThread.minAngle >= 30);
+  assert.deepEqual(results.formats, { nodeHeader: results.formats.nodeHeader, vtu: true, points: 8 }, `formats: ${JSON.stringify(results.formats)}`);
+  assert.match(results.formats.nodeHeader ?? '', /^\d+ 2 0 1$/, `formats: ${JSON.stringify(results.formats)}`);
   const { worker } = results;
   assert.ok(worker.mesh?.triangles > 10000 && worker.mesh.complete, `worker mesh: ${JSON.stringify(worker)}`);
   assert.ok(worker.progressCalls >= 1, `worker progress calls: ${worker.progressCalls}`);
   assert.equal(worker.cancelled?.code, 'CANCELLED', `cancel: ${JSON.stringify(worker.cancelled)}`);
   assert.ok(worker.afterCancel.complete && worker.afterCancel.triangles > 10, 'a request after the cancel');
-  const { wasm, workerScript } = results.loadFailures;
+  const { wasm, formatsWasm, workerScript } = results.loadFailures;
   assert.equal(wasm.code, 'IO_ERROR', JSON.stringify(wasm));
+  assert.equal(formatsWasm.code, 'IO_ERROR', JSON.stringify(formatsWasm));
   assert.equal(workerScript.code, 'IO_ERROR', JSON.stringify(workerScript));
   if (devServer) {
     // vite's development server answers an unknown path with its index.html (HTTP 200).
     assert.match(wasm.message, new RegExp(`${url}no-such-file\\.wasm: not a WebAssembly module .*served as text/html`));
+    assert.match(formatsWasm.message, new RegExp(`${url}no-such-formats\\.wasm: not a WebAssembly module .*formats: false`));
     assert.match(workerScript.message, new RegExp(`${url}no-such-worker\\.js: it loads \\(HTTP 200, text/html\\)`));
   } else {
     assert.match(wasm.message, new RegExp(`${url}no-such-file\\.wasm: HTTP 404`));
+    assert.match(formatsWasm.message, new RegExp(`${url}no-such-formats\\.wasm: HTTP 404.*formats: false`));
     assert.match(workerScript.message, new RegExp(`${url}no-such-worker\\.js: HTTP 404`));
   }
 }
@@ -115,7 +123,7 @@ async function runInBrowser(browser, name) {
   const problems = [];
   tab.on('pageerror', (error) => problems.push(`pageerror: ${error.message}`));
   tab.on('response', (response) => {
-    const deliberate = /no-such-(file\.wasm|worker\.js)$/.test(response.url());
+    const deliberate = /no-such-(file\.wasm|formats\.wasm|worker\.js)$/.test(response.url());
     if (response.status() >= 400 && !deliberate) problems.push(`HTTP ${response.status()} for ${response.url()}`);
   });
   try {

@@ -35,10 +35,37 @@ test('the two-line example from the README meshes a square to the requested qual
 // bytes); refining a mesh, quadratic nodes and the Voronoi dual 161,811 bytes (from 144,912); markers,
 // edges, attributes, jettison and no-Steiner options 154,640 bytes. All merged, with the readers and
 // writers compiled for size (core/src/cold_code.h): 175,322 bytes.
-test('the shipped .wasm is at most 180 KB gzipped', () => {
-  const wasm = readFileSync(new URL('./node_modules/ruppert/wasm/dist/ruppert.wasm', import.meta.url));
-  const gzipped = gzipSync(wasm, { level: 9 }).length;
-  assert.ok(gzipped <= 180000, `${gzipped} bytes gzipped`);
+// Then the text formats moved to a module of their own (ruppert-formats.wasm) and the native CLI's
+// parser and texts to ruppert-cli.wasm, which only wasm/cli.js loads: the mesher (with the GeoJSON
+// reader, whose hole seeds need a triangulation) is 150 KB again.
+const gzippedSize = (file) => gzipSync(readFileSync(new URL(`./node_modules/ruppert/wasm/dist/${file}`, import.meta.url)), { level: 9 }).length;
+test('the mesher .wasm is at most 150 KB gzipped, the text formats at most 60 KB', () => {
+  const mesher = gzippedSize('ruppert.wasm'), formats = gzippedSize('ruppert-formats.wasm');
+  assert.ok(mesher <= 150000, `ruppert.wasm: ${mesher} bytes gzipped`);
+  assert.ok(formats <= 60000, `ruppert-formats.wasm: ${formats} bytes gzipped`);
+});
+
+test('init({ formats: false }) meshes without the text formats and says what is missing', async () => {
+  const mesher = await init({ formats: false });
+  assert.equal(mesher.hasFormats, false);
+  const mesh = mesher.triangulate(square, { minAngle: 30, maxArea: 0.01 });
+  assert.deepEqual(validateMesh(mesh, { input: square, minAngle: 30, maxArea: 0.01 }), []);
+  // GeoJSON is read by the mesher module (its hole seeds need a triangulation).
+  const ring = { type: 'Polygon', coordinates: [[[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]]] };
+  assert.equal(mesher.parseGeoJson(JSON.stringify(ring)).points.length, 8);
+  assert.throws(() => mesher.toVtu(mesh), (e) => e.code === 'INVALID_OPTION' && /formats: false.*to\*\(\) writers/.test(e.message));
+  assert.throws(() => mesher.parsePoly('4 2 0 0\n'), (e) => e.code === 'INVALID_OPTION' && /parsePoly/.test(e.message));
+  assert.equal((await init()).hasFormats, true);
+});
+
+test('init({ formats }) takes a source of its own, and a bad one is named', async () => {
+  const formatsBinary = readFileSync(new URL('./node_modules/ruppert/wasm/dist/ruppert-formats.wasm', import.meta.url));
+  const mesher = await init({ formats: { wasmBinary: formatsBinary } });
+  assert.match(mesher.toNode(mesher.triangulate(square)), /^4 2 0 1\n/);
+  await assert.rejects(init({ formats: { wasmUrl: 'file:///nonexistent-ruppert-folder/ruppert-formats.wasm' } }),
+    (e) => e.code === 'IO_ERROR' && /nonexistent-ruppert-folder\/ruppert-formats\.wasm.*formats: false/.test(e.message));
+  await assert.rejects(init({ formats: 'yes' }), (e) => e.code === 'INVALID_OPTION' && /formats must be true, false or/.test(e.message));
+  await assert.rejects(init({ formats: { wasmURL: 'x' } }), (e) => e.code === 'INVALID_OPTION' && /wasmURL/.test(e.message));
 });
 
 test('init() loads once and returns the same mesher', async () => {

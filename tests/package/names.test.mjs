@@ -78,6 +78,9 @@ test("index.d.ts's ReasonKind and NoticeKind are the core's", async () => {
 test('placement, encroachment and variant: the core\'s names, accepted by triangulate(), the CLI and index.d.ts', async () => {
   const names = await bindingNames();
   const mesher = await init();
+  // The native CLI's parser is in the module wasm/cli.js runs on (ruppert-cli.wasm).
+  const { initCli } = await import(new URL('wasm/cli-mesher.js', installed));
+  const cli = await initCli();
   const square = { points: [0, 0, 1, 0, 1, 1, 0, 1], segments: [0, 1, 1, 2, 2, 3, 3, 0] };
   for (const [option, key] of [['placement', 'placements'], ['encroachment', 'encroachments'], ['variant', 'variants']]) {
     const core = names[key];
@@ -89,7 +92,7 @@ test('placement, encroachment and variant: the core\'s names, accepted by triang
     for (const name of core) {
       assert.equal(mesher.triangulate(square, { [option]: name }).complete, true, `${option} '${name}'`);
       // The native CLI's parser (compiled into the package for wasm/cli.js) reads and returns it.
-      const parsed = mesher._parseCliArgs([`--${option}`, name, 'in.poly']);
+      const parsed = cli._parseCliArgs([`--${option}`, name, 'in.poly']);
       assert.equal(parsed.usageError, undefined, `--${option} ${name}`);
       assert.equal(parsed.options[option], name);
     }

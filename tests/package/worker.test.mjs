@@ -95,3 +95,19 @@ test('terminate() rejects pending requests with CANCELLED', async () => {
   await worker.terminate();
   await rejected;
 });
+
+test('the worker loads the mesher alone (init with formats: false), keeping the load options it is given', async () => {
+  const { meshRequestHandler } = await import(new URL('./node_modules/ruppert/wasm/worker-serve.js', import.meta.url));
+  const { init } = await import('ruppert');
+  const seen = [];
+  const posted = [];
+  const handle = meshRequestHandler((options) => { seen.push(options); return init(options); }, (data) => posted.push(data));
+  await handle({ type: 'init', options: { wasmUrl: new URL('./node_modules/ruppert/wasm/dist/ruppert.wasm', import.meta.url).href } });
+  await handle({ type: 'triangulate', id: 1, plc: square, options: { minAngle: 30, maxArea: 0.01 } });
+  assert.equal(seen.length, 1);
+  assert.equal(seen[0].formats, false);
+  assert.match(String(seen[0].wasmUrl), /ruppert\.wasm$/);
+  assert.equal(posted.length, 1);
+  assert.equal(posted[0].type, 'result', JSON.stringify(posted[0]).slice(0, 200));
+  assert.deepEqual(validateMesh(posted[0].mesh, { input: square, minAngle: 30, maxArea: 0.01 }), []);
+});

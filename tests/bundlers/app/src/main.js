@@ -16,6 +16,14 @@ async function mainThread() {
   return summary(mesher.triangulate(square, { minAngle: 30, maxArea: 0.001 }));
 }
 
+// The text formats module (ruppert-formats.wasm), which init() loads beside the mesher.
+async function formats() {
+  const mesher = await init();
+  const plc = mesher.parsePoly('4 2 0 0\n0 0 0\n1 1 0\n2 1 1\n3 0 1\n4 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n0\n');
+  const mesh = mesher.triangulate(plc, { minAngle: 30, maxArea: 0.01 });
+  return { nodeHeader: mesher.toNode(mesh).split('\n')[0], vtu: mesher.toVtu(mesh).startsWith('<?xml'), points: plc.points.length };
+}
+
 async function inWorker() {
   const worker = createMeshWorker();
   let progressCalls = 0;
@@ -32,16 +40,17 @@ async function inWorker() {
 }
 
 async function loadFailures() {
-  const wasm = await outcome(init({ wasmUrl: 'no-such-file.wasm' }));
+  const wasm = await outcome(init({ wasmUrl: 'no-such-file.wasm', formats: false }));
+  const formatsWasm = await outcome(init({ formats: { wasmUrl: 'no-such-formats.wasm' } }));
   const worker = createMeshWorker({ workerUrl: 'no-such-worker.js' });
   const workerScript = await outcome(worker.triangulate(square));
   await worker.terminate();
-  return { wasm, workerScript };
+  return { wasm, formatsWasm, workerScript };
 }
 
 async function main() {
   const results = {};
-  for (const [name, check] of [['mainThread', mainThread], ['worker', inWorker], ['loadFailures', loadFailures]]) {
+  for (const [name, check] of [['mainThread', mainThread], ['formats', formats], ['worker', inWorker], ['loadFailures', loadFailures]]) {
     try {
       results[name] = await check();
     } catch (error) {
