@@ -8,9 +8,13 @@ import { SCREENSHOTS, launch, openPage, readStats, settle } from './harness.mjs'
 let harness;
 let page;
 let errors;
+const wasmFetched = [];  // the .wasm files requested by the page and its worker, in order
 
 before(async () => {
   harness = await launch();
+  harness.context.on('request', (request) => {
+    if (request.url().endsWith('.wasm')) wasmFetched.push(request.url().slice(harness.baseUrl.length));
+  });
   ({ page, errors } = await openPage(harness.context, `${harness.baseUrl}/web/`));
   assert.equal(await settle(page), 'done');
 });
@@ -42,6 +46,15 @@ const PENTAGON = `# pentagon with a hole
 1
 1 5 4.6
 `;
+
+// Issue 15: the page meshes in a worker on the mesher module alone (144 KB gzipped); the text
+// formats module comes with the first file read or written.
+test('the page fetches only the mesher to mesh, and the text formats with the first file', async () => {
+  assert.deepEqual(wasmFetched, ['/wasm/dist/ruppert.wasm']);
+  await page.setInputFiles('#file-input', { name: 'pentagon-with-hole.poly', mimeType: 'text/plain', buffer: Buffer.from(PENTAGON) });
+  assert.equal(await settle(page), 'done');
+  assert.deepEqual(wasmFetched.filter((path) => path.includes('formats')), ['/wasm/dist/ruppert-formats.wasm']);
+});
 
 test('every preset loads and meshes', async () => {
   const counts = new Map();
