@@ -69,5 +69,14 @@ export function createInstanceHost(compiled, kind, firstModule) {
  */
 export async function instanceHost(options, kind, fallbackUrl = undefined) {
   const compiled = await compileWasm(options, kind, fallbackUrl);
-  return createInstanceHost(compiled, kind, await instantiate(compiled, kind));
+  let first;
+  try {
+    first = await instantiate(compiled, kind);
+  } catch (cause) {
+    // A WebAssembly module, but not this one (a locateFile that answers one URL for every file,
+    // the other module's bytes, another version's): its imports do not match the glue's.
+    throw new MeshError('IO_ERROR', `the WebAssembly module given for ${kind.file} is not this package's ${kind.file} ` +
+      `(${cause?.message ?? cause}); locateFile is called with each file's name`, { cause });
+  }
+  return createInstanceHost(compiled, kind, first);
 }

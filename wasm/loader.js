@@ -135,10 +135,18 @@ export async function instantiate(compiled, kind = MODULES.mesher) {
   let fail;
   const failed = new Promise((resolve, reject) => { fail = reject; });
   const module = moduleArgument((imports, receive) => {
-    WebAssembly.instantiate(compiled, imports).then((instance) => receive(instance, compiled), fail);
+    WebAssembly.instantiate(compiled, imports).then((instance) => {
+      // The glue's start-up runs inside receive(): on another module's instance it throws.
+      try {
+        receive(instance, compiled);
+      } catch (error) {
+        fail(error);
+      }
+    }, fail);
     return {};
   });
   await Promise.race([kind.factory(module), failed]);
+  if (typeof module[kind.probe] !== 'function') throw new Error(`it has no ${kind.probe} binding`);
   return module;
 }
 

@@ -64,6 +64,14 @@ test('init({ formats }) takes a source of its own, and a bad one is named', asyn
   assert.match(mesher.toNode(mesher.triangulate(square)), /^4 2 0 1\n/);
   await assert.rejects(init({ formats: { wasmUrl: 'file:///nonexistent-ruppert-folder/ruppert-formats.wasm' } }),
     (e) => e.code === 'IO_ERROR' && /nonexistent-ruppert-folder\/ruppert-formats\.wasm.*formats: false/.test(e.message));
+  // Another module's bytes (a locateFile answering one URL for both files): named, not a crash.
+  const mesherBinary = readFileSync(new URL('./node_modules/ruppert/wasm/dist/ruppert.wasm', import.meta.url));
+  await assert.rejects(init({ formats: { wasmBinary: mesherBinary } }),
+    (e) => e.code === 'IO_ERROR' && /given for ruppert-formats\.wasm is not this package's/.test(e.message));
+  await assert.rejects(init({ wasmBinary: formatsBinary, formats: false }),
+    (e) => e.code === 'IO_ERROR' && /given for ruppert\.wasm is not this package's/.test(e.message));
+  const oneUrl = new URL('./node_modules/ruppert/wasm/dist/ruppert.wasm', import.meta.url);
+  await assert.rejects(init({ locateFile: () => oneUrl }), (e) => e.code === 'IO_ERROR' && /ruppert-formats\.wasm is not/.test(e.message));
   await assert.rejects(init({ formats: 'yes' }), (e) => e.code === 'INVALID_OPTION' && /formats must be true, false or/.test(e.message));
   await assert.rejects(init({ formats: { wasmURL: 'x' } }), (e) => e.code === 'INVALID_OPTION' && /wasmURL/.test(e.message));
 });
