@@ -73,6 +73,8 @@ export async function instanceHost(options, kind, fallbackUrl = undefined) {
   try {
     first = await instantiate(compiled, kind);
   } catch (cause) {
+    // No memory for the instance (RangeError) is not the module's fault: passed on as it is.
+    if (cause instanceof RangeError) throw cause;
     // A WebAssembly module, but not this one (a locateFile that answers one URL for every file,
     // the other module's bytes, another version's): its imports do not match the glue's.
     throw new MeshError('IO_ERROR', `the WebAssembly module given for ${kind.file} is not this package's ${kind.file} ` +

@@ -10,17 +10,18 @@ import createFormatsModule from './dist/ruppert-formats.mjs';
 import { MeshError } from './errors.js';
 import { absoluteUrl, classicScriptUrl, getNodeHost } from './host.js';
 
-// A classic-script bundle (esbuild's default iife format) has no import.meta.url: the file is
-// expected beside the bundle.
-// Otherwise `packaged` is the literal new URL('./dist/<file>', import.meta.url), written out per file
-// so that bundlers that copy assets (vite, webpack) see it and copy the file. A bundler that copies
-// no assets (esbuild) leaves that URL as it is, relative to the bundle: then, as the README says,
-// the file is expected beside the bundle rather than in a dist/ below it.
+// Where the package keeps `file`. `packaged` returns the literal new URL('./dist/<file>',
+// import.meta.url), written out per file so that bundlers that copy assets (vite, webpack) see it and
+// copy the file; it is only called where there is an import.meta.url: a classic-script bundle
+// (esbuild's default iife format) has none, and the file is expected beside the bundle. A bundler
+// that copies no assets (esbuild) leaves that URL as it is, relative to the bundle: then, as the
+// README says, the file is expected beside the bundle rather than in a dist/ below it.
 function packagedOrBeside(file, packaged) {
-  if (packaged === undefined) return new URL(file, classicScriptUrl);
+  if (import.meta.url === undefined) return new URL(file, classicScriptUrl);
+  const url = packaged();
   const inPackage = new URL(import.meta.url).pathname.endsWith('/loader.js');
-  const rewritten = packaged.href !== besideThisModule(`./dist/${file}`).href;
-  return inPackage || rewritten ? packaged : besideThisModule(`./${file}`);
+  const rewritten = url.href !== besideThisModule(`./dist/${file}`).href;
+  return inPackage || rewritten ? url : besideThisModule(`./${file}`);
 }
 
 export const MODULES = Object.freeze({
@@ -28,15 +29,13 @@ export const MODULES = Object.freeze({
     file: 'ruppert.wasm',
     factory: createRuppertModule,
     probe: 'triangulateStaged',  // a binding that is there once the instance is ready
-    defaultUrl: () => packagedOrBeside('ruppert.wasm',
-      import.meta.url === undefined ? undefined : new URL('./dist/ruppert.wasm', import.meta.url)),
+    defaultUrl: () => packagedOrBeside('ruppert.wasm', () => new URL('./dist/ruppert.wasm', import.meta.url)),
   }),
   formats: Object.freeze({
     file: 'ruppert-formats.wasm',
     factory: createFormatsModule,
     probe: 'readPlc',
-    defaultUrl: () => packagedOrBeside('ruppert-formats.wasm',
-      import.meta.url === undefined ? undefined : new URL('./dist/ruppert-formats.wasm', import.meta.url)),
+    defaultUrl: () => packagedOrBeside('ruppert-formats.wasm', () => new URL('./dist/ruppert-formats.wasm', import.meta.url)),
   }),
 });
 
