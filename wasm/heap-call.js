@@ -59,10 +59,24 @@ function writeTable(m, address, { fields }, arrays, numbers) {
 // An output table's values by position (layout's `at` names them): arrays copied out (or, for
 // READ_AS_VIEWS, [start, length] in elements, for viewOf), numbers as they are. One pass, no object
 // keyed by name: a call's fixed cost is most of a small mesh's.
+//
+// Every array of one table is a view into ONE new ArrayBuffer, each at an offset aligned to 8 bytes.
+// Why: V8 gives each typed array over 64 bytes a backing store of its own, about 2.3 us apiece in
+// Node 20 whatever its length (a `slice` of 16 doubles costs what one of 1,000 does), which was most
+// of a small mesh's call; one buffer is one such allocation. A worker's transfer list then holds one
+// buffer (mesh-transfer.js collects buffers in a Set).
 function readTable(m, address, { fields }) {
   const heap = m.HEAPF64;
   const values = new Array(fields.length);
+  let bytes = 0;
   for (let i = 0, k = address >>> 3; i < fields.length; i++) {
+    const { Type, view } = fields[i];
+    if (Type === undefined) { k++; continue; }
+    if (!view) bytes += (heap[k + 1] * Type.BYTES_PER_ELEMENT + 7) & ~7;
+    k += 2;
+  }
+  const buffer = new ArrayBuffer(bytes);
+  for (let i = 0, k = address >>> 3, offset = 0; i < fields.length; i++) {
     const { Type, view } = fields[i];
     if (Type === undefined) {
       values[i] = heap[k++];
@@ -70,8 +84,14 @@ function readTable(m, address, { fields }) {
     }
     const start = heap[k] / Type.BYTES_PER_ELEMENT, length = heap[k + 1];
     k += 2;
-    if (view) values[i] = [start, length];
-    else values[i] = length > 0 ? heapView(m, Type).slice(start, start + length) : new Type(0);
+    if (view) {
+      values[i] = [start, length];
+      continue;
+    }
+    const copy = new Type(buffer, offset, length);
+    if (length > 0) copy.set(heapView(m, Type).subarray(start, start + length));
+    values[i] = copy;
+    offset += (length * Type.BYTES_PER_ELEMENT + 7) & ~7;
   }
   return values;
 }

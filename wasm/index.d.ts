@@ -217,6 +217,11 @@ export interface Events {
   circumcenter: Float64Array;
 }
 
+/**
+ * A result's typed arrays (stats.angleHistogram and, where asked for, edges, edgeMarkers,
+ * inputToOutput included) are views into one ArrayBuffer that belongs to this result alone: copies,
+ * never views into WebAssembly memory. `.slice()` one to keep it apart from the others.
+ */
 export interface Mesh {
   /** Input points first, same indices; then new vertices. x0, y0, x1, y1, ... */
   points: Float64Array;

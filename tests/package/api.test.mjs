@@ -87,10 +87,24 @@ test('plain CDT of a square with an interior point: typed arrays owned by JavaSc
   assert.equal(mesh.triangles.length / 3, 4);
   assert.deepEqual([...mesh.vertexKinds], [0, 0, 0, 0, 0].map(() => VertexKind.INPUT));
   assert.deepEqual(validateMesh(mesh, { input: plc }), []);
-  // Copies, not views into wasm memory: each array owns its whole buffer.
+  // Copies, not views into wasm memory: the result's arrays share one buffer of their own, each at
+  // an 8-byte-aligned offset, and that buffer holds nothing else.
+  const views = [];
+  const collect = (value) => {
+    if (ArrayBuffer.isView(value)) views.push(value);
+    else if (value !== null && typeof value === 'object' && !Array.isArray(value)) Object.values(value).forEach(collect);
+  };
+  collect(mesh);
   for (const name of ['points', 'triangles', 'neighbors', 'segments', 'segmentIds', 'vertexKinds', 'triangleAttributes']) {
-    assert.equal(mesh[name].byteOffset, 0, name);
-    assert.equal(mesh[name].buffer.byteLength, mesh[name].byteLength, name);
+    assert.ok(views.includes(mesh[name]), name);
+  }
+  assert.equal(new Set(views.map((v) => v.buffer)).size, 1);
+  const aligned = (bytes) => Math.ceil(bytes / 8) * 8;
+  assert.equal(views[0].buffer.byteLength, views.reduce((sum, v) => sum + aligned(v.byteLength), 0));
+  const spans = views.map((v) => [v.byteOffset, v.byteOffset + v.byteLength]).sort((a, b) => a[0] - b[0]);
+  for (let i = 0; i < spans.length; i++) {
+    assert.equal(spans[i][0] % 8, 0);
+    if (i > 0) assert.ok(spans[i][0] >= spans[i - 1][1], 'views do not overlap');
   }
   // ... so they survive the heap growing under a later, larger call.
   const before = Array.from(mesh.points);
