@@ -5,7 +5,27 @@
 
 namespace ruppert::detail {
 
-BadTriangleQueue::BadTriangleQueue() : buckets_(kBuckets) {}
+namespace {
+
+// The buckets of the last queue this thread destroyed, emptied but with their capacity, for the
+// next one: a small mesh otherwise spends a tenth of its allocations growing the few buckets it
+// uses from empty, one doubling at a time, on every call. Kept only while they are small.
+constexpr std::size_t kKeptEntries = std::size_t(1) << 16;
+thread_local std::vector<std::vector<BadTriangle>> keptBuckets;
+
+}  // namespace
+
+BadTriangleQueue::BadTriangleQueue() {
+  if (keptBuckets.size() == std::size_t(kBuckets)) buckets_.swap(keptBuckets);
+  else buckets_.resize(kBuckets);
+}
+
+BadTriangleQueue::~BadTriangleQueue() {
+  if (buckets_.size() != std::size_t(kBuckets) || !keptBuckets.empty()) return;
+  std::size_t entries = 0;
+  for (auto& b : buckets_) b.clear(), entries += b.capacity();
+  if (entries <= kKeptEntries) keptBuckets.swap(buckets_);
+}
 
 int BadTriangleQueue::classOf(double shortest2) {
   int e = 0;

@@ -30,6 +30,11 @@ class BadTriangleQueue {
   static constexpr int kAngleClasses = 64;  // queued triangles counted by smallest angle, for progress
 
   BadTriangleQueue();
+  ~BadTriangleQueue();
+  BadTriangleQueue(const BadTriangleQueue&) = default;
+  BadTriangleQueue& operator=(const BadTriangleQueue&) = default;
+  BadTriangleQueue(BadTriangleQueue&&) = default;
+  BadTriangleQueue& operator=(BadTriangleQueue&&) = default;
 
   // Queue the triangle in slot s of t. skinny: queued by its squared shortest edge `shortest2`;
   // otherwise (too large only) in the last class.

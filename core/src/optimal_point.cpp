@@ -74,7 +74,7 @@ struct Scorer {
     double worst = HUGE_VAL, excess = 0;
     std::size_t worstAt = first;
     for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t k = (first + i) % n;
+      const std::size_t k = first + i < n ? first + i : first + i - n;  // (first + i) mod n, no division
       double apex = 0;
       bool constrained = false;
       const double t = term(k, x, apex, constrained);

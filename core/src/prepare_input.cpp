@@ -151,7 +151,7 @@ std::vector<double> scaleInput(const Plc& plc, const Options& options, double ma
   if (maxAbs > 0) {
     int e = 0;
     std::frexp(maxAbs, &e);
-    out.exponent = 1 - e;
+    out.setExponent(1 - e);
   }
   auto scaled = [&](double v, const char* array, std::size_t i, const char* field) {
     const double s = out.toInternal(v);

@@ -16,10 +16,17 @@ namespace ruppert::detail {
 
 struct PreparedInput {
   // internal coordinate = input coordinate * 2^exponent (exact; ldexp reaches factors beyond the
-  // range of a double, which subnormal inputs need)
+  // range of a double, which subnormal inputs need). Where 2^exponent and 2^-exponent are both
+  // normal doubles a multiplication gives the same correctly rounded result as ldexp, which is a
+  // library call (in WebAssembly too) on paths that run per candidate point.
   int exponent = 0;
-  double toInternal(double v) const { return std::ldexp(v, exponent); }
-  double toUser(double v) const { return std::ldexp(v, -exponent); }
+  void setExponent(int e) {
+    exponent = e;
+    const bool normal = e >= -1022 && e <= 1022;
+    up_ = normal ? std::ldexp(1.0, e) : 0, down_ = normal ? std::ldexp(1.0, -e) : 0;
+  }
+  double toInternal(double v) const { return up_ != 0 ? v * up_ : std::ldexp(v, exponent); }
+  double toUser(double v) const { return down_ != 0 ? v * down_ : std::ldexp(v, -exponent); }
   // Areas scale by 2^(2 exponent); a positive bound never rounds to 0 ("none").
   double areaToInternal(double a) const {
     const double s = std::ldexp(a, 2 * exponent);
@@ -35,6 +42,9 @@ struct PreparedInput {
   std::vector<double> holes;               // scaled
   std::vector<Region> regions;             // scaled seeds (maxArea scaled by scale^2)
   double maxArea = 0;                      // scaled; 0 = none
+
+ private:
+  double up_ = 1, down_ = 1;  // 2^exponent and 2^-exponent, or 0 where ldexp must be used
 };
 
 // Throws ruppert::Error naming the offending item. Appends DuplicatePoint notices.
