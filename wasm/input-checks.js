@@ -27,6 +27,12 @@ function describe(value) {
   return String(value);
 }
 
+// The absent optional arrays of a checked PLC: one frozen empty array of each type, shared, since
+// even an empty typed array costs an allocation (a PLC of points alone had eight per call).
+const NO_INDICES = Object.freeze(new Uint32Array(0));
+const NO_NUMBERS = Object.freeze(new Float64Array(0));
+const NO_MARKERS = Object.freeze(new Int32Array(0));
+
 function invalid(message) {
   return new MeshError('MALFORMED_INPUT', message);
 }
@@ -93,7 +99,7 @@ function toIndices(value, name, limit, what) {
 }
 
 function toMarkers(value, name) {
-  if (value === undefined || value === null) return new Int32Array(0);
+  if (value === undefined || value === null) return NO_MARKERS;
   if (value instanceof Int32Array) return value;
   if (!isNumericTypedArray(value) && !Array.isArray(value)) {
     throw invalid(`${name} must be an array or a typed array of integers, got ${describe(value)}`);
@@ -119,11 +125,11 @@ function regionNumber(region, i, key, fallback) {
 // Issue 16, refining a mesh: triangles (3 point indices each) and triangleMaxArea (one per triangle,
 // <= 0: none); the core checks the geometry (zero-area triangles) and NaN bounds.
 function oldMesh(plc, pointCount) {
-  const triangles = plc.triangles == null ? new Uint32Array(0) : toIndices(plc.triangles, 'triangles', pointCount, 'point');
+  const triangles = plc.triangles == null ? NO_INDICES : toIndices(plc.triangles, 'triangles', pointCount, 'point');
   if (triangles.length % 3 !== 0) {
     throw invalid(`triangles has length ${triangles.length}: a triangle is three point indices`);
   }
-  const triangleMaxArea = plc.triangleMaxArea == null ? new Float64Array(0)
+  const triangleMaxArea = plc.triangleMaxArea == null ? NO_NUMBERS
     : toFloat64(plc.triangleMaxArea, 'triangleMaxArea', { pairs: false });
   if (triangleMaxArea.length !== 0 && triangleMaxArea.length !== triangles.length / 3) {
     throw invalid(`triangleMaxArea has ${triangleMaxArea.length} entries for ${triangles.length / 3} triangles`);
@@ -143,14 +149,14 @@ export function checkPlc(plc) {
   if (plc.points === undefined) throw invalid('the input has no "points" array');
   const points = toFloat64(plc.points, 'points', { pairs: true });
   const pointCount = points.length / 2;
-  const segments = plc.segments == null ? new Uint32Array(0)
+  const segments = plc.segments == null ? NO_INDICES
     : toIndices(plc.segments, 'segments', pointCount, 'point');
   if (segments.length % 2 !== 0) {
     throw invalid(`segments has odd length ${segments.length}: a segment is a pair of point indices`);
   }
-  const holes = plc.holes == null ? new Float64Array(0) : toFloat64(plc.holes, 'holes', { pairs: true });
+  const holes = plc.holes == null ? NO_NUMBERS : toFloat64(plc.holes, 'holes', { pairs: true });
 
-  let regions = new Float64Array(0);
+  let regions = NO_NUMBERS;
   if (plc.regions != null) {
     if (!Array.isArray(plc.regions)) {
       throw invalid(`regions must be an array of { x, y, attribute, maxArea }, got ${describe(plc.regions)}`);
@@ -189,7 +195,7 @@ export function checkPlc(plc) {
 // pointAttributes: flat, attributesPerPoint values per point; without attributesPerPoint the count is
 // the length divided by the number of points (which must divide it).
 function checkAttributes(plc, pointCount) {
-  const pointAttributes = plc.pointAttributes == null ? new Float64Array(0)
+  const pointAttributes = plc.pointAttributes == null ? NO_NUMBERS
     : toFloat64(plc.pointAttributes, 'pointAttributes', { pairs: false });
   let attributesPerPoint = plc.attributesPerPoint;
   if (attributesPerPoint !== undefined &&
