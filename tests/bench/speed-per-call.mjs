@@ -5,7 +5,7 @@
 //   npm install --no-save triangle-wasm     (or set TRIANGLE_WASM_DIR to an installed copy's folder,
 //                                            safer: a later plain `npm install` prunes --no-save)
 //   node tests/bench/speed-per-call.mjs [--dir DIR]... [--no-corpus] [--no-families] [--angle 30]
-//        [--batch-ms 40] [--rounds 5] [--only SUBSTRING] [--json FILE] [--placement P]
+//        [--batch-ms 40] [--rounds 5] [--only SUBSTRING] [--json FILE] [--placement P] [--warmup-ms 3000]
 //
 // Inputs: every .poly of the shared corpus (RUPPERT_SHARED_DATA or ../shared/data; family "corpus"),
 // every .poly of each --dir (family = the file name without a trailing -<seed>), and shape families
@@ -15,7 +15,11 @@
 // to end through each package's public API (input copied in, output copied out). Per input: one warm-up call each, then calls in batches of at least
 // --batch-ms, the two meshers alternating batch by batch for --rounds rounds; per-call time = the
 // median over rounds of batch time / calls. speedup = Triangle's time / ruppert's (> 1: ruppert
-// faster). Printed: a row per input, then the geometric mean of the speedups per family and overall.
+// faster). Before the first input (and after any restart of the worker) both meshers run for
+// --warmup-ms, alternating, on up to ten of the inputs with at most 500 points: V8 first runs
+// WebAssembly from a baseline compiler and optimises each function only once it is hot, which for
+// a module the size of ruppert's takes one to three seconds of calls. Without the warm-up the first
+// inputs measured that, not the steady state (A.poly, the first: 232 us without, 83 us with it). Printed: a row per input, then the geometric mean of the speedups per family and overall.
 // Inputs that Triangle cannot mesh (its fixed 16 MiB heap, a hang) are listed and left out.
 import { readFileSync, readdirSync, existsSync, writeFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
@@ -57,11 +61,21 @@ async function worker() {
       Triangle.freeIO(output);
     }
   };
+  const optionsOf = ({ angle, placement }) => (placement ? { minAngle: angle, placement } : { minAngle: angle });
+  const switchesOf = (plc, angle) => `pzQq${angle}${plc.regions.some((r) => r.maxArea > 0) ? 'a' : ''}`;
   parentPort.on('message', (job) => {
     try {
-      const { plc, angle, placement } = job;
-      const options = placement ? { minAngle: angle, placement } : { minAngle: angle };
-      const switches = `pzQq${angle}${plc.regions.some((r) => r.maxArea > 0) ? 'a' : ''}`;
+      if (job.warmup) {
+        const t0 = performance.now();
+        while (performance.now() - t0 < job.ms) {
+          for (const plc of job.warmup) meshTriangle(plc, switchesOf(plc, job.angle)), ruppert.triangulate(plc, optionsOf(job));
+        }
+        parentPort.postMessage({ status: 'ok' });
+        return;
+      }
+      const { plc, angle } = job;
+      const options = optionsOf(job);
+      const switches = switchesOf(plc, angle);
       const result = timePair(() => meshTriangle(plc, switches), () => ruppert.triangulate(plc, options), job);
       parentPort.postMessage({ status: 'ok', ...result });
     } catch (error) {
@@ -111,6 +125,7 @@ function parseArgs(argv) {
     dirs: values('--dir'), corpus: !argv.includes('--no-corpus'), families: !argv.includes('--no-families'),
     angle: Number(one('--angle', 30)), batchMs: Number(one('--batch-ms', 40)), rounds: Number(one('--rounds', 5)),
     only: one('--only', ''), json: one('--json', null), placement: one('--placement', null), timeoutMs: Number(one('--timeout', 60)) * 1000,
+    warmupMs: Number(one('--warmup-ms', 3000)),
   };
 }
 
@@ -144,7 +159,8 @@ async function collectInputs(options) {
 }
 
 class MeshWorker {
-  constructor(triangleDir) { this.triangleDir = triangleDir; this.worker = null; }
+  // warmup: { warmup: [plc...], ms, angle, placement }, run after every start (null: none).
+  constructor(triangleDir, warmup) { this.triangleDir = triangleDir; this.warmup = warmup; this.worker = null; }
 
   async start() {
     this.worker = new Worker(fileURLToPath(import.meta.url), { workerData: { triangleWasmDir: this.triangleDir } });
@@ -152,6 +168,14 @@ class MeshWorker {
       this.worker.once('message', resolve);
       this.worker.once('error', reject);
     });
+    if (this.warmup) {
+      const worker = this.worker;
+      const reply = await new Promise((resolve) => {
+        worker.once('message', resolve);
+        worker.postMessage(this.warmup);
+      });
+      if (reply.status !== 'ok') throw new Error(`speed-per-call: the warm-up failed: ${reply.error}`);
+    }
   }
 
   // The worker's reply, or { status: 'timeout' | 'error' } after which it is replaced.
@@ -178,7 +202,7 @@ const geoMean = (values) => Math.exp(values.reduce((s, v) => s + Math.log(v), 0)
 const us = (ms) => (ms * 1000).toFixed(ms < 0.1 ? 1 : 0);
 
 function report(rows, failed, options, meta) {
-  console.log(`\n# ruppert vs triangle-wasm ${meta.triangleWasm}, per call, one thread (${meta.node}); min angle ${options.angle}; placement ${options.placement ?? 'default'}`);
+  console.log(`\n# ruppert vs triangle-wasm ${meta.triangleWasm}, per call, one thread (${meta.node}); min angle ${options.angle}; placement ${options.placement ?? 'default'}; warm-up ${options.warmupMs} ms`);
   console.log(`command: node tests/bench/speed-per-call.mjs ${process.argv.slice(2).join(' ')}`.trim(), '\n');
   console.log('| family | input | in pts | Triangle tris | ruppert tris | Triangle us | ruppert us | speedup |');
   console.log('|---|---|---|---|---|---|---|---|');
@@ -208,7 +232,10 @@ async function main() {
     return;
   }
   const inputs = await collectInputs(options);
-  const worker = new MeshWorker(triangle.dir);
+  const warmInputs = inputs.filter(({ plc }) => plc.points.length / 2 <= 500).slice(0, 10).map(({ plc }) => plc);
+  const warmup = options.warmupMs > 0 && warmInputs.length > 0
+    ? { warmup: warmInputs, ms: options.warmupMs, angle: options.angle, placement: options.placement } : null;
+  const worker = new MeshWorker(triangle.dir, warmup);
   const rows = [], failed = [];
   for (const { name, family, plc } of inputs) {
     const job = { plc, angle: options.angle, placement: options.placement, batchMs: options.batchMs, rounds: options.rounds };
