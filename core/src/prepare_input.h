@@ -19,17 +19,16 @@ struct PreparedInput {
   // range of a double, which subnormal inputs need). Where 2^exponent and 2^-exponent are both
   // normal doubles a multiplication gives the same correctly rounded result as ldexp, which is a
   // library call (in WebAssembly too) on paths that run per candidate point.
-  int exponent = 0;
   void setExponent(int e) {
-    exponent = e;
+    exponent_ = e;
     const bool normal = e >= -1022 && e <= 1022;
     up_ = normal ? std::ldexp(1.0, e) : 0, down_ = normal ? std::ldexp(1.0, -e) : 0;
   }
-  double toInternal(double v) const { return up_ != 0 ? v * up_ : std::ldexp(v, exponent); }
-  double toUser(double v) const { return down_ != 0 ? v * down_ : std::ldexp(v, -exponent); }
+  double toInternal(double v) const { return up_ != 0 ? v * up_ : std::ldexp(v, exponent_); }
+  double toUser(double v) const { return down_ != 0 ? v * down_ : std::ldexp(v, -exponent_); }
   // Areas scale by 2^(2 exponent); a positive bound never rounds to 0 ("none").
   double areaToInternal(double a) const {
-    const double s = std::ldexp(a, 2 * exponent);
+    const double s = std::ldexp(a, 2 * exponent_);
     return a > 0 && s == 0 ? std::numeric_limits<double>::denorm_min() : s;
   }
   // Internal vertices 0 .. distinctCount()-1 are the distinct input points, numbered in insertion
@@ -44,6 +43,7 @@ struct PreparedInput {
   double maxArea = 0;                      // scaled; 0 = none
 
  private:
+  int exponent_ = 0;           // set only through setExponent, which keeps the two factors in step
   double up_ = 1, down_ = 1;  // 2^exponent and 2^-exponent, or 0 where ldexp must be used
 };
 
