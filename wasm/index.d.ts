@@ -218,9 +218,11 @@ export interface Events {
 }
 
 /**
- * A result's typed arrays (stats.angleHistogram and, where asked for, edges, edgeMarkers,
- * inputToOutput included) are views into one ArrayBuffer that belongs to this result alone: copies,
- * never views into WebAssembly memory. `.slice()` one to keep it apart from the others.
+ * Every typed array of a result is a copy, never a view into WebAssembly memory. The mesh's own
+ * arrays (stats.angleHistogram and, where asked for, edges, edgeMarkers, inputToOutput included)
+ * are views into one ArrayBuffer that belongs to this result alone; triangles6 and voronoi's arrays
+ * share a second one, and a trace's events have arrays of their own. `.slice()` an array to keep it
+ * apart from the others.
  */
 export interface Mesh {
   /** Input points first, same indices; then new vertices. x0, y0, x1, y1, ... */
