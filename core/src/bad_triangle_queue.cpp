@@ -44,6 +44,7 @@ void BadTriangleQueue::push(const Triangulation& t, std::uint32_t s, bool skinny
   buckets_[k].push_back({s, t.tv[3 * s], t.tv[3 * s + 1], t.tv[3 * s + 2], angleClass});
   ++queuedByAngle_[angleClass];
   lowestBucket_ = std::min(lowestBucket_, k);
+  if (k < kBuckets - 1) highestSkinny_ = std::max(highestSkinny_, k);
   if (++queued_ > compactAt_) dropStaleEntries(t);
 }
 
@@ -68,6 +69,18 @@ void BadTriangleQueue::dropStaleEntries(const Triangulation& t) {
 }
 
 bool BadTriangleQueue::pop(BadTriangle& out) {
+  if (largestFirst_) {
+    for (; highestSkinny_ >= 0; --highestSkinny_) {
+      auto& b = buckets_[highestSkinny_];
+      if (b.empty()) continue;
+      out = b.back();
+      b.pop_back();
+      --queued_;
+      --queuedByAngle_[out.angleClass];
+      return true;
+    }
+    lowestBucket_ = std::max(lowestBucket_, kBuckets - 1);  // only the size class may hold entries
+  }
   while (lowestBucket_ < kBuckets) {
     auto& b = buckets_[lowestBucket_];
     if (!b.empty()) {

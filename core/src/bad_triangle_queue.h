@@ -25,6 +25,9 @@ inline bool isCurrent(const Triangulation& t, const BadTriangle& e) {
 // outwards from them; splitting the skinniest first (measured on the 61 shared PLCs) spreads small
 // triangles far from any feature: 1.33x Triangle's count at 33 degrees against 0.99x with this order.
 // Priority classes, not a binary heap (§6.3): four per power of two of the squared shortest edge.
+// The reverse order (setLargestFirst) is for bounds above 34 degrees, where grading outwards from
+// the small features leaves them inside cavities of much larger triangles that no point can please
+// (bound_push.h).
 class BadTriangleQueue {
  public:
   static constexpr int kAngleClasses = 64;  // queued triangles counted by smallest angle, for progress
@@ -41,6 +44,8 @@ class BadTriangleQueue {
   void push(const Triangulation& t, std::uint32_t s, bool skinny, double shortest2, double sin2MinAngle);
   // The next entry, stale or not; false when the queue is empty.
   bool pop(BadTriangle& out);
+  // Pop the skinny triangles with the longest shortest edge first instead (too-large ones still last).
+  void setLargestFirst(bool on) { largestFirst_ = on; }
   // The smallest angle among queued triangles (entries whose triangle has changed since included),
   // to within 60 / (kAngleClasses - 1) degrees, in degrees; `fallback` when none is queued.
   double worstQueuedAngle(double fallback) const;
@@ -53,6 +58,8 @@ class BadTriangleQueue {
 
   std::vector<std::vector<BadTriangle>> buckets_;
   int lowestBucket_ = kBuckets;  // no class below this one holds an entry
+  int highestSkinny_ = -1;       // no skinny class above this one holds an entry
+  bool largestFirst_ = false;
   std::uint64_t queuedByAngle_[kAngleClasses] = {};
   std::uint64_t queued_ = 0, compactAt_ = 1u << 20;  // entries in buckets_; when to drop stale ones
 

@@ -6,7 +6,14 @@
 // 33-degree mesh's triangles: where it completes that way (most inputs at 35 degrees), the mesh is
 // the same as without stages. With the optimal placement a second direct attempt follows, which
 // inserts the best point below the bound where the first fell back to an off-center
-// (RefinePlan::bestBelowBound): 38 degrees on 278 of 300 generated PLCs against 226 without it.
+// (RefinePlan::bestBelowBound: 38 degrees on 278 of 300 generated PLCs against 226 without it), and
+// splits the skinny triangles with the longest shortest edge first (RefinePlan::largestFirst),
+// up to 128 times the 33-degree mesh's triangles (at most kSecondDirectTriangleCeiling); where that
+// fails too, a third does the same with a stricter test for the points below the bound
+// (kStrictBelowBoundGain), and a fourth goes smallest first again with the best points below the
+// bound, up to sixteen times (the second attempt before largest first). Over the 300 generated PLCs
+// at 38 / 40 degrees: 278 / 14 complete with the first attempt and the fourth alone, 299 / 211 with
+// the four.
 // The push keeps a copy of its best mesh; the mesh is scored every quarter of its size in
 // insertions, so scores and copies cost a fraction of the refinement.
 #pragma once
@@ -28,6 +35,15 @@ inline constexpr double kStageStepDegrees = 1;
 // be larger: earcut_earcut.poly completes at 35 degrees with 6.1 times the 33-degree triangles).
 inline constexpr std::uint64_t kPushTriangleFactor = 4;
 inline constexpr std::uint64_t kDirectTriangleFactor = 16;
+// The second and third direct attempts' cap (the fourth's is the first's): this many times the
+// 33-degree mesh's triangles, but no more than the ceiling (memory: about 200 bytes a triangle; time:
+// on the corpus's largest, p2t_debug2.poly, a miss at 40 degrees took 48 s with sixteen times for
+// every attempt, 25 s before these two). Where they complete at 40 degrees they need up to 64 times on
+// the generated PLCs (median 12): 128 took 35 of 60 where 16 took 18 and 64 took 30; 256 took no
+// more. Where the cap would be under kLargestFirstLeast times, the attempt is skipped.
+inline constexpr std::uint64_t kSecondDirectTriangleFactor = 128;
+inline constexpr std::uint64_t kSecondDirectTriangleCeiling = std::uint64_t(1) << 19;
+inline constexpr std::uint64_t kLargestFirstLeast = 2;
 
 // How one run proceeds.
 struct RefinePlan {
@@ -47,6 +63,14 @@ struct RefinePlan {
   // below the bound (OptimalPlacement::bestBelowBound) rather than the off-center. Only above
   // kReachableDegrees, for the second direct attempt (refine.cpp).
   bool bestBelowBound = false;
+  // Split the skinny triangles with the longest shortest edge first (BadTriangleQueue). Above
+  // kReachableDegrees, smallest-first grading leaves small features inside cavities of triangles
+  // many times larger, where no point meets the bound; largest-first refines the surroundings first
+  // (at 40 degrees, with bestBelowBound: 18 of 60 generated PLCs complete against 3; without it, 3).
+  // Below, it makes more triangles (cloud-2 at 33 degrees: 5,380 against 4,584).
+  bool largestFirst = false;
+  // bestBelowBound's required gain over the off-center (optimal_placement.h).
+  double belowBoundGain = 0;
 
   static RefinePlan direct(double degrees, std::uint64_t budget = kAutoSteinerBudget) {
     RefinePlan plan;
@@ -56,9 +80,10 @@ struct RefinePlan {
   }
 };
 
-// Whether a staged request gets the second direct attempt (RefinePlan::bestBelowBound): only where
-// its placement applies, the optimal one without an area bound (refine_split.cpp).
+// Whether a staged request gets the second to fourth direct attempts (RefinePlan::bestBelowBound):
+// only where their placement applies, the optimal one without an area bound (refine_split.cpp).
 inline bool secondDirectAttempt(const Options& o) { return o.placement == Placement::Optimal && !(o.maxArea > 0); }
+inline int directAttempts(const Options& o) { return secondDirectAttempt(o) ? 4 : 1; }
 
 // One look at the whole mesh.
 struct MeshScore {

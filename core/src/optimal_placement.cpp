@@ -117,7 +117,7 @@ bool OptimalPlacement::bestBelowBound(const MeshAccess& mesh, const SkinnyTriang
   if (r.encroaches || !(r.minAngle > 0)) return false;
   Location l;
   if (!fits(mesh, st.slot, r.x, l)) return false;
-  if (!(mesh.newMinSin2(r.x, candidateBoundary_) > firstSin2_ * (1 + kBelowBoundGain))) return false;
+  if (!(mesh.newMinSin2(r.x, candidateBoundary_) > firstSin2_ * (1 + gain_))) return false;
   const double shortest2 = dist2(query.p, query.q);
   for (std::uint32_t h : candidateBoundary_)
     if (dist2(mesh.tri.pt(mesh.tri.origin(h)), r.x) < shortest2) return false;

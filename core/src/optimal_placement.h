@@ -15,10 +15,14 @@
 
 namespace ruppert::detail {
 
-// bestBelowBound's point must beat the first choice's smallest new angle by this much (in sin^2).
-// As the second attempt at 38 degrees over the 300 generated PLCs: 278 complete at 0.1 and 0.2, 266
-// at 0.35.
+// bestBelowBound's point must beat the first choice's smallest new angle by this much (in sin^2):
+// kBelowBoundGain in the second direct attempt, kStrictBelowBoundGain in the third (bound_push.h).
+// Over the 300 generated PLCs with the largest skinny triangles first, 0.2 completes 293 at 38
+// degrees and 173 at 40, 1.0 completes 280 and 205, the two in turn 296 and 211. (Smallest first,
+// at 38 degrees: 278 at 0.1 and 0.2, 266 at 0.35.) On 60 of them at 40 degrees: 0.1: 31, 0.2: 35,
+// 0.35: 39, 0.5: 41, 0.75: 42, 1.0: 44, 1.5: 42.
 inline constexpr double kBelowBoundGain = 0.2;
+inline constexpr double kStrictBelowBoundGain = 1.0;
 
 class OptimalPlacement {
  public:
@@ -27,7 +31,8 @@ class OptimalPlacement {
     FirstFine,  // the first choice can be inserted and makes no skinny triangle: use it
     None,       // no point found meets the bound
   };
-  explicit OptimalPlacement(double theta) : theta_(theta) {}
+  // gain: bestBelowBound's (kBelowBoundGain or kStrictBelowBoundGain).
+  OptimalPlacement(double theta, double gain) : theta_(theta), gain_(gain) {}
 
   // st.first is the first choice (it may lie beyond a subsegment; st.firstCavity is not used), cc
   // the triangle's circumcenter.
@@ -49,13 +54,14 @@ class OptimalPlacement {
 
   // After propose() returned None with the mesh unchanged since (bound_push.h's bestBelowBound):
   // the point of the last search's cavity that maximises the smallest new angle, below the bound
-  // though it is, if it beats the first choice's smallest new angle by kBelowBoundGain in sin^2
+  // though it is, if it beats the first choice's smallest new angle by the gain in sin^2
   // (any point, where the first choice cannot go in) and no new edge is shorter than st's shortest
   // edge. Into target and loc; false if there is none.
   bool bestBelowBound(const MeshAccess& mesh, const SkinnyTriangle& st, double target[2], Location& loc);
 
  private:
   double theta_;
+  double gain_;
   std::vector<CavityEdge> edges_;
   std::vector<std::uint32_t> cavity_, candidateTris_, candidateBoundary_, star_;
   bool firstFits_ = false;  // the first choice's location and cavity are in first*_

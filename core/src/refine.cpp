@@ -91,7 +91,7 @@ void Refiner::setBound(double degrees) {
   mesh_.sin2Theta = sin2Theta_;
   mesh_.lensCos2 = lensCos2For(o_, theta_);
   if (o_.placement == Placement::Petal) petal_ = PetalPlacement(theta_);
-  if (o_.placement == Placement::Optimal) optimal_ = OptimalPlacement(theta_);
+  if (o_.placement == Placement::Optimal) optimal_ = OptimalPlacement(theta_, plan_.belowBoundGain);
 }
 
 // The queue is empty: if a stage below the requested bound just completed, raise the bound by a
@@ -189,16 +189,30 @@ RUPPERT_COLD_BEGIN
 
 // Which way refineStaged went, and what replaying its first steps needs.
 struct StagedPath {
-  enum Branch { AsAsked, Direct, DirectBelowBound, Push } branch = AsAsked;
+  enum Branch { AsAsked, Direct, Push } branch = AsAsked;
+  int attempt = 0;               // Direct: which direct attempt (directPlan)
   std::uint64_t steps = 0;       // steps (insertions, moves) of the mesh returned
   std::uint64_t reachSteps = 0;  // of the 33-degree mesh (the push's first part)
   std::uint64_t base = 0;        // the 33-degree mesh's triangles (the caps' unit)
 };
 
-RefinePlan directPlan(double requested, std::uint64_t base, bool bestBelowBound, std::uint64_t budget) {
+// Direct attempt number `attempt` (0 to 3; bound_push.h): as without stages; then the largest skinny
+// triangles first with the best points below the bound, those that beat the off-center's smallest
+// new angle by kBelowBoundGain and then only those that beat it by kStrictBelowBoundGain (up to 128
+// times the 33-degree mesh); last, smallest first again with the best points below the bound (what
+// the second attempt was before largest first: 3 of the 300 generated PLCs at 38 degrees complete
+// only this way, none at 40).
+RefinePlan directPlan(double requested, std::uint64_t base, int attempt, std::uint64_t budget) {
   RefinePlan plan = RefinePlan::direct(requested, budget);
   plan.triangleCap = kDirectTriangleFactor * base;
-  plan.bestBelowBound = bestBelowBound;
+  if (attempt == 0) return plan;
+  if (attempt == 3) {
+    plan.bestBelowBound = true, plan.belowBoundGain = kBelowBoundGain;
+    return plan;
+  }
+  plan.triangleCap = std::min(kSecondDirectTriangleFactor * base, kSecondDirectTriangleCeiling);
+  plan.bestBelowBound = plan.largestFirst = true;
+  plan.belowBoundGain = attempt == 1 ? kBelowBoundGain : kStrictBelowBoundGain;
   return plan;
 }
 
@@ -218,8 +232,9 @@ RefineOutcome afterReach(RefineOutcome reach, RefineOutcome out) {
 
 // A request above kStagedAboveDegrees (bound_push.h), with a Steiner budget of `budget` steps: the
 // 33-degree mesh first, for its size; then the requested bound directly, up to sixteen times that
-// size, as without stages; with the optimal placement, where that fails, directly again with
-// RefinePlan::bestBelowBound; else the push from the 33-degree mesh. The way taken goes to path.
+// size, as without stages; with the optimal placement, where that fails, directly again (three more
+// attempts, directPlan) with RefinePlan::bestBelowBound; else the push from the 33-degree mesh. The
+// way taken goes to path.
 RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path) {
   const double requested = m.options->minAngle;
   MeshState start = m;
@@ -235,16 +250,20 @@ RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path)
   path.reachSteps = reachRun.steps();
   path.base = liveTriangles(m);
   // True (and m the mesh) where a direct run from the unrefined mesh completes within the cap.
-  auto direct = [&](MeshState from, bool bestBelowBound, RefineOutcome& out) {
-    Refiner attempt(from, directPlan(requested, path.base, bestBelowBound, budget));
+  auto direct = [&](MeshState from, int number, RefineOutcome& out) {
+    Refiner attempt(from, directPlan(requested, path.base, number, budget));
     out = attempt.run();
     if (attempt.capHit() || !completeOutcome(out)) return false;
     m = std::move(from);
-    path.branch = bestBelowBound ? StagedPath::DirectBelowBound : StagedPath::Direct, path.steps = attempt.steps();
+    path.branch = StagedPath::Direct, path.attempt = number, path.steps = attempt.steps();
     return true;
   };
   RefineOutcome out;
-  if (direct(start, false, out) || (secondDirectAttempt(*m.options) && direct(start, true, out))) return out;
+  for (int number = 0; number < directAttempts(*m.options); ++number) {
+    const RefinePlan plan = directPlan(requested, path.base, number, budget);
+    if (plan.largestFirst && plan.triangleCap < kLargestFirstLeast * path.base) continue;  // too large an input
+    if (direct(start, number, out)) return out;
+  }
   start = MeshState{};  // free it before the push
   Refiner push(m, pushPlan(requested, path.base, path.reachSteps, budget));
   out = push.run();
@@ -260,8 +279,7 @@ RefineOutcome replayStaged(MeshState& m, const StagedPath& path, std::uint64_t k
     case StagedPath::AsAsked:
       return Refiner(m, RefinePlan::direct(requested, k)).run();
     case StagedPath::Direct:
-    case StagedPath::DirectBelowBound:
-      return Refiner(m, directPlan(requested, path.base, path.branch == StagedPath::DirectBelowBound, k)).run();
+      return Refiner(m, directPlan(requested, path.base, path.attempt, k)).run();
     case StagedPath::Push:
       break;
   }

@@ -36,10 +36,16 @@ Refiner::Unmet Refiner::countUnmet() const {
 std::string Refiner::unreachableMessage(std::uint64_t unmet, double reached) const {
   char angles[96];
   std::snprintf(angles, sizeof angles, "%.6g degrees is out of reach; the smallest angle reached is %.2f", plan_.requested, reached);
-  const char* twice =
-      secondDirectAttempt(o_) ? " (twice: the second time with the best point below the bound where no point meets it)" : "";
-  return std::string("a minimum angle of ") + angles + " degrees (section 6.6's exemptions aside): refining to it directly" + twice + " did not complete within sixteen times the "
-         "triangles of the " + std::to_string(static_cast<int>(kReachableDegrees)) + "-degree mesh, and from that mesh "
+  // The direct attempts (refine.cpp's directPlan) and their caps.
+  const char* direct =
+      secondDirectAttempt(o_)
+          ? " did not complete within sixteen times the triangles of the 33-degree mesh, nor, the second and third "
+            "times (the largest skinny triangles first, and where no point meets the bound the best point below it "
+            "if it beats the off-center by enough), within 128 times (no more than about half a million triangles; "
+            "not tried where that is under twice), nor the fourth time (the best points below the bound, the smallest "
+            "skinny triangles first) within sixteen times"
+          : " did not complete within sixteen times the triangles of the 33-degree mesh";
+  return std::string("a minimum angle of ") + angles + " degrees (section 6.6's exemptions aside): refining to it directly" + direct + ", and from the 33-degree mesh "
          "refinement raised the bound a degree at a time until " + pushStop_ + "; this is the best mesh it reached; " + std::to_string(unmet) +
          " triangle(s) are below the bound";
 }

@@ -116,7 +116,9 @@ class Refiner {
         sin2Requested_(sin2Bound(radians(plan.requested))),
         mesh_(m.tri, m.input, sin2Theta_, lensCos2For(o_, theta_)),
         petal_(o_.placement == Placement::Petal ? theta_ : 0),
-        optimal_(theta_) {}
+        optimal_(theta_, plan.belowBoundGain) {
+    bad_.setLargestFirst(plan.largestFirst);
+  }
 
   // After run(): whether it stopped at plan_.triangleCap.
   bool capHit() const { return capHit_; }

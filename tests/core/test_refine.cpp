@@ -532,6 +532,24 @@ TEST_CASE("at 38 degrees the best point below the bound completes what off-cente
   }
 }
 
+// At 40 degrees the second and third direct attempts split the largest skinny triangles first
+// (RefinePlan::largestFirst), so that small features do not end up inside cavities of far larger
+// triangles where no point meets the bound. These members ended as the push's best mesh (at 37-39
+// degrees) when both attempts went smallest first, and complete now.
+TEST_CASE("at 40 degrees, largest skinny triangles first completes what smallest first did not", "[refine][optimal]") {
+  const std::pair<const char*, std::uint64_t> members[] = {{"letters", 15}, {"rings", 11},  {"perforated", 5}, {"gear", 5},
+                                                           {"cloud", 5},    {"skyline", 13}, {"comb", 13}};
+  for (const auto& [name, seed] : members) {
+    const ruppert_test::ShapeFamily* family = ruppert_test::findShapeFamily(name);
+    REQUIRE(family != nullptr);
+    Options o;
+    o.minAngle = 40;
+    const Mesh mesh = refineChecked(ruppert_test::familyMember(*family, seed).plc, o, std::string(name) + "-" + std::to_string(seed));
+    INFO(name << "-" << seed << ": " << mesh.stats.reachedAngle << " degrees reached");
+    CHECK(mesh.complete);
+  }
+}
+
 // The trace names the point a placement chose: a petal point or an optimal point is its own event
 // kind (never Rejected: both choose only points that encroach nothing), at the vertex it inserted,
 // an off-center vertex; with off-centers and circumcenters neither kind appears. Not every input
