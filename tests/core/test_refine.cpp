@@ -515,39 +515,39 @@ TEST_CASE("optimal placement at 35, 38 and 40 degrees is valid on every shape fa
   CHECK(completeAt38 >= 3);
 }
 
-// Above 34 degrees, where the direct attempt with off-center fallbacks fails, a second one inserts
-// the best point below the bound instead (RefinePlan::bestBelowBound). These members failed at 38
-// degrees before it (each ended as the push's best mesh, at 35-37 degrees) and complete with it.
-TEST_CASE("at 38 degrees the best point below the bound completes what off-center fallbacks did not", "[refine][optimal]") {
-  const std::pair<const char*, std::uint64_t> members[] = {
-      {"subdivision", 13}, {"serpentine", 5}, {"skyline", 4}, {"strip", 11}, {"comb", 9}};
+namespace {
+
+using FamilyMember = std::pair<const char*, std::uint64_t>;  // family name, seed
+
+// Each member meshed at `degrees` with the default options, validated, and complete.
+void checkMembersComplete(const std::vector<FamilyMember>& members, double degrees) {
   for (const auto& [name, seed] : members) {
     const ruppert_test::ShapeFamily* family = ruppert_test::findShapeFamily(name);
     REQUIRE(family != nullptr);
     Options o;
-    o.minAngle = 38;
+    o.minAngle = degrees;
     const Mesh mesh = refineChecked(ruppert_test::familyMember(*family, seed).plc, o, std::string(name) + "-" + std::to_string(seed));
     INFO(name << "-" << seed << ": " << mesh.stats.reachedAngle << " degrees reached");
     CHECK(mesh.complete);
   }
 }
 
+}  // namespace
+
+// Above 34 degrees, where the direct attempt with off-center fallbacks fails, a later one inserts
+// the best point below the bound instead (RefinePlan::bestBelowBound). These members failed at 38
+// degrees before it (each ended as the push's best mesh, at 35-37 degrees) and complete with it.
+TEST_CASE("at 38 degrees the best point below the bound completes what off-center fallbacks did not", "[refine][optimal]") {
+  checkMembersComplete({{"subdivision", 13}, {"serpentine", 5}, {"skyline", 4}, {"strip", 11}, {"comb", 9}}, 38);
+}
+
 // At 40 degrees the second and third direct attempts split the largest skinny triangles first
 // (RefinePlan::largestFirst), so that small features do not end up inside cavities of far larger
 // triangles where no point meets the bound. These members ended as the push's best mesh (at 37-39
-// degrees) when both attempts went smallest first, and complete now.
+// degrees) when the attempts all went smallest first, and complete now.
 TEST_CASE("at 40 degrees, largest skinny triangles first completes what smallest first did not", "[refine][optimal]") {
-  const std::pair<const char*, std::uint64_t> members[] = {{"letters", 15}, {"rings", 11},  {"perforated", 5}, {"gear", 5},
-                                                           {"cloud", 5},    {"skyline", 13}, {"comb", 13}};
-  for (const auto& [name, seed] : members) {
-    const ruppert_test::ShapeFamily* family = ruppert_test::findShapeFamily(name);
-    REQUIRE(family != nullptr);
-    Options o;
-    o.minAngle = 40;
-    const Mesh mesh = refineChecked(ruppert_test::familyMember(*family, seed).plc, o, std::string(name) + "-" + std::to_string(seed));
-    INFO(name << "-" << seed << ": " << mesh.stats.reachedAngle << " degrees reached");
-    CHECK(mesh.complete);
-  }
+  checkMembersComplete(
+      {{"letters", 15}, {"rings", 11}, {"perforated", 5}, {"gear", 5}, {"cloud", 5}, {"skyline", 13}, {"comb", 13}}, 40);
 }
 
 // The trace names the point a placement chose: a petal point or an optimal point is its own event
