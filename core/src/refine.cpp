@@ -205,6 +205,7 @@ struct StagedPath {
 RefinePlan directPlan(double requested, std::uint64_t base, int attempt, std::uint64_t budget) {
   RefinePlan plan = RefinePlan::direct(requested, budget);
   plan.triangleCap = kDirectTriangleFactor * base;
+  plan.slide = true;
   if (attempt == 0) return plan;
   if (attempt == 3) {
     plan.bestBelowBound = true, plan.belowBoundGain = kBelowBoundGain;
@@ -219,6 +220,7 @@ RefinePlan directPlan(double requested, std::uint64_t base, int attempt, std::ui
 RefinePlan pushPlan(double requested, std::uint64_t base, std::uint64_t reachSteps, std::uint64_t budget) {
   RefinePlan plan{requested, kReachableDegrees, true, kPushTriangleFactor * base, reachSteps};
   plan.budget = budget;
+  plan.slide = true;
   return plan;
 }
 

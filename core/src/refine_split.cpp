@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "point_attributes.h"
 #include "predicates.h"
+#include "segment_slide.h"
 
 namespace ruppert::detail {
 
@@ -230,6 +232,8 @@ bool Refiner::optimalOrRelocate(const BadTriangle& bt, const double* const* p, c
       break;
   }
   const std::uint32_t ends[2] = {t_.tv[3 * bt.slot + (sh.shortestEdge + 1) % 3], t_.tv[3 * bt.slot + (sh.shortestEdge + 2) % 3]};
+  for (std::uint32_t v : ends)
+    if (slideOnSegment(v, bt)) return true;
   if (!plan_.bestBelowBound) {
     for (std::uint32_t v : ends)
       if (relocate(v, bt)) return true;
@@ -246,26 +250,46 @@ bool Refiner::relocate(std::uint32_t v, const BadTriangle& bt) {
   double x[2];
   if (relocations_[v] >= kMaxRelocations || !mayInsert() || !optimal_.relocation(mesh_, v, x)) return false;
   if (m_.attributeCount) reinterpolateMoved(v, x);
+  const double from[2] = {t_.xy[2 * v], t_.xy[2 * v + 1]};
+  t_.xy[2 * v] = x[0], t_.xy[2 * v + 1] = x[1];
+  afterMove(v, from, bt, optimal_.star());
+  return true;
+}
+
+bool Refiner::slideOnSegment(std::uint32_t v, const BadTriangle& bt) {
+  if (!plan_.slide || v < m_.inputCount || m_.kind[v] != VertexKind::SegmentSplit) return false;
+  if (relocations_.size() <= v) relocations_.resize(t_.vertexCount(), 0);
+  std::uint32_t ends[2];
+  double x[2];
+  if (relocations_[v] >= kMaxRelocations || !mayInsert() || !segmentVertexFan(t_, v, slideStar_, ends) ||
+      !bestSlide(t_, slideStar_, t_.pt(ends[0]), t_.pt(ends[1]), sin2Theta_, x) || !mesh_.representable(x))
+    return false;
+  const double from[2] = {t_.xy[2 * v], t_.xy[2 * v + 1]};
+  t_.xy[2 * v] = x[0], t_.xy[2 * v + 1] = x[1];
+  interpolateOnSegment(m_, v, ends[0], ends[1]);
+  afterMove(v, from, bt, slideStar_);
+  return true;
+}
+
+void Refiner::afterMove(std::uint32_t v, const double* from, const BadTriangle& bt, const std::vector<std::uint32_t>& star) {
   if (o_.trace) {
     Event e;
     e.kind = EventKind::Relocated;
-    e.vertex = v, e.x = x[0], e.y = x[1], e.cx = t_.xy[2 * v], e.cy = t_.xy[2 * v + 1];
+    e.vertex = v, e.x = t_.xy[2 * v], e.y = t_.xy[2 * v + 1], e.cx = from[0], e.cy = from[1];
     e.t0 = bt.a, e.t1 = bt.b, e.t2 = bt.c;
     out_.events.push_back(e);
   }
-  t_.xy[2 * v] = x[0], t_.xy[2 * v + 1] = x[1];
   ++relocations_[v], ++inserted_;
   // The star's edges, and those of the triangles beyond it, may no longer be locally Delaunay.
   mendStack_.clear();
   flipped_.clear();
-  for (std::uint32_t h : optimal_.star())
+  for (std::uint32_t h : star)
     for (std::uint32_t k = 0; k < 3; ++k) mendStack_.push_back(3 * (h / 3) + k);
   t_.legalize(mendStack_, &flipped_);
-  for (std::uint32_t h : optimal_.star()) flipped_.push_back(h / 3);
+  for (std::uint32_t h : star) flipped_.push_back(h / 3);
   std::sort(flipped_.begin(), flipped_.end());
   flipped_.erase(std::unique(flipped_.begin(), flipped_.end()), flipped_.end());
   recheckFlipped();
-  return true;
 }
 
 // Locate target for bad triangle bt. Where it lies beyond or on a subsegment, or encroaches one on

@@ -102,6 +102,7 @@ class Refiner {
   std::vector<Inherited> inherit_;
   std::vector<std::uint32_t> cavityTris_, cavityBoundary_, splitTris_, splitBoundary_;
   std::vector<EdgeRef> rejectPairs_;
+  std::vector<std::uint32_t> slideStar_;  // slideOnSegment's fan
   mutable std::vector<double> oldBound_, oldBoundAt_;  // oldMeshBound's memo: per slot, and 6 coordinates
 
  public:
@@ -272,6 +273,13 @@ class Refiner {
   // the replay's step k is the run's.
   static constexpr std::uint8_t kMaxRelocations = 4;
   bool relocate(std::uint32_t v, const BadTriangle& bt);
+  // With RefinePlan::slide: move v, a vertex refinement placed on a segment, along it to where every
+  // triangle of its fan meets the bound (segment_slide.h); otherwise as relocate, whose count and
+  // budget it shares.
+  bool slideOnSegment(std::uint32_t v, const BadTriangle& bt);
+  // After v moved from `from` to its new place: the trace, the count, and the Delaunay property
+  // restored around the star (half-edges opposite v) by flips, with what changed re-checked.
+  void afterMove(std::uint32_t v, const double* from, const BadTriangle& bt, const std::vector<std::uint32_t>& star);
 
   // Locate target for bad triangle bt. Where it lies beyond or on a subsegment, or encroaches one on
   // its cavity's boundary (§6.2, §6.3), it is rejected and those subsegments are split instead;

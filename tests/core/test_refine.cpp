@@ -550,6 +550,40 @@ TEST_CASE("at 40 degrees, largest skinny triangles first completes what smallest
       {{"letters", 15}, {"rings", 11}, {"perforated", 5}, {"gear", 5}, {"cloud", 5}, {"skyline", 13}, {"comb", 13}}, 40);
 }
 
+// Above 34 degrees a vertex refinement put on a segment may slide along it (segment_slide.h). Its
+// moves are Relocated events of a SegmentSplit vertex; it must stay on its input segment (the
+// validator in refineChecked also finds every input segment as a chain of subsegments). These
+// members missed 40 degrees without sliding (the push's best mesh, 35-38 degrees) and complete with
+// it.
+TEST_CASE("at 40 degrees vertices on segments slide along them, and that completes what moving free vertices did not", "[refine][optimal]") {
+  checkMembersComplete({{"subdivision", 5}, {"cracks", 5}, {"star", 5}, {"serpentine", 7}, {"comb", 11}, {"strip", 8}}, 40);
+  using ruppert::EventKind;
+  const ruppert_test::GeneratedPlc g = ruppert_test::familyMember(*ruppert_test::findShapeFamily("star"), 5);
+  Options o;
+  o.minAngle = 40;
+  o.trace = true;
+  const Mesh mesh = refineChecked(g.plc, o, "star-5 traced");
+  std::size_t slides = 0;
+  for (const ruppert::Event& e : mesh.events) {
+    if (e.kind != EventKind::Relocated || mesh.vertexKinds[e.vertex] != std::uint8_t(ruppert::VertexKind::SegmentSplit)) continue;
+    ++slides;
+    // Its final place lies on the input segment of a subsegment it ends.
+    for (std::size_t k = 0; k < mesh.segmentIds.size(); ++k) {
+      if (mesh.segments[2 * k] != e.vertex && mesh.segments[2 * k + 1] != e.vertex) continue;
+      const std::int32_t id = mesh.segmentIds[k];
+      REQUIRE(id >= 0);
+      const double* a = &g.plc.points[2 * g.plc.segments[2 * id]];
+      const double* b = &g.plc.points[2 * g.plc.segments[2 * id + 1]];
+      const double* v = &mesh.points[2 * e.vertex];
+      const double len = std::hypot(b[0] - a[0], b[1] - a[1]);
+      const double off = ((b[0] - a[0]) * (v[1] - a[1]) - (b[1] - a[1]) * (v[0] - a[0])) / len;
+      CHECK(std::fabs(off) <= 1e-12 * len);
+    }
+  }
+  INFO(slides << " slides among " << mesh.events.size() << " events");
+  CHECK(slides > 0);
+}
+
 // The trace names the point a placement chose: a petal point or an optimal point is its own event
 // kind (never Rejected: both choose only points that encroach nothing), at the vertex it inserted,
 // an off-center vertex; with off-centers and circumcenters neither kind appears. Not every input
