@@ -37,11 +37,12 @@ inline constexpr double kStageStepDegrees = 1;
 inline constexpr std::uint64_t kPushTriangleFactor = 4;
 inline constexpr std::uint64_t kDirectTriangleFactor = 16;
 // The second and third direct attempts' cap (the fourth's is the first's): this many times the
-// 33-degree mesh's triangles, but no more than the ceiling (memory: about 200 bytes a triangle; time:
-// on the corpus's largest, p2t_debug2.poly, a miss at 40 degrees took 48 s with sixteen times for
-// every attempt, 25 s before these two). Where they complete at 40 degrees they need up to 64 times on
-// the generated PLCs (median 12): 128 took 35 of 60 where 16 took 18 and 64 took 30; 256 took no
-// more. Where the cap would be under kLargestFirstLeast times, the attempt is skipped.
+// 33-degree mesh's triangles, but no more than the ceiling (memory: about 200 bytes a triangle;
+// time: on the corpus's largest, p2t_debug2.poly, a miss at 40 degrees took 48 s with a ceiling of
+// 2^21 and 21.5 s with 2^19, 24.7 s before these attempts). Measured before sliding
+// (RefinePlan::slide), on 60 generated PLCs at 40 degrees: 128 times completed 35 where 16 completed
+// 18 and 64 completed 30; 256 no more. Where the cap would be under kLargestFirstLeast times, the
+// attempt is skipped.
 inline constexpr std::uint64_t kSecondDirectTriangleFactor = 128;
 inline constexpr std::uint64_t kSecondDirectTriangleCeiling = std::uint64_t(1) << 19;
 inline constexpr std::uint64_t kLargestFirstLeast = 2;
@@ -62,7 +63,7 @@ struct RefinePlan {
   // Optimal placement, where no point meets the bound: first try moving any free vertex of the
   // skinny triangle (not only its shortest edge's), and where nothing helps insert the best point
   // below the bound (OptimalPlacement::bestBelowBound) rather than the off-center. Only above
-  // kReachableDegrees, for the second direct attempt (refine.cpp).
+  // kReachableDegrees, for the second to fourth direct attempts (refine.cpp's directPlan).
   bool bestBelowBound = false;
   // Split the skinny triangles with the longest shortest edge first (BadTriangleQueue). Above
   // kReachableDegrees, smallest-first grading leaves small features inside cavities of triangles

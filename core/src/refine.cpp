@@ -252,8 +252,8 @@ RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path)
   path.reachSteps = reachRun.steps();
   path.base = liveTriangles(m);
   // True (and m the mesh) where a direct run from the unrefined mesh completes within the cap.
-  auto direct = [&](MeshState from, int number, RefineOutcome& out) {
-    Refiner attempt(from, directPlan(requested, path.base, number, budget));
+  auto direct = [&](MeshState from, int number, const RefinePlan& plan, RefineOutcome& out) {
+    Refiner attempt(from, plan);
     out = attempt.run();
     if (attempt.capHit() || !completeOutcome(out)) return false;
     m = std::move(from);
@@ -264,7 +264,7 @@ RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path)
   for (int number = 0; number < directAttempts(*m.options); ++number) {
     const RefinePlan plan = directPlan(requested, path.base, number, budget);
     if (plan.largestFirst && plan.triangleCap < kLargestFirstLeast * path.base) continue;  // too large an input
-    if (direct(start, number, out)) return out;
+    if (direct(start, number, plan, out)) return out;
   }
   start = MeshState{};  // free it before the push
   Refiner push(m, pushPlan(requested, path.base, path.reachSteps, budget));

@@ -45,6 +45,9 @@ std::string Refiner::unreachableMessage(std::uint64_t unmet, double reached) con
             "not tried where that is under twice), nor the fourth time (the best points below the bound, the smallest "
             "skinny triangles first) within sixteen times"
           : " did not complete within sixteen times the triangles of the 33-degree mesh";
+  static_assert(kDirectTriangleFactor == 16 && kSecondDirectTriangleFactor == 128 &&
+                    kSecondDirectTriangleCeiling == (1u << 19) && kLargestFirstLeast == 2,
+                "the message names these caps");
   return std::string("a minimum angle of ") + angles + " degrees (section 6.6's exemptions aside): refining to it directly" + direct + ", and from the 33-degree mesh "
          "refinement raised the bound a degree at a time until " + pushStop_ + "; this is the best mesh it reached; " + std::to_string(unmet) +
          " triangle(s) are below the bound";

@@ -246,9 +246,8 @@ bool Refiner::optimalOrRelocate(const BadTriangle& bt, const double* const* p, c
 
 bool Refiner::relocate(std::uint32_t v, const BadTriangle& bt) {
   if (v < m_.inputCount || (m_.kind[v] != VertexKind::Interior && m_.kind[v] != VertexKind::OffCenter)) return false;
-  if (relocations_.size() <= v) relocations_.resize(t_.vertexCount(), 0);
   double x[2];
-  if (relocations_[v] >= kMaxRelocations || !mayInsert() || !optimal_.relocation(mesh_, v, x)) return false;
+  if (!mayMove(v) || !optimal_.relocation(mesh_, v, x)) return false;
   if (m_.attributeCount) reinterpolateMoved(v, x);
   const double from[2] = {t_.xy[2 * v], t_.xy[2 * v + 1]};
   t_.xy[2 * v] = x[0], t_.xy[2 * v + 1] = x[1];
@@ -256,12 +255,16 @@ bool Refiner::relocate(std::uint32_t v, const BadTriangle& bt) {
   return true;
 }
 
+bool Refiner::mayMove(std::uint32_t v) {
+  if (relocations_.size() <= v) relocations_.resize(t_.vertexCount(), 0);
+  return relocations_[v] < kMaxRelocations && mayInsert();
+}
+
 bool Refiner::slideOnSegment(std::uint32_t v, const BadTriangle& bt) {
   if (!plan_.slide || v < m_.inputCount || m_.kind[v] != VertexKind::SegmentSplit) return false;
-  if (relocations_.size() <= v) relocations_.resize(t_.vertexCount(), 0);
   std::uint32_t ends[2];
   double x[2];
-  if (relocations_[v] >= kMaxRelocations || !mayInsert() || !segmentVertexFan(t_, v, slideStar_, ends) ||
+  if (!mayMove(v) || !segmentVertexFan(t_, v, slideStar_, ends) ||
       !bestSlide(t_, slideStar_, t_.pt(ends[0]), t_.pt(ends[1]), sin2Theta_, x) || !mesh_.representable(x))
     return false;
   const double from[2] = {t_.xy[2 * v], t_.xy[2 * v + 1]};

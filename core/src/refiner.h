@@ -273,6 +273,8 @@ class Refiner {
   // the replay's step k is the run's.
   static constexpr std::uint8_t kMaxRelocations = 4;
   bool relocate(std::uint32_t v, const BadTriangle& bt);
+  // Whether v may move once more (kMaxRelocations) within the Steiner budget.
+  bool mayMove(std::uint32_t v);
   // With RefinePlan::slide: move v, a vertex refinement placed on a segment, along it to where every
   // triangle of its fan meets the bound (segment_slide.h); otherwise as relocate, whose count and
   // budget it shares.
