@@ -48,6 +48,7 @@ RefineOutcome Refiner::run() {
   corner_ = acuteCorners(m_);
   const std::uint64_t budget = plan_.budget != kAutoSteinerBudget ? plan_.budget : steinerBudget(m_);
   budget_ = budget > plan_.used ? budget - plan_.used : 0;
+  reserveForAreaBounds(m_, budget_);
   // Initial queues: every subsegment and every triangle (linear in the mesh size, §6.3).
   for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
     if (!t_.alive(s)) continue;

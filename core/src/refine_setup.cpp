@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 
 #include "old_mesh.h"
 #include "refine_geometry.h"
@@ -92,6 +93,33 @@ std::uint64_t automaticSteinerBudget(const MeshState& m) {
   if (o.sizeFunction) estimate += 1e8;
   if (m.oldMesh != nullptr) estimate += m.oldMesh->budgetEstimate();
   return static_cast<std::uint64_t>(std::min(estimate, 4e9));
+}
+
+// Triangles meeting area bounds a have a mean area of about 0.63 a at 30 degrees (the unit square
+// at max area 1e-6: 1,595,671 triangles), so an area A asks for about 0.8 A / a vertices. Growing
+// the arrays by doubling instead copied each of them again at every doubling and touched their old
+// and new pages: one call for the unit square at max area 1e-6 in a fresh process made 56,740 page
+// faults with this instead of 76,130 (perf stat; task clock 1.78-1.87 s against 1.56-2.18 s on a
+// noisy machine). Below ten thousand vertices growth costs too little to matter. The reservation is
+// only a hint: where memory is short, the arrays grow as they would have.
+void reserveForAreaBounds(MeshState& m, std::uint64_t budget) {
+  const Triangulation& t = m.tri;
+  double asked = 0;  // the sum of area / bound over the triangles with a bound
+  for (std::uint32_t s = 0; s < t.slotCount(); ++s) {
+    if (!t.alive(s) || !(m.maxArea[s] > 0)) continue;
+    asked += qualityOf(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2])).area / m.maxArea[s];
+  }
+  const double extra = std::min(0.8 * asked, static_cast<double>(budget));
+  if (!(extra >= 1e4) || extra > 1e9) return;
+  const std::size_t vertices = t.vertexCount() + static_cast<std::size_t>(extra);
+  const std::size_t slots = t.slotCount() + 2 * static_cast<std::size_t>(extra);
+  try {
+    m.reserve(vertices, slots);
+    m.attributes.reserve(m.attributeCount * vertices);
+    m.attribute.reserve(slots), m.maxArea.reserve(slots);
+    if (!m.inDomain.empty()) m.inDomain.reserve(slots);
+  } catch (const std::bad_alloc&) {
+  }
 }
 
 }  // namespace ruppert::detail

@@ -17,4 +17,8 @@ std::uint64_t steinerBudget(const MeshState& m);
 // The automatic one, whatever Options::maxSteiner says.
 std::uint64_t automaticSteinerBudget(const MeshState& m);
 
+// Room for the vertices and triangles that area bounds will make (at most `budget` more vertices),
+// reserved before refinement starts, so the mesh's arrays do not grow by copying as it runs.
+void reserveForAreaBounds(MeshState& m, std::uint64_t budget);
+
 }  // namespace ruppert::detail
