@@ -289,6 +289,56 @@ TEST_CASE("incircle on cocircular lattice points, scaled and translated", "[pred
   CHECK(perturbedChecked > 10000);
 }
 
+// Points of a grid k 2^e with |k| up to a little past 2^12 (and then 2^13 with 2^12 + 1 odd steps):
+// incircle decides most of them in plain doubles when every difference is such a multiple below
+// 2^12, and must hand the others on. Many quadruples are cocircular (sign 0); each sign against GMP.
+TEST_CASE("incircle on random points of small grids, where plain doubles can be exact", "[predicates]") {
+  std::mt19937_64 rng(4097);
+  int zeros = 0, checked = 0;
+  for (int e : {-70, -30, -12, -1, 0, 3, 40}) {
+    for (std::int64_t span : {std::int64_t{3}, std::int64_t{16}, std::int64_t{2047}, std::int64_t{2049},
+                              std::int64_t{4096}, std::int64_t{8193}}) {
+      for (std::int64_t offset : {std::int64_t{0}, std::int64_t{-5}, std::int64_t{1} << 30}) {
+        auto coordinate = [&] {
+          const std::int64_t k = static_cast<std::int64_t>(rng() % (2 * span + 1)) - span;
+          return std::ldexp(static_cast<double>(k + offset), e);
+        };
+        for (int sample = 0; sample < 300; ++sample) {
+          Point p[4];
+          for (Point& q : p) q = Point{coordinate(), coordinate()};
+          if (!allSafe({p[0], p[1], p[2], p[3]})) continue;
+          const int expected = exactIncircleSign(p[0], p[1], p[2], p[3]);
+          REQUIRE(incircleSign(p[0], p[1], p[2], p[3]) == expected);
+          REQUIRE(incircleSign(p[1], p[0], p[2], p[3]) == -expected);
+          zeros += expected == 0;
+          ++checked;
+        }
+      }
+    }
+  }
+  CHECK(checked > 30000);
+  CHECK(zeros > 500);
+  // Cocircular lattice points whose differences are multiples of 2^e below 2^12 (radius 1105) and
+  // past it (5525 to 160,225: there plain doubles round, and must not be trusted).
+  int cocircular = 0;
+  for (std::int64_t radius : {1105, 5525, 27625, 160225}) {
+    const auto lattice = latticePointsOnCircle(radius);
+    for (int e : {-40, 0, 7}) {
+      auto toPoint = [&](std::size_t i) {
+        return Point{std::ldexp(static_cast<double>(lattice[i][0]), e), std::ldexp(static_cast<double>(lattice[i][1]), e)};
+      };
+      for (int sample = 0; sample < 2000; ++sample) {
+        const std::size_t ia = rng() % lattice.size(), ib = rng() % lattice.size(), ic = rng() % lattice.size(),
+                          id = rng() % lattice.size();
+        if (ia == ib || ia == ic || ib == ic) continue;
+        REQUIRE(incircle(toPoint(ia).data(), toPoint(ib).data(), toPoint(ic).data(), toPoint(id).data()) == 0.0);
+        ++cocircular;
+      }
+    }
+  }
+  CHECK(cocircular > 10000);
+}
+
 TEST_CASE("random and near-degenerate configurations keep their exact sign at every scale",
           "[predicates]") {
   std::mt19937_64 rng(1997);
