@@ -220,6 +220,12 @@ void assignRegions(MeshState& m, const std::vector<std::uint8_t>& state) {
     part.attribute = r.attribute;
     if (r.maxArea > 0) part.maxArea = part.maxArea > 0 ? std::min(part.maxArea, r.maxArea) : r.maxArea;
   }
+  // Nothing per slot to remember: MeshState::maxAreaOf stands for the arrays (the bounding-box
+  // variant's outside triangles have no bound, so it keeps them).
+  if (parts.empty() && m.options->variant != Variant::BoundingBox) {
+    m.attribute.clear(), m.maxArea.clear();
+    return;
+  }
   for (std::uint32_t u = 0; u < slots; ++u) {
     if (partOf[u] == kNone) continue;
     const Part& part = parts[partOf[u]];

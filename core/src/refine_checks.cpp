@@ -43,7 +43,7 @@ TriangleQuality Refiner::qualityAt(std::uint32_t s) const {
 }
 
 double Refiner::maxAreaAt(std::uint32_t s) const {
-  double bound = m_.maxArea[s];
+  double bound = m_.maxAreaOf(s);
   if (o_.sizeFunction) {
     const double* p0 = t_.pt(t_.tv[3 * s]);
     const double* p1 = t_.pt(t_.tv[3 * s + 1]);

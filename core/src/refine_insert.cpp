@@ -78,6 +78,7 @@ void Refiner::recheckFlipped() {
 // slot of another new triangle's parent.
 void Refiner::inheritRegionData() {
   const bool box = !m_.inDomain.empty();
+  if (m_.maxArea.empty() && !box) return;  // uniform (MeshState::maxAreaOf)
   if (m_.attribute.size() < t_.slotCount()) {
     m_.attribute.resize(t_.slotCount(), 0);
     m_.maxArea.resize(t_.slotCount(), 0);

@@ -87,8 +87,8 @@ std::uint64_t automaticSteinerBudget(const MeshState& m) {
   const auto crossings = std::count(m.kind.begin(), m.kind.end(), VertexKind::Intersection);
   double estimate = 1e4 + 200.0 * m.inputCount + 100.0 * static_cast<double>(crossings);
   for (std::uint32_t s = 0; s < t.slotCount(); ++s) {
-    if (!t.alive(s) || m.maxArea[s] <= 0) continue;
-    estimate += 8 * qualityOf(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2])).area / m.maxArea[s];
+    if (!t.alive(s) || m.maxAreaOf(s) <= 0) continue;
+    estimate += 8 * qualityOf(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2])).area / m.maxAreaOf(s);
   }
   if (o.sizeFunction) estimate += 1e8;
   if (m.oldMesh != nullptr) estimate += m.oldMesh->budgetEstimate();
@@ -106,8 +106,8 @@ void reserveForAreaBounds(MeshState& m, std::uint64_t budget) {
   const Triangulation& t = m.tri;
   double asked = 0;  // the sum of area / bound over the triangles with a bound
   for (std::uint32_t s = 0; s < t.slotCount(); ++s) {
-    if (!t.alive(s) || !(m.maxArea[s] > 0)) continue;
-    asked += qualityOf(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2])).area / m.maxArea[s];
+    if (!t.alive(s) || !(m.maxAreaOf(s) > 0)) continue;
+    asked += qualityOf(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2])).area / m.maxAreaOf(s);
   }
   const double extra = std::min(0.8 * asked, static_cast<double>(budget));
   if (!(extra >= 1e4) || extra > 1e9) return;
@@ -116,7 +116,7 @@ void reserveForAreaBounds(MeshState& m, std::uint64_t budget) {
   try {
     m.reserve(vertices, slots);
     m.attributes.reserve(m.attributeCount * vertices);
-    m.attribute.reserve(slots), m.maxArea.reserve(slots);
+    if (!m.maxArea.empty()) m.attribute.reserve(slots), m.maxArea.reserve(slots);
     if (!m.inDomain.empty()) m.inDomain.reserve(slots);
   } catch (const std::bad_alloc&) {
   }
