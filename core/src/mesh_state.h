@@ -72,7 +72,8 @@ struct MeshState {
   std::uint32_t attributeCount = 0;
   std::vector<double> attributes;
 
-  void reserve(std::size_t vertices, std::size_t slots) {
+  // Out of line: one copy of the vectors' growth code for the two callers (build, refinement).
+  [[gnu::noinline]] void reserve(std::size_t vertices, std::size_t slots) {
     kind.reserve(vertices), onSegment.reserve(vertices);
     tri.reserve(vertices, slots);
   }

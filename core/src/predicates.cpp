@@ -22,6 +22,8 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <utility>
 
 // The error-free transformations need every operation rounded separately: a fused multiply-add formed
@@ -398,7 +400,7 @@ inline bool incircleDoubleDouble(const double* a, const double* b, const double*
 // and the sum of the three below 2^52: no operation of the filter's formula rounds (e stays far from
 // underflow and overflow). About 40 operations where the expansions take 3,000 (a tenth of a small grid
 // mesh's instructions went to them).
-inline bool smallDyadicIncircle(const double* a, const double* b, const double* c, const double* d, double& det) {
+RUPPERT_NOINLINE bool smallDyadicIncircle(const double* a, const double* b, const double* c, const double* d, double& det) {
   double diff[6], tail[6];
   twoSum(a[0], -d[0], diff[0], tail[0]), twoSum(a[1], -d[1], diff[1], tail[1]);
   twoSum(b[0], -d[0], diff[2], tail[2]), twoSum(b[1], -d[1], diff[3], tail[3]);
@@ -411,7 +413,11 @@ inline bool smallDyadicIncircle(const double* a, const double* b, const double* 
   int exponent;
   std::frexp(largest, &exponent);  // largest < 2^exponent
   if (exponent < -200 || exponent > 200) return false;
-  const double scale = std::ldexp(1.0, 12 - exponent);  // |diff * scale| < 2^12
+  // 2^(12 - exponent), |diff * scale| < 2^12, built from its bits (a normal double: the exponent
+  // field is 1023 + 12 - exponent, within [835, 1235]).
+  const std::uint64_t bits = static_cast<std::uint64_t>(1023 + 12 - exponent) << 52;
+  double scale;
+  std::memcpy(&scale, &bits, sizeof scale);
   for (double v : diff)
     if (v * scale != std::trunc(v * scale)) return false;
   const double adx = diff[0], ady = diff[1], bdx = diff[2], bdy = diff[3], cdx = diff[4], cdy = diff[5];

@@ -107,17 +107,15 @@ void reserveForAreaBounds(MeshState& m, std::uint64_t budget) {
   double asked = 0;  // the sum of area / bound over the triangles with a bound
   for (std::uint32_t s = 0; s < t.slotCount(); ++s) {
     if (!t.alive(s) || !(m.maxAreaOf(s) > 0)) continue;
-    asked += qualityOf(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2])).area / m.maxAreaOf(s);
+    const double *a = t.pt(t.tv[3 * s]), *b = t.pt(t.tv[3 * s + 1]), *c = t.pt(t.tv[3 * s + 2]);
+    asked += 0.5 * std::fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / m.maxAreaOf(s);
   }
   const double extra = std::min(0.8 * asked, static_cast<double>(budget));
   if (!(extra >= 1e4) || extra > 1e9) return;
   const std::size_t vertices = t.vertexCount() + static_cast<std::size_t>(extra);
   const std::size_t slots = t.slotCount() + 2 * static_cast<std::size_t>(extra);
   try {
-    m.reserve(vertices, slots);
-    m.attributes.reserve(m.attributeCount * vertices);
-    if (!m.maxArea.empty()) m.attribute.reserve(slots), m.maxArea.reserve(slots);
-    if (!m.inDomain.empty()) m.inDomain.reserve(slots);
+    m.reserve(vertices, slots);  // (per-slot region arrays and point attributes, rarer, still grow)
   } catch (const std::bad_alloc&) {
   }
 }
