@@ -300,3 +300,30 @@ TEST_CASE("a disjoint shifted copy doubles the triangles", "[metamorphic]") {
     if (exact || !c.nearDegenerate) CHECK(mesh.triangles.size() == 2 * base.triangles.size());
   }
 }
+
+// The core keeps no per-triangle region data when no region seed lies in the domain (every triangle
+// then has attribute 0 and the global area bound). A seed in every part of the domain that restates
+// exactly that makes it keep the arrays: the refined meshes must be the same, triangle for triangle.
+TEST_CASE("a region seed that restates the global bound changes nothing", "[metamorphic][attributes]") {
+  int compared = 0;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const GeneratedPlc g = randomStarPolygon(seed, 12 + 4 * seed, 0);
+    Plc plc = g.plc;
+    ruppert::Options o;
+    o.minAngle = seed % 2 ? 30 : 33;
+    o.maxArea = g.area / 300;
+    const Mesh plain = triangulate(plc, o);
+    ruppert::Region r;
+    r.x = 0.5, r.y = 0.5, r.maxArea = o.maxArea;  // the star's centre is inside it; attribute 0
+    plc.regions.push_back(r);
+    const Mesh restated = triangulate(plc, o);
+    INFO("seed " << seed);
+    REQUIRE(plain.complete);
+    CHECK(plain.triangles.size() / 3 > 200);
+    CHECK(restated.points == plain.points);
+    CHECK(restated.triangles == plain.triangles);
+    CHECK(restated.triangleAttributes == plain.triangleAttributes);
+    ++compared;
+  }
+  CHECK(compared == 6);
+}
