@@ -81,15 +81,20 @@ std::uint64_t steinerBudget(const MeshState& m) {
   return o.maxSteiner != kAutoSteinerBudget ? o.maxSteiner : automaticSteinerBudget(m);
 }
 
+double areaDemand(const MeshState& m) {
+  const Triangulation& t = m.tri;
+  double sum = 0;
+  for (std::uint32_t s = 0; s < t.slotCount(); ++s) {
+    if (!t.alive(s) || !(m.maxAreaOf(s) > 0)) continue;
+    sum += qualityOf(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2])).area / m.maxAreaOf(s);
+  }
+  return sum;
+}
+
 std::uint64_t automaticSteinerBudget(const MeshState& m) {
   const Options& o = *m.options;
-  const Triangulation& t = m.tri;
   const auto crossings = std::count(m.kind.begin(), m.kind.end(), VertexKind::Intersection);
-  double estimate = 1e4 + 200.0 * m.inputCount + 100.0 * static_cast<double>(crossings);
-  for (std::uint32_t s = 0; s < t.slotCount(); ++s) {
-    if (!t.alive(s) || m.maxAreaOf(s) <= 0) continue;
-    estimate += 8 * qualityOf(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2])).area / m.maxAreaOf(s);
-  }
+  double estimate = 1e4 + 200.0 * m.inputCount + 100.0 * static_cast<double>(crossings) + 8 * areaDemand(m);
   if (o.sizeFunction) estimate += 1e8;
   if (m.oldMesh != nullptr) estimate += m.oldMesh->budgetEstimate();
   return static_cast<std::uint64_t>(std::min(estimate, 4e9));
@@ -104,13 +109,7 @@ std::uint64_t automaticSteinerBudget(const MeshState& m) {
 // only a hint: where memory is short, the arrays grow as they would have.
 void reserveForAreaBounds(MeshState& m, std::uint64_t budget) {
   const Triangulation& t = m.tri;
-  double asked = 0;  // the sum of area / bound over the triangles with a bound
-  for (std::uint32_t s = 0; s < t.slotCount(); ++s) {
-    if (!t.alive(s) || !(m.maxAreaOf(s) > 0)) continue;
-    const double *a = t.pt(t.tv[3 * s]), *b = t.pt(t.tv[3 * s + 1]), *c = t.pt(t.tv[3 * s + 2]);
-    asked += 0.5 * std::fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / m.maxAreaOf(s);
-  }
-  const double extra = std::min(0.8 * asked, static_cast<double>(budget));
+  const double extra = std::min(0.8 * areaDemand(m), static_cast<double>(budget));
   if (!(extra >= 1e4) || extra > 1e9) return;
   const std::size_t vertices = t.vertexCount() + static_cast<std::size_t>(extra);
   const std::size_t slots = t.slotCount() + 2 * static_cast<std::size_t>(extra);

@@ -12,6 +12,10 @@ namespace ruppert::detail {
 // edges meet at less than 90 degrees (concentric-shell splitting applies there, §6.6).
 std::vector<std::uint8_t> acuteCorners(const MeshState& m);
 
+// The sum of area / bound over the triangles that have an area bound (a region's or the global
+// one): about twice the vertices those bounds ask for. Both the budget and the reservation use it.
+double areaDemand(const MeshState& m);
+
 // The Steiner budget: Options::maxSteiner, or the automatic one for kAutoSteinerBudget.
 std::uint64_t steinerBudget(const MeshState& m);
 // The automatic one, whatever Options::maxSteiner says.
