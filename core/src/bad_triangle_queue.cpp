@@ -10,21 +10,30 @@ namespace {
 // The buckets of the last queue this thread destroyed, emptied but with their capacity, for the
 // next one: a small mesh otherwise spends a tenth of its allocations growing the few buckets it
 // uses from empty, one doubling at a time, on every call. Kept only while they are small.
+// Outside [keptLow, keptHigh] every kept bucket has no capacity, so a queue clears and measures
+// only the classes that were ever used, not all 337 (which was a tenth of a one-triangle call).
 constexpr std::size_t kKeptEntries = std::size_t(1) << 16;
 thread_local std::vector<std::vector<BadTriangle>> keptBuckets;
+thread_local int keptLow = 0, keptHigh = -1;
 
 }  // namespace
 
 BadTriangleQueue::BadTriangleQueue() {
-  if (keptBuckets.size() == std::size_t(kBuckets)) buckets_.swap(keptBuckets);
-  else buckets_.resize(kBuckets);
+  if (keptBuckets.size() == std::size_t(kBuckets)) {
+    buckets_.swap(keptBuckets);
+    usedLow_ = keptLow, usedHigh_ = keptHigh;
+  } else {
+    buckets_.resize(kBuckets);
+  }
 }
 
 BadTriangleQueue::~BadTriangleQueue() {
   if (buckets_.size() != std::size_t(kBuckets) || !keptBuckets.empty()) return;
   std::size_t entries = 0;
-  for (auto& b : buckets_) b.clear(), entries += b.capacity();
-  if (entries <= kKeptEntries) keptBuckets.swap(buckets_);
+  for (int k = usedLow_; k <= usedHigh_; ++k) buckets_[k].clear(), entries += buckets_[k].capacity();
+  if (entries > kKeptEntries) return;
+  keptBuckets.swap(buckets_);
+  keptLow = usedLow_, keptHigh = usedHigh_;
 }
 
 int BadTriangleQueue::classOf(double shortest2) {
@@ -42,6 +51,7 @@ void BadTriangleQueue::push(const Triangulation& t, std::uint32_t s, bool skinny
   const auto angleClass =
       static_cast<std::uint8_t>(std::min<double>(kAngleClasses - 1, sin2MinAngle / 0.75 * (kAngleClasses - 1)));
   buckets_[k].push_back({s, t.tv[3 * s], t.tv[3 * s + 1], t.tv[3 * s + 2], angleClass});
+  usedLow_ = std::min(usedLow_, k), usedHigh_ = std::max(usedHigh_, k);
   ++queuedByAngle_[angleClass];
   lowestBucket_ = std::min(lowestBucket_, k);
   if (k < kBuckets - 1) highestSkinny_ = std::max(highestSkinny_, k);

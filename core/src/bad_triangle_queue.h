@@ -59,6 +59,7 @@ class BadTriangleQueue {
   std::vector<std::vector<BadTriangle>> buckets_;
   int lowestBucket_ = kBuckets;  // no class below this one holds an entry
   int highestSkinny_ = -1;       // no skinny class above this one holds an entry
+  int usedLow_ = kBuckets, usedHigh_ = -1;  // no bucket outside these has capacity
   bool largestFirst_ = false;
   std::uint64_t queuedByAngle_[kAngleClasses] = {};
   std::uint64_t queued_ = 0, compactAt_ = 1u << 20;  // entries in buckets_; when to drop stale ones
