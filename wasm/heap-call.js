@@ -28,7 +28,10 @@ function layoutOf(m) {
         return { name, group, key, Type: type === undefined ? undefined : TYPES[type], view: READ_AS_VIEWS.has(name) };
       });
       const at = Object.fromEntries(fields.map((f, i) => [f.name, i]));
-      return { fields, at, arrays: fields.filter((f) => f.Type).map((f) => f.name) };
+      // Per group ("stats", "voronoi"): its fields' positions and keys, for groupOf.
+      const groups = {};
+      fields.forEach((f, i) => { if (f.group !== null) (groups[f.group] ??= []).push([i, f.key]); });
+      return { fields, at, groups, arrays: fields.filter((f) => f.Type).map((f) => f.name) };
     };
     const { names, layout: tables } = readDescription(m);
     layout = { names };
@@ -103,9 +106,9 @@ function viewOf(m, Type, [start, length]) {
 }
 
 // Fields "group.key" of a table as one object (mesh.stats).
-function groupOf({ fields }, values, group) {
+function groupOf({ groups }, values, group) {
   const out = {};
-  for (let i = 0; i < fields.length; i++) if (fields[i].group === group) out[fields[i].key] = values[i];
+  for (const [i, key] of groups[group] ?? []) out[key] = values[i];
   return out;
 }
 
