@@ -2,14 +2,15 @@
 // CLI's options, outputs and exit statuses (0 ok, 1 invalid input, 2 usage, 3 write failure).
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
-import { existsSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { test } from 'node:test';
+import { after, test } from 'node:test';
 import { fileURLToPath } from 'node:url';
 
 const bin = fileURLToPath(new URL('./node_modules/.bin/ruppert', import.meta.url));
 const dir = mkdtempSync(join(tmpdir(), 'ruppert-cli-'));
+after(() => rmSync(dir, { recursive: true, force: true }));
 const squarePoly = '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n';
 writeFileSync(join(dir, 'in.poly'), squarePoly);
 

@@ -3,7 +3,7 @@
 // (voronoi: true), with the bounds and geometry re-checked here in plain JavaScript.
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
-import { existsSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { test } from 'node:test';
@@ -186,9 +186,10 @@ test('voronoi: true gives one equidistant circumcentre per triangle and an outwa
   assert.throws(() => mesher.toVoronoiNode(mesher.triangulate(ringPlc())), (e) => e.code === 'MALFORMED_INPUT');
 });
 
-test('the CLI refines BASE.ele with BASE.area and writes --order 2 and --voronoi files', () => {
+test('the CLI refines BASE.ele with BASE.area and writes --order 2 and --voronoi files', (t) => {
   const bin = fileURLToPath(new URL('./node_modules/.bin/ruppert', import.meta.url));
   const dir = mkdtempSync(join(tmpdir(), 'ruppert-derived-'));
+  t.after(() => rmSync(dir, { recursive: true, force: true }));
   const old = mesher.triangulate(ringPlc(), { minAngle: 20 });
   const bounds = boundsFor(old, 11);
   writeFileSync(join(dir, 'old.node'), mesher.toNode(old));

@@ -3,15 +3,16 @@
 // installed, meshio reads the package's .msh and .vtu back too.
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { test } from 'node:test';
+import { after, test } from 'node:test';
 import { fileURLToPath } from 'node:url';
 import { init, MeshError, parseGeoJson, toGeoJson, toMsh, toVtu } from 'ruppert';
 import { triangleArea } from './validate-mesh.mjs';
 
 const dir = mkdtempSync(join(tmpdir(), 'ruppert-formats-'));
+after(() => rmSync(dir, { recursive: true, force: true }));
 const ring = (x, y, s, reverse = false) => {
   const r = [[x, y], [x + s, y], [x + s, y + s], [x, y + s]];
   if (reverse) r.reverse();

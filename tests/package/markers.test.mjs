@@ -3,7 +3,7 @@
 // vertices of their segments; `edges: true` lists every edge once with its marker; the CLI's -e.
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
-import { existsSync, mkdtempSync, readFileSync } from 'node:fs';
+import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { test } from 'node:test';
@@ -160,8 +160,9 @@ test('without markers: 1 on the boundary, 0 inside; edges only when asked for', 
 });
 
 const bin = fileURLToPath(new URL('./node_modules/.bin/ruppert', import.meta.url));
-test('cli: -e writes BASE.edge with box.poly\'s markers', { skip: !haveBox && 'box.poly absent' }, async () => {
+test('cli: -e writes BASE.edge with box.poly\'s markers', { skip: !haveBox && 'box.poly absent' }, async (t) => {
   const dir = mkdtempSync(join(tmpdir(), 'ruppert-markers-'));
+  t.after(() => rmSync(dir, { recursive: true, force: true }));
   const run = spawnSync(bin, ['--quiet', '--min-angle', '30', '-e', '-o', join(dir, 'box'), boxPath], { encoding: 'utf8' });
   assert.equal(run.status, 0, run.stderr);
   const mesher = await init();

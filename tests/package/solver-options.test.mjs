@@ -2,7 +2,7 @@
 // onto new vertices, noBoundarySteiner / noSegmentSteiner, jettison; and their CLI switches.
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
-import { existsSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { test } from 'node:test';
@@ -90,8 +90,9 @@ test('jettison: unused points left out, inputToOutput maps them', async () => {
   assert.deepEqual([mesh.points[8], mesh.points[9]], [2, 2]);
 });
 
-test('cli: --no-segment-steiner, --jettison and attribute columns', () => {
+test('cli: --no-segment-steiner, --jettison and attribute columns', (t) => {
   const dir = mkdtempSync(join(tmpdir(), 'ruppert-solver-'));
+  t.after(() => rmSync(dir, { recursive: true, force: true }));
   // 10 + x + y as the attribute; a duplicate of point 1 (numbered 4).
   writeFileSync(join(dir, 'in.poly'), '5 2 1 0\n1 0 0 10\n2 4 0 14\n3 4 4 18\n4 0 4 14\n5 4 0 14\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n');
   const run = spawnSync(bin, ['--quiet', '--min-angle', '30', '--max-area', '0.5', '--no-segment-steiner', '--jettison', '-o', join(dir, 'out'), join(dir, 'in.poly')], { encoding: 'utf8' });
