@@ -17,12 +17,15 @@ EdgeIndex::EdgeIndex(const std::vector<std::uint32_t>& ends, std::size_t n) : st
     if (valid(k)) ++start_[std::min(ends[2 * k], ends[2 * k + 1]) + 1];
   for (std::size_t v = 0; v < n; ++v) start_[v + 1] += start_[v];
   other_.resize(start_[n]), id_.resize(start_[n]);
-  std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
+  // Filled through start_ itself (each vertex's start moves to the next one's), then shifted back:
+  // no second array of n + 1 cursors.
   for (std::size_t k = 0; k < edges; ++k) {
     if (!valid(k)) continue;
-    const std::uint32_t a = ends[2 * k], b = ends[2 * k + 1], slot = next[std::min(a, b)]++;
+    const std::uint32_t a = ends[2 * k], b = ends[2 * k + 1], slot = start_[std::min(a, b)]++;
     other_[slot] = std::max(a, b), id_[slot] = static_cast<std::uint32_t>(k);
   }
+  for (std::size_t v = n; v > 0; --v) start_[v] = start_[v - 1];
+  start_[0] = 0;
 }
 
 std::int64_t EdgeIndex::find(std::uint32_t a, std::uint32_t b) const {
