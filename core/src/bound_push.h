@@ -78,6 +78,10 @@ struct RefinePlan {
   // only (the direct attempts and the push; not the 33-degree run, so meshes up to 34 degrees are
   // unchanged).
   bool slide = false;
+  // The push's promise (ruppert.h: never over four times the 33-degree mesh's triangles), counted
+  // in the domain only: the bounding-box variant's triangles outside it, which triangleCap counts
+  // too, leave the mesh. A scored mesh over it is never the result, and the push stops (0: none).
+  std::uint64_t domainCap = 0;
 
   static RefinePlan direct(double degrees, std::uint64_t budget = kAutoSteinerBudget) {
     RefinePlan plan;
@@ -99,6 +103,7 @@ struct MeshScore {
   std::uint64_t belowStage = 0;     // ... below the current stage's bound
   std::uint64_t large = 0;          // triangles over their area bound
   std::uint64_t triangles = 0;
+  std::uint64_t domainTriangles = 0;  // those inside the domain (all but the box variant's outside)
 };
 
 // Best-so-far and stall detection over the scores of a push.

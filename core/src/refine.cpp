@@ -68,7 +68,10 @@ RefineOutcome Refiner::run() {
     if (stop) break;
     BadTriangle bt;
     if (!bad_.pop(bt)) {
-      if (nextStage()) continue;
+      if (nextStage()) {
+        stop = overCap();  // the new stage's first score may find the mesh over the push's cap
+        continue;
+      }
       break;
     }
     if (!isCurrent(t_, bt)) continue;  // stale entry: the triangle is gone
@@ -115,15 +118,26 @@ bool Refiner::nextStage() {
 }
 
 bool Refiner::overCap() {
+  if (overDomainCap_) {
+    capHit_ = true;
+    pushStop_ = "the mesh reached four times the 33-degree mesh's triangles";
+    return true;
+  }
   if (!plan_.triangleCap || liveTriangles() <= plan_.triangleCap) return false;
   capHit_ = true;
   pushStop_ = "the mesh reached four times the 33-degree mesh's triangles";
   return true;
 }
 
-// Scores the mesh and, if it is the best so far, keeps a copy.
+// Scores the mesh and, if it is the best so far, keeps a copy. A mesh over the push's domain cap is
+// never kept, and stops the push (overCap).
 void Refiner::observe() {
-  if (!push_.observe(score(), inserted_)) return;
+  const MeshScore sc = score();
+  if (plan_.domainCap && sc.domainTriangles > plan_.domainCap) {
+    overDomainCap_ = true;
+    return;
+  }
+  if (!push_.observe(sc, inserted_)) return;
   best_.mesh = m_;
   best_.events = out_.events.size(), best_.rejected = out_.rejected;
 }
@@ -135,6 +149,7 @@ bool Refiner::pushStopped() {
   if (!plan_.track || !pushing_ || inserted_ < nextScoreAt_) return false;
   nextScoreAt_ = inserted_ + std::max<std::uint64_t>(2048, liveTriangles() / 4);
   observe();
+  if (overDomainCap_) return overCap();
   if (!push_.stalled(inserted_)) return false;
   pushStop_ = "a stage stopped reducing its skinny triangles";
   return true;
@@ -159,6 +174,7 @@ MeshScore Refiner::score() const {
   for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
     if (!t_.alive(s)) continue;
     ++sc.triangles;
+    sc.domainTriangles += m_.inDomain.empty() || m_.inDomain[s];
     const TriangleQuality q = qualityAt(s);
     const double bound = maxAreaAt(s);
     if (bound > 0 && q.area > bound * (1 + 1e-9)) ++sc.large;
@@ -185,6 +201,14 @@ bool completeOutcome(const RefineOutcome& r) {
 
 std::uint64_t liveTriangles(const MeshState& m) { return m.tri.slotCount() - m.tri.freeSlots.size(); }
 
+// The triangles the output will hold: the bounding-box variant's outside leaves after refinement.
+std::uint64_t domainTriangles(const MeshState& m) {
+  if (m.inDomain.empty()) return liveTriangles(m);
+  std::uint64_t n = 0;
+  for (std::uint32_t s = 0; s < m.tri.slotCount(); ++s) n += m.tri.alive(s) && m.inDomain[s];
+  return n;
+}
+
 // The stages' plans, run once per call: compiled for size (cold_code.h).
 RUPPERT_COLD_BEGIN
 
@@ -195,6 +219,7 @@ struct StagedPath {
   std::uint64_t steps = 0;       // steps (insertions, moves) of the mesh returned
   std::uint64_t reachSteps = 0;  // of the 33-degree mesh (the push's first part)
   std::uint64_t base = 0;        // the 33-degree mesh's triangles (the caps' unit)
+  std::uint64_t baseDomain = 0;  // ... inside the domain (the push's promise's unit)
 };
 
 // Direct attempt number `attempt` (0 to 3; bound_push.h): as without stages; then the largest skinny
@@ -218,8 +243,9 @@ RefinePlan directPlan(double requested, std::uint64_t base, int attempt, std::ui
   return plan;
 }
 
-RefinePlan pushPlan(double requested, std::uint64_t base, std::uint64_t reachSteps, std::uint64_t budget) {
-  RefinePlan plan{requested, kReachableDegrees, true, kPushTriangleFactor * base, reachSteps};
+RefinePlan pushPlan(double requested, const StagedPath& path, std::uint64_t budget) {
+  RefinePlan plan{requested, kReachableDegrees, true, kPushTriangleFactor * path.base, path.reachSteps};
+  plan.domainCap = kPushTriangleFactor * path.baseDomain;
   plan.budget = budget;
   plan.slide = true;
   return plan;
@@ -252,6 +278,7 @@ RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path)
   }
   path.reachSteps = reachRun.steps();
   path.base = liveTriangles(m);
+  path.baseDomain = domainTriangles(m);
   // True (and m the mesh) where a direct run from the unrefined mesh completes within the cap.
   auto direct = [&](MeshState from, int number, const RefinePlan& plan, RefineOutcome& out) {
     Refiner attempt(from, plan);
@@ -268,7 +295,7 @@ RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path)
     if (direct(start, number, plan, out)) return out;
   }
   start = MeshState{};  // free it before the push
-  Refiner push(m, pushPlan(requested, path.base, path.reachSteps, budget));
+  Refiner push(m, pushPlan(requested, path, budget));
   out = push.run();
   path.branch = StagedPath::Push, path.steps = push.steps();
   return afterReach(std::move(reach), std::move(out));
@@ -292,7 +319,7 @@ RefineOutcome replayStaged(MeshState& m, const StagedPath& path, std::uint64_t k
   first.budget = std::min(k, path.reachSteps);
   RefineOutcome reach = Refiner(m, first).run();
   if (k <= path.reachSteps) return reach;
-  RefinePlan push = pushPlan(requested, path.base, path.reachSteps, k);
+  RefinePlan push = pushPlan(requested, path, k);
   push.prefix = true;
   return afterReach(std::move(reach), Refiner(m, push).run());
 }

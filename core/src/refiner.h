@@ -81,7 +81,8 @@ class Refiner {
   std::uint64_t nextScoreAt_ = 0; // when the push next scores the mesh
   bool pushing_ = false;          // past the first stage
   bool unreachable_ = false;      // the result is the best mesh of a push that stopped short
-  bool capHit_ = false;           // stopped at plan_.triangleCap
+  bool capHit_ = false;           // stopped at plan_.triangleCap or plan_.domainCap
+  bool overDomainCap_ = false;    // a score found more domain triangles than plan_.domainCap
   const char* pushStop_ = "";     // why the push stopped, for the reason's message
   // The push's best mesh so far, with the trace length and rejection count it had.
   struct Snapshot {
