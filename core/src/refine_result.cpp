@@ -61,7 +61,14 @@ void Refiner::finish() {
     out_.reasons.push_back(Reason{k, n, msg});
   };
   const std::uint64_t unmet = u.otherSkinny + u.large;
-  if (cancelled_)
+  // A push whose best mesh meets the requested bound after all (its triangles below it all exempt,
+  // §6.6) stopped on what came after that mesh, say an encroached subsegment whose splits ran into
+  // the precision floor: the mesh returned is complete (a single triangle in a 0.86-degree input
+  // angle, 1e6 from the origin, with an area bound, was marked unreachable at 34.5-40 degrees).
+  const bool pushMetBound = unreachable_ && unmet == 0 && !cancelled_;
+  if (pushMetBound)
+    ;  // complete: only the exemptions below
+  else if (cancelled_)
     add(ReasonKind::Cancelled, unmet, "refinement was cancelled; " + std::to_string(unmet) +
                                           " triangle(s) do not meet the bounds");
   else if (unreachable_)

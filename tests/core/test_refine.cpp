@@ -276,6 +276,24 @@ TEST_CASE("above 34 degrees in the bounding-box variant the best mesh stays with
   CHECK(unreachable > 0);
 }
 
+// A push whose best mesh meets the requested bound is complete, whatever stopped it later. Three
+// chords crossing 1e6 from the origin leave a domain of one triangle with a 0.86-degree angle
+// (exempt, §6.6); above 34 degrees the lens widens, its long side counts as encroached, and the
+// splits run into the precision floor and the caps: the 33-degree mesh came back marked
+// AngleUnreachable with "0 triangle(s) below the bound" (found by a sweep of generated PLCs).
+TEST_CASE("above 34 degrees a best mesh that meets the bound is complete", "[refine]") {
+  const Plc plc = ruppert_test::translated(ruppert_test::chordStar(64209, 3).plc, 1e6, 1e6);
+  for (double angle : {34.5, 38.0, 40.0}) {
+    INFO(angle << " degrees");
+    Options o;
+    o.minAngle = angle;
+    o.maxArea = 0.00051313804545753574;
+    const Mesh mesh = refineChecked(plc, o, "three chords at 1e6");
+    CHECK(mesh.complete);
+    for (const ruppert::Reason& r : mesh.reasons) CHECK(r.kind == ruppert::ReasonKind::SmallInputAngle);
+  }
+}
+
 TEST_CASE("small-angle fans terminate at any requested angle", "[refine]") {
   for (double fan : {1.0, 3.0, 5.0, 10.0}) {
     // Segments from the origin at `fan` degrees apart, closed by a polyline far away.
