@@ -138,7 +138,7 @@ void Refiner::observe() {
     return;
   }
   if (!push_.observe(sc, inserted_)) return;
-  best_.mesh = m_;
+  best_.mesh = MeshState(m_);  // a copy moved in: MeshState's copy assignment, 2 KB of wasm, is not needed
   best_.events = out_.events.size(), best_.rejected = out_.rejected;
 }
 

@@ -32,25 +32,12 @@ bool Refiner::placeAwayFromForbidden(const BadTriangle& bt, const double* const*
     // The centroid, the last resort, may encroach a forbidden subsegment: a triangle over its area
     // bound always holds it, so the bound is met in the end (its distance to the triangle's
     // corners, at least 2/3 of its smallest altitude, 4 A / (3 longest edge), keeps the splits finite).
-    for (std::uint32_t h : cavityBoundary_)
-      if (t_.con[h] != kFree && (lambda > 0 || !splitForbidden(h)) && mesh_.encroachesEdge(q, h))
-        rejectPairs_.push_back({t_.origin(h), t_.dest(h), h});
-    if (!rejectPairs_.empty() && lambda > 0) {
-      rejectPairs_.clear();
-      continue;
-    }
-    if (!rejectPairs_.empty()) {
-      ++out_.rejected;
-      bool splitSome = false;
-      for (const EdgeRef& e : rejectPairs_) {
-        const std::uint32_t h = edgeOf(e);
-        if (h != kNone && t_.con[h] != kFree) splitSome = splitSubsegment(h, &bt, q) || splitSome;
+    if (collectEncroached(q, lambda == 0)) {
+      if (lambda > 0) {
+        rejectPairs_.clear();
+        continue;
       }
-      rejectPairs_.clear();
-      if (splitSome) {
-        requeue(bt);
-        return true;
-      }
+      if (splitRejected(bt, q)) return true;
     }
     insertSteiner(bt, q, loc, VertexKind::Interior, {&cavityTris_, &cavityBoundary_});
     return true;
@@ -340,9 +327,23 @@ bool Refiner::locateOrReject(const BadTriangle& bt, const double* target, Locati
     ++floorHits_;
     return false;
   }
+  if (!collectEncroached(target, false)) return true;
+  splitRejected(bt, target);
+  return false;
+}
+
+// The subsegments on the cavity's boundary (cavityBoundary_) that `target` encroaches, into
+// rejectPairs_ (those whose split is forbidden left out if `splittableOnly`); true if any.
+bool Refiner::collectEncroached(const double* target, bool splittableOnly) {
   for (std::uint32_t h : cavityBoundary_)
-    if (t_.con[h] != kFree && mesh_.encroachesEdge(target, h)) rejectPairs_.push_back({t_.origin(h), t_.dest(h), h});
-  if (rejectPairs_.empty()) return true;
+    if (t_.con[h] != kFree && !(splittableOnly && splitForbidden(h)) && mesh_.encroachesEdge(target, h))
+      rejectPairs_.push_back({t_.origin(h), t_.dest(h), h});
+  return !rejectPairs_.empty();
+}
+
+// The point `target` of bt is rejected: split the subsegments in rejectPairs_ (§6.3) and keep bt
+// queued if any was split; true if any was.
+bool Refiner::splitRejected(const BadTriangle& bt, const double* target) {
   ++out_.rejected;
   bool splitSome = false;
   for (const EdgeRef& e : rejectPairs_) {
@@ -351,7 +352,7 @@ bool Refiner::locateOrReject(const BadTriangle& bt, const double* target, Locati
   }
   rejectPairs_.clear();
   if (splitSome) requeue(bt);
-  return false;
+  return splitSome;
 }
 
 void Refiner::reject(const BadTriangle& bt, std::uint32_t h, const double* target) {

@@ -295,6 +295,8 @@ class Refiner {
                      const CavityRef& known, std::optional<EventKind> placed = std::nullopt);
 
   void reject(const BadTriangle& bt, std::uint32_t h, const double* target);
+  bool collectEncroached(const double* target, bool splittableOnly);
+  bool splitRejected(const BadTriangle& bt, const double* target);
 
   // The triangle survives a rejection unless the split destroyed it; keep it queued (§6.3).
   void requeue(const BadTriangle& bt) {
