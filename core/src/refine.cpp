@@ -46,9 +46,10 @@ bool refinementRequested(const MeshState& m) {
 
 RefineOutcome Refiner::run() {
   corner_ = acuteCorners(m_);
-  const std::uint64_t budget = plan_.budget != kAutoSteinerBudget ? plan_.budget : steinerBudget(m_);
+  const double demand = areaDemand(m_);
+  const std::uint64_t budget = plan_.budget != kAutoSteinerBudget ? plan_.budget : steinerBudget(m_, demand);
   budget_ = budget > plan_.used ? budget - plan_.used : 0;
-  reserveForAreaBounds(m_, budget_);
+  reserveForAreaBounds(m_, budget_, demand);
   // Initial queues: every subsegment and every triangle (linear in the mesh size, §6.3).
   for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
     if (!t_.alive(s)) continue;
@@ -117,13 +118,9 @@ bool Refiner::nextStage() {
   return true;
 }
 
+// The push's domain cap (observe) or the live-triangle cap of the push or a direct attempt.
 bool Refiner::overCap() {
-  if (overDomainCap_) {
-    capHit_ = true;
-    pushStop_ = "the mesh reached four times the 33-degree mesh's triangles";
-    return true;
-  }
-  if (!plan_.triangleCap || liveTriangles() <= plan_.triangleCap) return false;
+  if (!overDomainCap_ && (!plan_.triangleCap || liveTriangles() <= plan_.triangleCap)) return false;
   capHit_ = true;
   pushStop_ = "the mesh reached four times the 33-degree mesh's triangles";
   return true;
@@ -201,6 +198,9 @@ bool completeOutcome(const RefineOutcome& r) {
 
 std::uint64_t liveTriangles(const MeshState& m) { return m.tri.slotCount() - m.tri.freeSlots.size(); }
 
+// The stages' plans, run once per call: compiled for size (cold_code.h).
+RUPPERT_COLD_BEGIN
+
 // The triangles the output will hold: the bounding-box variant's outside leaves after refinement.
 std::uint64_t domainTriangles(const MeshState& m) {
   if (m.inDomain.empty()) return liveTriangles(m);
@@ -208,9 +208,6 @@ std::uint64_t domainTriangles(const MeshState& m) {
   for (std::uint32_t s = 0; s < m.tri.slotCount(); ++s) n += m.tri.alive(s) && m.inDomain[s];
   return n;
 }
-
-// The stages' plans, run once per call: compiled for size (cold_code.h).
-RUPPERT_COLD_BEGIN
 
 // Which way refineStaged went, and what replaying its first steps needs.
 struct StagedPath {
@@ -333,10 +330,11 @@ RefineOutcome replayStaged(MeshState& m, const StagedPath& path, std::uint64_t k
 // mesh done within k steps and a direct attempt cut short by the budget lead to the push.)
 RefineOutcome refine(MeshState& m) {
   if (!(m.options->minAngle > kStagedAboveDegrees)) return Refiner(m, RefinePlan::direct(m.options->minAngle)).run();
-  const std::uint64_t automatic = automaticSteinerBudget(m);
+  const double demand = areaDemand(m);
+  const std::uint64_t automatic = automaticSteinerBudget(m, demand);
   const std::uint64_t k = std::min(m.options->maxSteiner, automatic);
   StagedPath path;
-  if (k == automatic) return refineStaged(m, steinerBudget(m), path);
+  if (k == automatic) return refineStaged(m, steinerBudget(m, demand), path);
   // A budget of 0 inserts nothing, on every way: no need to know which.
   if (k == 0) return Refiner(m, RefinePlan::direct(m.options->minAngle, 0)).run();
   MeshState start = m;

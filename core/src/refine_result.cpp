@@ -61,18 +61,16 @@ void Refiner::finish() {
     out_.reasons.push_back(Reason{k, n, msg});
   };
   const std::uint64_t unmet = u.otherSkinny + u.large;
-  // A push whose best mesh meets the requested bound after all (its triangles below it all exempt,
-  // §6.6) stopped on what came after that mesh, say an encroached subsegment whose splits ran into
-  // the precision floor: the mesh returned is complete (a single triangle in a 0.86-degree input
-  // angle, 1e6 from the origin, with an area bound, was marked unreachable at 34.5-40 degrees).
-  const bool pushMetBound = unreachable_ && unmet == 0 && !cancelled_;
-  if (pushMetBound)
-    ;  // complete: only the exemptions below
-  else if (cancelled_)
+  if (cancelled_)
     add(ReasonKind::Cancelled, unmet, "refinement was cancelled; " + std::to_string(unmet) +
                                           " triangle(s) do not meet the bounds");
-  else if (unreachable_)
-    add(ReasonKind::AngleUnreachable, unmet, unreachableMessage(unmet, out_.reachedAngle));
+  else if (unreachable_) {
+    // A push whose best mesh meets the requested bound after all (its triangles below it all
+    // exempt, §6.6) stopped on what came after that mesh, say an encroached subsegment whose splits
+    // ran into the precision floor: the mesh returned is complete (a single triangle in a
+    // 0.86-degree input angle, 1e6 from the origin, with an area bound, was marked unreachable).
+    if (unmet > 0) add(ReasonKind::AngleUnreachable, unmet, unreachableMessage(unmet, out_.reachedAngle));
+  }
   else if (budgetHit_)
     add(ReasonKind::SteinerBudget, unmet, "the Steiner budget of " + std::to_string(budget_ + plan_.used) +
                                               " vertices was reached; " + std::to_string(unmet) +

@@ -76,9 +76,9 @@ std::vector<std::uint8_t> acuteCorners(const MeshState& m) {
 // centre, 3,160 to 44,850 crossings at small angles, use 30-63 Steiner vertices per crossing at 30
 // and 33 degrees; 40 per crossing stopped several of them incomplete), plus eight per unit of area
 // bound (area A with triangles of area a needs about A / (2 a) vertices).
-std::uint64_t steinerBudget(const MeshState& m) {
+std::uint64_t steinerBudget(const MeshState& m, double demand) {
   const Options& o = *m.options;
-  return o.maxSteiner != kAutoSteinerBudget ? o.maxSteiner : automaticSteinerBudget(m);
+  return o.maxSteiner != kAutoSteinerBudget ? o.maxSteiner : automaticSteinerBudget(m, demand);
 }
 
 double areaDemand(const MeshState& m) {
@@ -91,10 +91,10 @@ double areaDemand(const MeshState& m) {
   return sum;
 }
 
-std::uint64_t automaticSteinerBudget(const MeshState& m) {
+std::uint64_t automaticSteinerBudget(const MeshState& m, double demand) {
   const Options& o = *m.options;
   const auto crossings = std::count(m.kind.begin(), m.kind.end(), VertexKind::Intersection);
-  double estimate = 1e4 + 200.0 * m.inputCount + 100.0 * static_cast<double>(crossings) + 8 * areaDemand(m);
+  double estimate = 1e4 + 200.0 * m.inputCount + 100.0 * static_cast<double>(crossings) + 8 * demand;
   if (o.sizeFunction) estimate += 1e8;
   if (m.oldMesh != nullptr) estimate += m.oldMesh->budgetEstimate();
   return static_cast<std::uint64_t>(std::min(estimate, 4e9));
@@ -107,9 +107,9 @@ std::uint64_t automaticSteinerBudget(const MeshState& m) {
 // faults with this instead of 76,130 (perf stat; task clock 1.78-1.87 s against 1.56-2.18 s on a
 // noisy machine). Below ten thousand vertices growth costs too little to matter. The reservation is
 // only a hint: where memory is short, the arrays grow as they would have.
-void reserveForAreaBounds(MeshState& m, std::uint64_t budget) {
+void reserveForAreaBounds(MeshState& m, std::uint64_t budget, double demand) {
   const Triangulation& t = m.tri;
-  const double extra = std::min(0.8 * areaDemand(m), static_cast<double>(budget));
+  const double extra = std::min(0.8 * demand, static_cast<double>(budget));
   if (!(extra >= 1e4) || extra > 1e9) return;
   const std::size_t vertices = t.vertexCount() + static_cast<std::size_t>(extra);
   const std::size_t slots = t.slotCount() + 2 * static_cast<std::size_t>(extra);
