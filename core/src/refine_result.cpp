@@ -70,8 +70,7 @@ void Refiner::finish() {
     // ran into the precision floor: the mesh returned is complete (a single triangle in a
     // 0.86-degree input angle, 1e6 from the origin, with an area bound, was marked unreachable).
     if (unmet > 0) add(ReasonKind::AngleUnreachable, unmet, unreachableMessage(unmet, out_.reachedAngle));
-  }
-  else if (budgetHit_)
+  } else if (budgetHit_)
     add(ReasonKind::SteinerBudget, unmet, "the Steiner budget of " + std::to_string(budget_ + plan_.used) +
                                               " vertices was reached; " + std::to_string(unmet) +
                                               " triangle(s) do not meet the bounds");
