@@ -67,9 +67,9 @@ OptimalPlacement::Result OptimalPlacement::propose(const MeshAccess& mesh, const
   if (firstFits_) {
     firstLoc_ = loc, firstTris_ = candidateTris_, firstBoundary_ = candidateBoundary_;
     firstSin2_ = mesh.newMinSin2(st.first, candidateBoundary_);
-    if (firstSin2_ >= mesh.sin2Theta) return Result::FirstFine;
+    if (firstSin2_ >= mesh.sin2Theta) return Result::UseFirst;
   } else if (theta_ < kSplitBeforeSearchBelowDegrees * kPi / 180) {
-    return Result::FirstFine;
+    return Result::UseFirst;
   } else {
     const double centroid[2] = {(st.p[0][0] + st.p[1][0] + st.p[2][0]) / 3, (st.p[0][1] + st.p[1][1] + st.p[2][1]) / 3};
     Location inside;

@@ -38,8 +38,9 @@ class OptimalPlacement {
  public:
   enum class Result {
     Found,      // target and loc hold a point whose new triangles all meet the bound
-    FirstFine,  // the first choice can be inserted and makes no skinny triangle, or (below
-                // kSplitBeforeSearchBelowDegrees) it cannot be inserted: use it (or reject it)
+    UseFirst,   // the refiner goes on with the first choice: it can be inserted and makes no
+                // skinny triangle, or (below kSplitBeforeSearchBelowDegrees) it cannot be
+                // inserted, and the refiner rejects it and splits what it encroaches
     None,       // no point found meets the bound
   };
   // gain: bestBelowBound's (kBelowBoundGain or kStrictBelowBoundGain).
@@ -56,7 +57,7 @@ class OptimalPlacement {
   bool relocation(const MeshAccess& mesh, std::uint32_t v, double x[2]);
   const std::vector<std::uint32_t>& star() const { return star_; }
 
-  // After propose() returned FirstFine or None with the mesh unchanged since: whether the first
+  // After propose() returned UseFirst or None with the mesh unchanged since: whether the first
   // choice fitted (no subsegment in the way, none encroached, not too close to a vertex), and then
   // its location and cavity, swapped into tris and boundary, so the insertion need not find them
   // again. Each propose() answers once; forget() drops an answer no insertion will use.

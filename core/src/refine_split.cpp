@@ -233,7 +233,7 @@ bool Refiner::optimalOrRelocate(const BadTriangle& bt, const double* const* p, c
     case OptimalPlacement::Result::Found:
       insertSteiner(bt, x, loc, VertexKind::OffCenter, {}, EventKind::OptimalPoint);
       return true;
-    case OptimalPlacement::Result::FirstFine:
+    case OptimalPlacement::Result::UseFirst:
       return false;
     case OptimalPlacement::Result::None:
       break;
