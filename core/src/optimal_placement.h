@@ -63,6 +63,11 @@ class OptimalPlacement {
   // again. Each propose() answers once; forget() drops an answer no insertion will use.
   bool takeFirst(Location& loc, std::vector<std::uint32_t>& tris, std::vector<std::uint32_t>& boundary);
   void forget() { firstFits_ = false; }
+  // Right after propose() returned Found, or bestBelowBound() true, with the mesh unchanged since:
+  // the point's cavity (fits() left it there), swapped into tris and boundary.
+  void takeCandidate(std::vector<std::uint32_t>& tris, std::vector<std::uint32_t>& boundary) {
+    tris.swap(candidateTris_), boundary.swap(candidateBoundary_);
+  }
 
   // After propose() returned None with the mesh unchanged since (bound_push.h's bestBelowBound):
   // the point of the last search's cavity that maximises the smallest new angle, below the bound

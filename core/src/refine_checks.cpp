@@ -42,7 +42,7 @@ TriangleQuality Refiner::qualityAt(std::uint32_t s) const {
   return qualityOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
 }
 
-double Refiner::maxAreaAt(std::uint32_t s) const {
+double Refiner::maxAreaFromEverySource(std::uint32_t s) const {
   double bound = m_.maxAreaOf(s);
   if (o_.sizeFunction) {
     const double* p0 = t_.pt(t_.tv[3 * s]);

@@ -231,7 +231,8 @@ bool Refiner::optimalOrRelocate(const BadTriangle& bt, const double* const* p, c
   Location loc;
   switch (optimal_.propose(mesh_, st, cc, x, loc)) {
     case OptimalPlacement::Result::Found:
-      insertSteiner(bt, x, loc, VertexKind::OffCenter, {}, EventKind::OptimalPoint);
+      optimal_.takeCandidate(cavityTris_, cavityBoundary_);
+      insertSteiner(bt, x, loc, VertexKind::OffCenter, {&cavityTris_, &cavityBoundary_}, EventKind::OptimalPoint);
       return true;
     case OptimalPlacement::Result::UseFirst:
       return false;
@@ -247,7 +248,8 @@ bool Refiner::optimalOrRelocate(const BadTriangle& bt, const double* const* p, c
     return false;
   }
   if (!optimal_.bestBelowBound(mesh_, st, x, loc)) return false;
-  insertSteiner(bt, x, loc, VertexKind::OffCenter, {}, EventKind::OptimalPoint);
+  optimal_.takeCandidate(cavityTris_, cavityBoundary_);
+  insertSteiner(bt, x, loc, VertexKind::OffCenter, {&cavityTris_, &cavityBoundary_}, EventKind::OptimalPoint);
   return true;
 }
 

@@ -168,7 +168,14 @@ class Refiner {
 
   TriangleQuality qualityAt(std::uint32_t s) const;
 
-  double maxAreaAt(std::uint32_t s) const;
+  // Slot s's area bound (<= 0: none): its region's or the global one, a size function's at its
+  // centroid and, refining a mesh, the old mesh's, whichever is smallest. Inline for the common case
+  // of neither of the last two: it is asked for every new triangle.
+  double maxAreaAt(std::uint32_t s) const {
+    if (!o_.sizeFunction && m_.oldMesh == nullptr) return m_.maxAreaOf(s);
+    return maxAreaFromEverySource(s);
+  }
+  double maxAreaFromEverySource(std::uint32_t s) const;
 
   // Refining a mesh: the old mesh's bound for slot s (old_mesh.h), remembered with the corner
   // coordinates it was computed for (vertex ids would not do: Placement::Optimal moves vertices).
