@@ -41,6 +41,7 @@ int classOf(std::size_t n) {
 }
 
 void* fromMalloc(std::size_t bytes, std::int32_t tag) {
+  if (bytes > SIZE_MAX - kHeader) return nullptr;  // the header would wrap the size round
   char* p = static_cast<char*>(std::malloc(kHeader + bytes));
   if (p == nullptr) return nullptr;
   *reinterpret_cast<std::int32_t*>(p) = tag;
