@@ -7,8 +7,8 @@
 // such cache, and in a profile of a one-triangle call in Node its allocate and free were 12% of the
 // call. With these lists, 11 of the per-call benchmark's smallest inputs take 3.5-7% less time per
 // call and a single triangle 5-7% (in one Node process, alternating with the build without them,
-// both orders); cdt_guitar and earcut_earcut the same. Each list keeps at most kKeep blocks and kKeepBytes, so that after a large mesh what the
-// lists hold stays under 13 x 64 KB.
+// both orders); cdt_guitar and earcut_earcut the same. Each list keeps at most keepLimit(c) blocks
+// (64, and no more than 64 KB), so that after a large mesh the lists hold under 13 x 64 KB.
 // Single-threaded, as the modules are.
 #include <cstddef>
 #include <cstdint>
@@ -24,7 +24,7 @@ constexpr std::size_t kSmallest = 16;
 constexpr int kClasses = 13;  // 16 B .. 64 KB
 constexpr std::size_t kLargest = kSmallest << (kClasses - 1);
 constexpr std::int32_t kLarge = -1;
-constexpr int kKeep = 64;
+constexpr std::size_t kKeep = 64;
 constexpr std::size_t kKeepBytes = 64 * 1024;
 
 struct FreeBlock {
@@ -32,7 +32,12 @@ struct FreeBlock {
 };
 
 FreeBlock* freeLists[kClasses];
-int freeCounts[kClasses];
+std::size_t freeCounts[kClasses];
+
+// How many freed blocks of class c its list keeps.
+constexpr std::size_t keepLimit(int c) {
+  return kKeepBytes / (kSmallest << c) < kKeep ? kKeepBytes / (kSmallest << c) : kKeep;
+}
 
 int classOf(std::size_t n) {
   if (n <= kSmallest) return 0;
@@ -63,7 +68,7 @@ void release(void* p) {
   if (p == nullptr) return;
   char* start = static_cast<char*>(p) - kHeader;
   const std::int32_t c = *reinterpret_cast<std::int32_t*>(start);
-  if (c != kLarge && freeCounts[c] < kKeep && (std::size_t(freeCounts[c]) + 1) * (kSmallest << c) <= kKeepBytes) {
+  if (c != kLarge && freeCounts[c] < keepLimit(c)) {
     FreeBlock* b = static_cast<FreeBlock*>(p);
     b->next = freeLists[c];
     freeLists[c] = b;

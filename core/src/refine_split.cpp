@@ -231,8 +231,7 @@ bool Refiner::optimalOrRelocate(const BadTriangle& bt, const double* const* p, c
   Location loc;
   switch (optimal_.propose(mesh_, st, cc, x, loc)) {
     case OptimalPlacement::Result::Found:
-      optimal_.takeCandidate(cavityTris_, cavityBoundary_);
-      insertSteiner(bt, x, loc, VertexKind::OffCenter, {&cavityTris_, &cavityBoundary_}, EventKind::OptimalPoint);
+      insertChosenPoint(bt, x, loc);
       return true;
     case OptimalPlacement::Result::UseFirst:
       return false;
@@ -248,9 +247,13 @@ bool Refiner::optimalOrRelocate(const BadTriangle& bt, const double* const* p, c
     return false;
   }
   if (!optimal_.bestBelowBound(mesh_, st, x, loc)) return false;
+  insertChosenPoint(bt, x, loc);
+  return true;
+}
+
+void Refiner::insertChosenPoint(const BadTriangle& bt, const double* x, const Location& loc) {
   optimal_.takeCandidate(cavityTris_, cavityBoundary_);
   insertSteiner(bt, x, loc, VertexKind::OffCenter, {&cavityTris_, &cavityBoundary_}, EventKind::OptimalPoint);
-  return true;
 }
 
 bool Refiner::relocate(std::uint32_t v, const BadTriangle& bt) {

@@ -272,6 +272,9 @@ class Refiner {
   // else move a free endpoint of the shortest edge. False: neither; the first choice goes ahead.
   bool optimalOrRelocate(const BadTriangle& bt, const double* const* p, const TriangleShape& sh,
                          const double* first);
+  // Insert x, the point OptimalPlacement just chose (propose's Found, or bestBelowBound), with the
+  // cavity its check computed (OptimalPlacement::takeCandidate).
+  void insertChosenPoint(const BadTriangle& bt, const double* x, const Location& loc);
 
   // Erten and Üngör's relocation: move v, a vertex refinement placed off every segment, to where
   // every triangle of its star meets the bound (OptimalPlacement::relocation), then restore the
