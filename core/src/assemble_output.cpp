@@ -86,6 +86,9 @@ void writeTriangles(const MeshState& m, Mesh& mesh) {
   mesh.triangles.resize(3 * count);
   mesh.neighbors.resize(3 * count);
   mesh.triangleAttributes.resize(count);
+  // The subsegments number at least the input's segments: room for those and some splits, so that
+  // small meshes do not grow these lists from empty (their count is known only after this pass).
+  mesh.segments.reserve(m.plc->segments.size() + 64), mesh.segmentIds.reserve(m.plc->segments.size() / 2 + 32);
   Stats& st = mesh.stats;
   AngleStats angles;
   for (std::uint32_t s = 0; s < t.slotCount(); ++s) {

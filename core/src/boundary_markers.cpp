@@ -38,6 +38,8 @@ std::int64_t EdgeIndex::find(std::uint32_t a, std::uint32_t b) const {
 
 std::vector<std::uint32_t> boundaryEdges(const Mesh& mesh) {
   std::vector<std::uint32_t> out;
+  // The domain's boundary edges are subsegments (segments or hull edges): room for as many.
+  out.reserve(mesh.segments.size());
   const std::size_t halfEdges = std::min(mesh.neighbors.size(), mesh.triangles.size());
   for (std::size_t h = 0; h < halfEdges; ++h) {
     if (mesh.neighbors[h] != kNoNeighbor) continue;

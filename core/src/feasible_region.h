@@ -9,6 +9,8 @@
 // only, so a "no" is certain and a "yes" leaves the answer to the search.
 #pragma once
 
+#include <cmath>
+
 #include "optimal_point.h"
 
 namespace ruppert::detail {
@@ -18,5 +20,14 @@ namespace ruppert::detail {
 // `candidate`, when given, receives a point to try first where the answer is true (the mean of the
 // half-planes' polygon's vertices: it often lies in every disk too), else NaN.
 bool mayMeetBound(const OptimalPointQuery& query, double theta, double* candidate = nullptr);
+
+// The bound with its cosine and sine, computed once per bound instead of once per screen (two
+// library calls, 0.7% of a cloud of points' mesh natively).
+struct BoundAngle {
+  double cos = 1, sin = 0;
+  BoundAngle() = default;
+  explicit BoundAngle(double radians) : cos(std::cos(radians)), sin(std::sin(radians)) {}
+};
+bool mayMeetBound(const OptimalPointQuery& query, const BoundAngle& bound, double* candidate = nullptr);
 
 }  // namespace ruppert::detail

@@ -17,6 +17,13 @@ double dist2(const double* a, const double* b) {
 
 }  // namespace
 
+// The scratch lists start with room for a typical cavity (see kScratchReserve).
+OptimalPlacement::OptimalPlacement(double theta, double gain) : theta_(theta), bound_(theta), gain_(gain) {
+  for (auto* list : {&cavity_, &candidateTris_, &candidateBoundary_, &star_, &firstTris_, &firstBoundary_})
+    list->reserve(kScratchReserve);
+  edges_.reserve(kScratchReserve);
+}
+
 void OptimalPlacement::edgesOf(const Triangulation& t, const std::vector<std::uint32_t>& boundary) {
   edges_.clear();
   for (std::uint32_t h : boundary) {
@@ -91,7 +98,7 @@ OptimalPlacement::Result OptimalPlacement::propose(const MeshAccess& mesh, const
     double guess[2];
     lastQuery_ = query, lastSeedCount_ = seedCount;
     std::copy(seeds, seeds + 6, lastSeeds_);
-    if (!mayMeetBound(query, theta_, guess)) return Result::None;
+    if (!mayMeetBound(query, bound_, guess)) return Result::None;
     const OptimalPoint r = pointMeeting(query, guess, seeds, seedCount);
     Location l;
     if (r.encroaches || !(r.minAngle > theta_) || !fits(mesh, st.slot, r.x, l)) return Result::None;
@@ -171,7 +178,7 @@ bool OptimalPlacement::relocation(const MeshAccess& mesh, std::uint32_t v, doubl
   query.p = edges_[0].u, query.q = edges_[0].v, query.petal = false;
   query.edges = edges_.data(), query.edgeCount = edges_.size(), query.maxApex = kPi;
   double guess[2];
-  if (!mayMeetBound(query, theta_, guess)) return false;
+  if (!mayMeetBound(query, bound_, guess)) return false;
   const OptimalPoint r = pointMeeting(query, guess, seeds, 2);
   if (!(r.minAngle > theta_) || !mesh.representable(r.x) || mesh.tooCloseToCavity(r.x, star_)) return false;
   for (const CavityEdge& c : edges_)

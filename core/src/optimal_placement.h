@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "feasible_region.h"
 #include "optimal_point.h"
 #include "placement.h"
 
@@ -44,7 +45,7 @@ class OptimalPlacement {
     None,       // no point found meets the bound
   };
   // gain: bestBelowBound's (kBelowBoundGain or kStrictBelowBoundGain).
-  OptimalPlacement(double theta, double gain) : theta_(theta), gain_(gain) {}
+  OptimalPlacement(double theta, double gain);
 
   // st.first is the first choice (it may lie beyond a subsegment; st.firstCavity is not used), cc
   // the triangle's circumcenter.
@@ -78,6 +79,7 @@ class OptimalPlacement {
 
  private:
   double theta_;
+  BoundAngle bound_;  // theta_ with its cosine and sine, for the screen
   double gain_;
   std::vector<CavityEdge> edges_;
   std::vector<std::uint32_t> cavity_, candidateTris_, candidateBoundary_, star_;

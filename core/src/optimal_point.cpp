@@ -112,23 +112,53 @@ int petalSeeds(const double* p, const double* q, double* out) {
   return n;
 }
 
+// The angles at u and at v of the triangle (u, v, x), signed (negative when x is right of u->v),
+// and the one at x: the terms of evaluateSteinerPoint's exact minimum.
+struct ExactCorners {
+  double atU, atV, atX;
+};
+ExactCorners exactCorners(const double* u, const double* v, const double* x) {
+  const double a[2] = {v[0] - u[0], v[1] - u[1]}, b[2] = {x[0] - u[0], x[1] - u[1]};
+  const double c[2] = {x[0] - v[0], x[1] - v[1]};
+  const double atU = std::atan2(a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]);
+  const double atV = std::atan2(a[0] * c[1] - a[1] * c[0], -(a[0] * c[0] + a[1] * c[1]));
+  // The angles sum to pi for a counter-clockwise triangle; clockwise ones are negative anyway.
+  return {atU, atV, atU > 0 && atV > 0 ? kPi - atU - atV : std::min(atU, atV)};
+}
+
 }  // namespace
 
+// Which corner is the smallest is decided on pseudo-angles, and only that corner's angle is then
+// computed (with atan2, as every corner's was: two calls per edge were 4% of a cloud of points'
+// mesh natively). The value is the exact minimum's unless two corners differ by rounding only.
+// Constrained edges, which decide encroachment at the encroachment angle, keep exact angles.
 OptimalPoint evaluateSteinerPoint(const OptimalPointQuery& query, const double* x) {
   OptimalPoint r{{x[0], x[1]}, HUGE_VAL, false};
+  double least = HUGE_VAL;
+  const double* leastU = nullptr;
+  const double* leastV = nullptr;
+  int leastCorner = 0;  // 0: at u, 1: at v, 2: at x
   auto update = [&](const double* u, const double* v, bool constrained) {
-    const double a[2] = {v[0] - u[0], v[1] - u[1]}, b[2] = {x[0] - u[0], x[1] - u[1]};
-    const double c[2] = {x[0] - v[0], x[1] - v[1]};
-    const double atU = std::atan2(a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]);
-    const double atV = std::atan2(a[0] * c[1] - a[1] * c[0], -(a[0] * c[0] + a[1] * c[1]));
-    // The angles sum to pi for a counter-clockwise triangle; clockwise ones are negative anyway.
-    const double atX = atU > 0 && atV > 0 ? kPi - atU - atV : std::min(atU, atV);
-    r.minAngle = std::min({r.minAngle, atU, atV, atX});
-    if (constrained && atU > 0 && atV > 0 && atX >= query.maxApex) r.encroaches = true;
+    if (constrained) {
+      const ExactCorners e = exactCorners(u, v, x);
+      if (e.atU > 0 && e.atV > 0 && e.atX >= query.maxApex) r.encroaches = true;
+    }
+    const double ax = v[0] - u[0], ay = v[1] - u[1], bx = x[0] - u[0], by = x[1] - u[1];
+    const double cx = x[0] - v[0], cy = x[1] - v[1];
+    const double atU = pseudoAngle(ax * bx + ay * by, ax * by - ay * bx);
+    const double atV = pseudoAngle(-(ax * cx + ay * cy), ax * cy - ay * cx);
+    const double atX = atU > 0 && atV > 0 ? pseudoAngle(bx * cx + by * cy, bx * cy - by * cx) : HUGE_VAL;
+    const double corners[3] = {atU, atV, atX};
+    for (int k = 0; k < 3; ++k)
+      if (corners[k] < least) least = corners[k], leastU = u, leastV = v, leastCorner = k;
   };
   if (query.petal) update(query.p, query.q, false);
   for (std::size_t i = 0; i < query.edgeCount; ++i)
     update(query.edges[i].u, query.edges[i].v, query.edges[i].constrained);
+  if (leastU) {
+    const ExactCorners e = exactCorners(leastU, leastV, x);
+    r.minAngle = leastCorner == 0 ? e.atU : leastCorner == 1 ? e.atV : e.atX;
+  }
   return r;
 }
 

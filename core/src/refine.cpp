@@ -89,6 +89,12 @@ RefineOutcome Refiner::run() {
 // Once per stage or per quarter of the mesh's size in insertions: compiled for size (cold_code.h).
 RUPPERT_COLD_BEGIN
 
+void Refiner::reserveScratch() {
+  for (auto* list : {&newTris_, &parents_, &flipped_, &mendStack_, &cavityTris_, &cavityBoundary_, &splitTris_, &splitBoundary_})
+    list->reserve(kScratchReserve);
+  encroached_.reserve(kScratchReserve), inherit_.reserve(kScratchReserve);
+}
+
 void Refiner::setBound(double degrees) {
   stageDegrees_ = degrees;
   theta_ = radians(degrees);

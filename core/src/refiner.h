@@ -120,6 +120,7 @@ class Refiner {
         petal_(o_.placement == Placement::Petal ? theta_ : 0),
         optimal_(theta_, plan.belowBoundGain) {
     bad_.setLargestFirst(plan.largestFirst);
+    reserveScratch();
   }
 
   // After run(): whether it stopped at plan_.triangleCap.
@@ -130,6 +131,10 @@ class Refiner {
   RefineOutcome run();
 
  private:
+  // Room for a typical cavity in every scratch list from the start: a call otherwise grows each
+  // from empty one doubling at a time, an allocation, a copy and a free apiece.
+  void reserveScratch();
+
   // ---- stages (bound_push.h) -------------------------------------------------------------------
   void setBound(double degrees);
 

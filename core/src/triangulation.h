@@ -10,6 +10,7 @@
 //   vtri[v]      some live triangle that has v as a vertex (kNone for vertices not in the mesh).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -18,6 +19,9 @@ namespace ruppert::detail {
 inline constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 inline constexpr std::int32_t kFree = -1;      // con[h]: not a subsegment
 inline constexpr std::int32_t kHullEdge = -2;  // con[h]: convex-hull or bounding-box edge added by us
+// The capacity that scratch lists made once per call (cavities, their boundaries, new triangles)
+// start with: more than most cavities need.
+inline constexpr std::size_t kScratchReserve = 32;
 
 inline std::uint32_t next3(std::uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; }
 inline std::uint32_t prev3(std::uint32_t h) { return h % 3 == 0 ? h + 2 : h - 1; }

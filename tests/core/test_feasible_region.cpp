@@ -3,6 +3,7 @@
 // "no" often enough to be worth running, on cavities where no point meets the bound.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -163,4 +164,37 @@ TEST_CASE("feasible region: a search told what is good enough stops past it, on 
     }
   }
   CHECK(passed >= 30);
+}
+
+TEST_CASE("feasible region: a corner narrower than twice the bound rules a cavity out, in any edge order", "[optimal]") {
+  // A kite around the petal edge (0,0)-(1,0) whose top corner opens at `top` degrees: a point inside
+  // splits that corner between two triangles, so below 2 theta one of them is under theta.
+  auto kite = [](double top) {
+    const double half = top / 2 * kDeg, h = 1.2;  // the top at (0.5, h), the sides reaching out
+    const double w = h * std::tan(half) * 0.9;
+    const std::vector<double> xy = {0, 0, 1, 0, 0.5 + w, h * 0.1, 0.5, h, 0.5 - w, h * 0.1};
+    std::vector<CavityEdge> edges;
+    for (int i = 0; i < 5; ++i) {
+      const int j = (i + 1) % 5;
+      edges.push_back({{xy[2 * i], xy[2 * i + 1]}, {xy[2 * j], xy[2 * j + 1]}, false});
+    }
+    return edges;
+  };
+  const double p[2] = {0, 0}, q[2] = {1, 0};
+  for (double top : {40.0, 49.0, 51.0, 70.0, 100.0}) {
+    auto edges = kite(top);
+    OptimalPointQuery query;
+    query.p = p, query.q = q, query.edges = edges.data(), query.edgeCount = edges.size(), query.maxApex = kPi;
+    const double theta = 25 * kDeg;
+    const bool may = mayMeetBound(query, theta);
+    INFO("top corner " << top << " degrees");
+    if (top < 50) CHECK_FALSE(may);
+    if (gridMeets(query, theta)) CHECK(may);
+    // The cavity's edges come in no particular order (a breadth-first search finds them): reversed
+    // and rotated, the answer is the same.
+    std::reverse(edges.begin(), edges.end());
+    std::rotate(edges.begin(), edges.begin() + 2, edges.end());
+    query.edges = edges.data();
+    CHECK(mayMeetBound(query, theta) == may);
+  }
 }
