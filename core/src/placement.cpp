@@ -84,7 +84,11 @@ PetalPlacement::PetalPlacement(double theta) {
       petal_.push_back({along, across, std::hypot(std::fabs(along) - 0.5, across)});
     }
   }
-  std::sort(petal_.begin(), petal_.end(), [](const PetalPoint& a, const PetalPoint& b) { return a.bound > b.bound; });
+  // At most 52 points, once per bound: an insertion sort (stable: a point and its mirror image, whose
+  // bounds tie, keep their order) instead of a std::sort instantiation of its own, which was 6 KB
+  // of the wasm module.
+  for (std::size_t i = 1; i < petal_.size(); ++i)
+    for (std::size_t j = i; j > 0 && petal_[j].bound > petal_[j - 1].bound; --j) std::swap(petal_[j], petal_[j - 1]);
 }
 
 // Whether searching the petal can pay: the first choice makes a skinny triangle, and every such

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <string>
 
+#include "point_order.h"
 #include "predicates.h"
 
 namespace ruppert::detail {
@@ -195,23 +196,14 @@ void mergeDuplicates(const Plc& plc, const std::vector<double>& xy, std::vector<
   }
   const double span = std::max(maxX - minX, maxY - minY);
   const double toGrid = span > 0 ? 65535.0 / span : 0;
-  struct Keyed {
-    std::uint32_t key, index;
-    double x, y;
-  };
-  std::vector<Keyed> sorted(n);
+  std::vector<KeyedPoint> sorted(n);
   for (std::size_t i = 0; i < n; ++i) {
     const double x = xy[2 * i], y = xy[2 * i + 1];
     sorted[i] = {hilbertKey(static_cast<std::uint32_t>((x - minX) * toGrid), static_cast<std::uint32_t>((y - minY) * toGrid)),
                  static_cast<std::uint32_t>(i), x, y};
   }
-  // Within a key, order by coordinates then index, so identical points are adjacent, lowest index first.
-  std::sort(sorted.begin(), sorted.end(), [](const Keyed& a, const Keyed& b) {
-    if (a.key != b.key) return a.key < b.key;
-    if (a.x != b.x) return a.x < b.x;
-    if (a.y != b.y) return a.y < b.y;
-    return a.index < b.index;
-  });
+  // Within a key, by coordinates then index, so identical points are adjacent, lowest index first.
+  sortPoints(sorted);
   representative.assign(n, 0);
   distinct.clear();
   distinct.reserve(n);

@@ -14,6 +14,7 @@
 
 #include "mesh_state.h"
 #include "point_attributes.h"
+#include "point_order.h"
 #include "predicates.h"
 
 namespace ruppert::detail {
@@ -398,18 +399,15 @@ void insertHull(MeshState& m) {
   // sweep, seed 29317: crossings within 1e-19 of each other). Around every vertex, no hull edge
   // crosses a constrained edge in exact arithmetic. Collinear points on the hull are skipped here
   // and picked up by segment insertion (they split the hull edge).
-  struct P {
-    double x, y;
-    std::uint32_t v;
-  };
-  std::vector<P> sorted;
+  // By x then y (one key for all; the vertices' points are distinct).
+  std::vector<KeyedPoint> sorted;
   sorted.reserve(m.inputCount);
   const Triangulation& t = m.tri;
   for (std::uint32_t v = 0; v < t.vertexCount(); ++v)
-    if (v < m.inputCount || m.kind[v] == VertexKind::Intersection) sorted.push_back({t.xy[2 * v], t.xy[2 * v + 1], v});
-  std::sort(sorted.begin(), sorted.end(), [](const P& a, const P& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+    if (v < m.inputCount || m.kind[v] == VertexKind::Intersection) sorted.push_back({0, v, t.xy[2 * v], t.xy[2 * v + 1]});
+  sortPoints(sorted);
   std::vector<std::uint32_t> pts(sorted.size());
-  for (std::size_t k = 0; k < sorted.size(); ++k) pts[k] = sorted[k].v;
+  for (std::size_t k = 0; k < sorted.size(); ++k) pts[k] = sorted[k].index;
   std::vector<std::uint32_t> hull;
   for (int pass = 0; pass < 2; ++pass) {
     const std::size_t base = hull.size();
