@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace ruppert::detail {
@@ -24,6 +25,8 @@ class AngleStats {
   void add(const double* p0, const double* p1, const double* p2);
   // 180 counts; an angle of exactly 180 degrees counts in the last bin.
   const std::vector<std::uint64_t>& histogram() const { return histogram_; }
+  // The histogram moved out (no copy), once every angle is in.
+  std::vector<std::uint64_t> takeHistogram() { return std::move(histogram_); }
   // Degrees; 0 when nothing was added.
   double minAngle() const;
   double maxAngle() const;

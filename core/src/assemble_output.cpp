@@ -108,7 +108,7 @@ void writeTriangles(const MeshState& m, Mesh& mesh) {
     mesh.triangleAttributes[o] = m.attribute.empty() ? 0.0 : m.attribute[s];
     angles.add(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2]));
   }
-  st.angleHistogram = angles.histogram();
+  st.angleHistogram = angles.takeHistogram();
   st.minAngle = angles.minAngle();
   st.maxAngle = angles.maxAngle();
   st.triangles = count;
