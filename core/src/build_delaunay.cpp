@@ -53,7 +53,7 @@ void buildDelaunay(MeshState& m) {
   const std::uint32_t p0 = 0, p1 = 1;
   std::uint32_t hint = t0;
   for (std::uint32_t v = 0; v < n; ++v) {  // internal numbering is the insertion order
-    // (Points 0 and 1 are on their own line: asking would take orient2d's exact path twice per call.)
+    // (Points 0 and 1 are on their own line: no need to ask.)
     if (allCollinear && v > p1 && orient2d(t.pt(p0), t.pt(p1), t.pt(v)) != 0) allCollinear = false;
     Location loc = t.locate(t.pt(v), hint);
     if (loc.kind != Location::InTriangle && loc.kind != Location::OnEdge)
