@@ -135,10 +135,6 @@ bool cornersWideEnough(const CavityEdge* edges, std::size_t count, double c, dou
 
 }  // namespace
 
-bool mayMeetBound(const OptimalPointQuery& query, double theta, double* candidate) {
-  return mayMeetBound(query, BoundAngle(theta), candidate);
-}
-
 bool mayMeetBound(const OptimalPointQuery& query, const BoundAngle& bound, double* candidate) {
   if (candidate) candidate[0] = candidate[1] = NAN;  // no candidate unless the polygon is complete
   Base bases[kMaxBases];

@@ -15,19 +15,17 @@
 
 namespace ruppert::detail {
 
-// False when no point gives every triangle of the query all angles >= theta (radians, in (0, pi/3]),
-// with a margin of about 1e-9 relative to the edges' lengths on the side of answering true.
-// `candidate`, when given, receives a point to try first where the answer is true (the mean of the
-// half-planes' polygon's vertices: it often lies in every disk too), else NaN.
-bool mayMeetBound(const OptimalPointQuery& query, double theta, double* candidate = nullptr);
-
-// The bound with its cosine and sine, computed once per bound instead of once per screen (two
-// library calls, 0.7% of a cloud of points' mesh natively).
+// The bound theta (radians, in (0, pi/3]) with its cosine and sine, computed once per bound instead
+// of once per screen (two library calls, 0.7% of a cloud of points' mesh natively).
 struct BoundAngle {
-  double cos = 1, sin = 0;
-  BoundAngle() = default;
-  explicit BoundAngle(double radians) : cos(std::cos(radians)), sin(std::sin(radians)) {}
+  double cos, sin;
+  explicit BoundAngle(double theta) : cos(std::cos(theta)), sin(std::sin(theta)) {}
 };
+
+// False when no point gives every triangle of the query all angles >= theta, with a margin of about
+// 1e-9 relative to the edges' lengths on the side of answering true. `candidate`, when given,
+// receives a point to try first where the answer is true (the mean of the half-planes' polygon's
+// vertices: it often lies in every disk too), else NaN.
 bool mayMeetBound(const OptimalPointQuery& query, const BoundAngle& bound, double* candidate = nullptr);
 
 }  // namespace ruppert::detail

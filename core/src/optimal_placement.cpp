@@ -17,8 +17,7 @@ double dist2(const double* a, const double* b) {
 
 }  // namespace
 
-// The scratch lists start with room for a typical cavity (see kScratchReserve).
-OptimalPlacement::OptimalPlacement(double theta, double gain) : theta_(theta), bound_(theta), gain_(gain) {
+void OptimalPlacement::reserveScratch() {
   for (auto* list : {&cavity_, &candidateTris_, &candidateBoundary_, &star_, &firstTris_, &firstBoundary_})
     list->reserve(kScratchReserve);
   edges_.reserve(kScratchReserve);

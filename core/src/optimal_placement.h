@@ -45,7 +45,10 @@ class OptimalPlacement {
     None,       // no point found meets the bound
   };
   // gain: bestBelowBound's (kBelowBoundGain or kStrictBelowBoundGain).
-  OptimalPlacement(double theta, double gain);
+  OptimalPlacement(double theta, double gain) : theta_(theta), bound_(theta), gain_(gain) {}
+  // Room for a typical cavity in the scratch lists (see kScratchReserve), once per call: only the
+  // refiner that uses this placement asks.
+  void reserveScratch();
 
   // st.first is the first choice (it may lie beyond a subsegment; st.firstCavity is not used), cc
   // the triangle's circumcenter.

@@ -93,6 +93,7 @@ void Refiner::reserveScratch() {
   for (auto* list : {&newTris_, &parents_, &flipped_, &mendStack_, &cavityTris_, &cavityBoundary_, &splitTris_, &splitBoundary_})
     list->reserve(kScratchReserve);
   encroached_.reserve(kScratchReserve), inherit_.reserve(kScratchReserve);
+  if (o_.placement == Placement::Optimal) optimal_.reserveScratch();
 }
 
 void Refiner::setBound(double degrees) {

@@ -12,6 +12,7 @@
 
 namespace {
 
+using ruppert::detail::BoundAngle;
 using ruppert::detail::CavityEdge;
 using ruppert::detail::evaluateSteinerPoint;
 using ruppert::detail::mayMeetBound;
@@ -61,7 +62,7 @@ TEST_CASE("feasible region: a no is never wrong, and comes on most cavities wher
       OptimalPointQuery query;
       query.p = p, query.q = q, query.edges = edges.data(), query.edgeCount = edges.size();
       query.maxApex = kPi, query.petal = petal;
-      const bool may = mayMeetBound(query, theta);
+      const bool may = mayMeetBound(query, BoundAngle(theta));
       const bool meets = gridMeets(query, theta);
       INFO("trial " << trial << (petal ? " with" : " without") << " the petal at " << theta / kDeg << " degrees");
       if (meets) CHECK(may);  // the certain part
@@ -81,12 +82,12 @@ TEST_CASE("feasible region: a regular hexagon meets 59 degrees, and a needle's c
     hex.push_back({{std::cos(k * kPi / 3), std::sin(k * kPi / 3)}, {std::cos((k + 1) * kPi / 3), std::sin((k + 1) * kPi / 3)}, false});
   OptimalPointQuery query;
   query.p = hex[0].u, query.q = hex[0].v, query.edges = hex.data(), query.edgeCount = hex.size(), query.maxApex = kPi;
-  CHECK(mayMeetBound(query, 59.9 * kDeg));
+  CHECK(mayMeetBound(query, BoundAngle(59.9 * kDeg)));
   // A cavity with an edge a hundred times the petal edge: its triangle with any point near p-q is flat.
   const std::vector<CavityEdge> needle = {{{0, 0}, {1, 0}, false}, {{1, 0}, {50, 1}, false}, {{50, 1}, {0, 0}, false}};
   const double p[2] = {0, 0}, q[2] = {1, 0};
   query.p = p, query.q = q, query.edges = needle.data(), query.edgeCount = needle.size();
-  CHECK_FALSE(mayMeetBound(query, 30 * kDeg));
+  CHECK_FALSE(mayMeetBound(query, BoundAngle(30 * kDeg)));
 }
 
 TEST_CASE("feasible region: the largest stars fit, and beyond the cap the answer is left to the search", "[optimal]") {
@@ -101,7 +102,7 @@ TEST_CASE("feasible region: the largest stars fit, and beyond the cap the answer
     query.p = ring[0].u, query.q = ring[0].v, query.edges = ring.data(), query.edgeCount = ring.size();
     query.maxApex = kPi, query.petal = false;
     INFO(n << " edges");
-    CHECK(mayMeetBound(query, 30 * kDeg) == (n > 64));
+    CHECK(mayMeetBound(query, BoundAngle(30 * kDeg)) == (n > 64));
   }
 }
 
@@ -121,7 +122,7 @@ TEST_CASE("feasible region: the candidate lies in every half-plane, and meets th
     OptimalPointQuery query;
     query.p = p, query.q = q, query.edges = edges.data(), query.edgeCount = edges.size(), query.maxApex = kPi;
     double candidate[2];
-    const bool may = mayMeetBound(query, theta, candidate);
+    const bool may = mayMeetBound(query, BoundAngle(theta), candidate);
     INFO("trial " << trial << " at " << theta / kDeg << " degrees");
     if (!may) CHECK(std::isnan(candidate[0]));
     if (!gridMeets(query, theta)) continue;
@@ -186,7 +187,7 @@ TEST_CASE("feasible region: a corner narrower than twice the bound rules a cavit
     OptimalPointQuery query;
     query.p = p, query.q = q, query.edges = edges.data(), query.edgeCount = edges.size(), query.maxApex = kPi;
     const double theta = 25 * kDeg;
-    const bool may = mayMeetBound(query, theta);
+    const bool may = mayMeetBound(query, BoundAngle(theta));
     INFO("top corner " << top << " degrees");
     if (top < 50) CHECK_FALSE(may);
     if (gridMeets(query, theta)) CHECK(may);
@@ -195,6 +196,6 @@ TEST_CASE("feasible region: a corner narrower than twice the bound rules a cavit
     std::reverse(edges.begin(), edges.end());
     std::rotate(edges.begin(), edges.begin() + 2, edges.end());
     query.edges = edges.data();
-    CHECK(mayMeetBound(query, theta) == may);
+    CHECK(mayMeetBound(query, BoundAngle(theta)) == may);
   }
 }
