@@ -235,7 +235,6 @@ struct StagedPath {
 RefinePlan directPlan(double requested, std::uint64_t base, int attempt, std::uint64_t budget) {
   RefinePlan plan = RefinePlan::direct(requested, budget);
   plan.triangleCap = kDirectTriangleFactor * base;
-  plan.slide = true;
   if (attempt == 0) return plan;
   if (attempt == 3) {
     plan.bestBelowBound = true, plan.belowBoundGain = kBelowBoundGain;
@@ -251,7 +250,6 @@ RefinePlan pushPlan(double requested, const StagedPath& path, std::uint64_t budg
   RefinePlan plan{requested, kReachableDegrees, true, kPushTriangleFactor * path.base, path.reachSteps};
   plan.domainCap = kPushTriangleFactor * path.baseDomain;
   plan.budget = budget;
-  plan.slide = true;
   return plan;
 }
 

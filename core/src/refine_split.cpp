@@ -277,7 +277,7 @@ bool Refiner::slideOnSegment(std::uint32_t v, const BadTriangle& bt) {
   std::uint32_t ends[2];
   double x[2];
   if (!mayMove(v) || !segmentVertexFan(t_, v, slideStar_, ends) ||
-      !bestSlide(t_, slideStar_, t_.pt(ends[0]), t_.pt(ends[1]), sin2Theta_, x) || !mesh_.representable(x))
+      !bestSlide(t_, slideStar_, t_.pt(ends[0]), t_.pt(ends[1]), bt.slot, sin2Theta_, mesh_.lensCos2, x) || !mesh_.representable(x))
     return false;
   const double from[2] = {t_.xy[2 * v], t_.xy[2 * v + 1]};
   t_.xy[2 * v] = x[0], t_.xy[2 * v + 1] = x[1];

@@ -1,4 +1,4 @@
-// Sliding a vertex along its segment (above 34 degrees, bound_push.h): the one-dimensional
+// Sliding a vertex along its segment (RefinePlan::slide, bound_push.h: at every bound): the one-dimensional
 // counterpart of Erten and Üngör's relocation of free vertices. A vertex that refinement put on a
 // segment splits it into two subsegments; moving it along the segment between their far ends keeps
 // both subsegments on the segment and changes only the triangles of its fan. Where midpoint splits
@@ -20,9 +20,11 @@ namespace ruppert::detail {
 bool segmentVertexFan(const Triangulation& t, std::uint32_t v, std::vector<std::uint32_t>& star, std::uint32_t ends[2]);
 
 // The point of the segment from u to w, at 15% to 85% of the way in steps of 2.5%, at which the fan's
-// smallest angle is largest, every triangle staying counter-clockwise; into x. False when even that
-// point leaves a triangle with sin^2 of its smallest angle below sin2Bound.
+// smallest angle is largest, every triangle staying counter-clockwise and no vertex encroaching a
+// subsegment of the fan under the rule of lensCos2 (refine_geometry.h's encroaches); into x. False
+// when even that point leaves a triangle with sin^2 of its smallest angle below sin2Bound. `skinny`:
+// the slot of the fan's triangle to test first (the skinny one), or any other value.
 bool bestSlide(const Triangulation& t, const std::vector<std::uint32_t>& star, const double* u, const double* w,
-               double sin2Bound, double x[2]);
+               std::uint32_t skinny, double sin2Bound, double lensCos2, double x[2]);
 
 }  // namespace ruppert::detail

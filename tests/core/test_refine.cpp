@@ -619,6 +619,46 @@ TEST_CASE("at 40 degrees vertices on segments slide along them, and that complet
   CHECK(slides > 0);
 }
 
+// Sliding is on at every bound (bound_push.h's RefinePlan::slide). In thin strips midpoint splits put
+// the vertices of both sides at the same places, and the strip fills with right triangles; slides
+// stagger them. A comb of ten teeth 1/19 wide and 0.8 long (the per-call benchmark's comb-10): 367
+// triangles at 30 degrees without sliding, 299 with it; with off-centers alone, which never slide,
+// 371. Both meshes pass the validator (segments as chains, Delaunay, the bound, the area), the
+// slides are Relocated events of vertices on segments, and each diametral rule gets its own fan
+// check (with disks a slide may not leave an encroached subsegment behind: cdt_guitar at 30
+// degrees ran down to the length floor before that check).
+TEST_CASE("at 30 degrees vertices on segments slide too and stagger thin strips", "[refine][optimal]") {
+  using ruppert::EventKind;
+  Plc comb;
+  const int teeth = 10;
+  const double w = 1.0 / (2 * teeth - 1);
+  std::vector<double> ring = {0, 0, 1, 0};
+  for (int i = teeth - 1; i >= 0; --i) {
+    ring.insert(ring.end(), {(2 * i + 1) * w, 1, 2 * i * w, 1});
+    if (i > 0) ring.insert(ring.end(), {2 * i * w, 0.2, (2 * i - 1) * w, 0.2});
+  }
+  comb.points = ring;
+  const std::uint32_t n = static_cast<std::uint32_t>(ring.size() / 2);
+  for (std::uint32_t i = 0; i < n; ++i) comb.segments.insert(comb.segments.end(), {i, (i + 1) % n});
+  Options o;
+  o.minAngle = 30;
+  o.trace = true;
+  const Mesh slid = refineChecked(comb, o, "comb-10");
+  std::size_t slides = 0;
+  for (const ruppert::Event& e : slid.events)
+    if (e.kind == EventKind::Relocated && slid.vertexKinds[e.vertex] == std::uint8_t(ruppert::VertexKind::SegmentSplit)) ++slides;
+  CHECK(slides > 0);
+  o.trace = false;
+  o.placement = ruppert::Placement::OffCenter;
+  const Mesh offCenters = refineChecked(comb, o, "comb-10 off-centers");
+  INFO(slid.triangles.size() / 3 << " triangles with sliding, " << offCenters.triangles.size() / 3 << " with off-centers");
+  CHECK(slid.triangles.size() * 10 <= offCenters.triangles.size() * 9);
+  o.placement = ruppert::Placement::Optimal;
+  o.encroachment = ruppert::Encroachment::DiametralDisk;
+  const Mesh disks = refineChecked(comb, o, "comb-10 disks");
+  CHECK(disks.complete);
+}
+
 // The trace names the point a placement chose: a petal point or an optimal point is its own event
 // kind (never Rejected: both choose only points that encroach nothing), at the vertex it inserted,
 // an off-center vertex; with off-centers and circumcenters neither kind appears. Not every input
