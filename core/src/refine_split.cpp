@@ -228,6 +228,9 @@ bool Refiner::optimalOrRelocate(const BadTriangle& bt, const double* const* p, c
   if (plan_.bestBelowBound)
     for (std::uint32_t v : corners)
       if (relocate(v, bt)) return true;
+  const std::uint32_t ends[2] = {t_.tv[3 * bt.slot + (sh.shortestEdge + 1) % 3], t_.tv[3 * bt.slot + (sh.shortestEdge + 2) % 3]};
+  auto slideAnEnd = [&] { return slideOnSegment(ends[0], bt) || slideOnSegment(ends[1], bt); };
+  if (plan_.slideFirst && slideAnEnd()) return true;
   Location loc;
   switch (optimal_.propose(mesh_, st, cc, x, loc)) {
     case OptimalPlacement::Result::Found:
@@ -238,9 +241,7 @@ bool Refiner::optimalOrRelocate(const BadTriangle& bt, const double* const* p, c
     case OptimalPlacement::Result::None:
       break;
   }
-  const std::uint32_t ends[2] = {t_.tv[3 * bt.slot + (sh.shortestEdge + 1) % 3], t_.tv[3 * bt.slot + (sh.shortestEdge + 2) % 3]};
-  for (std::uint32_t v : ends)
-    if (slideOnSegment(v, bt)) return true;
+  if (!plan_.slideFirst && slideAnEnd()) return true;
   if (!plan_.bestBelowBound) {
     for (std::uint32_t v : ends)
       if (relocate(v, bt)) return true;
