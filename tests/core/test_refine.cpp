@@ -644,10 +644,26 @@ TEST_CASE("at 30 degrees vertices on segments slide too and stagger thin strips"
   o.minAngle = 30;
   o.trace = true;
   const Mesh slid = refineChecked(comb, o, "comb-10");
-  std::size_t slides = 0;
-  for (const ruppert::Event& e : slid.events)
-    if (e.kind == EventKind::Relocated && slid.vertexKinds[e.vertex] == std::uint8_t(ruppert::VertexKind::SegmentSplit)) ++slides;
-  CHECK(slides > 0);
+  std::size_t slides = 0, firstSlide = slid.events.size();
+  for (std::size_t i = 0; i < slid.events.size(); ++i) {
+    const ruppert::Event& e = slid.events[i];
+    if (e.kind != EventKind::Relocated || slid.vertexKinds[e.vertex] != std::uint8_t(ruppert::VertexKind::SegmentSplit)) continue;
+    ++slides, firstSlide = std::min(firstSlide, i);
+  }
+  REQUIRE(slides > 0);
+  // A slide is a step, as a relocation is: maxSteiner k stops right after it, or right before.
+  for (std::size_t k : {firstSlide, firstSlide + 1}) {
+    INFO("budget " << k);
+    Options budget = o;
+    budget.maxSteiner = k;
+    const Mesh step = ruppert::triangulate(comb, budget);
+    REQUIRE(step.events.size() == k);
+    for (std::size_t i = 0; i < k; ++i) {
+      CHECK(step.events[i].kind == slid.events[i].kind);
+      CHECK(step.events[i].x == slid.events[i].x);
+      CHECK(step.events[i].y == slid.events[i].y);
+    }
+  }
   o.trace = false;
   o.placement = ruppert::Placement::OffCenter;
   const Mesh offCenters = refineChecked(comb, o, "comb-10 off-centers");
