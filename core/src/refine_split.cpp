@@ -215,10 +215,12 @@ void Refiner::splitTriangle(const BadTriangle& bt) {
   insertSteiner(bt, target, loc, kind, known);
 }
 
-// Placement::Optimal (optimal_placement.h): insert the locally optimal point if one meets the bound,
-// else move a free endpoint of the shortest edge. With plan_.bestBelowBound, any free corner may
-// move, and before the search; where nothing meets the bound, the best point below it goes in if
-// one qualifies. False: none of these; the first choice goes ahead.
+// Placement::Optimal (optimal_placement.h): slide an endpoint of the shortest edge that lies on a
+// segment along it (first with plan_.slideFirst, else after the search), insert the locally optimal
+// point if one meets the bound, else move a free endpoint of the shortest edge. With
+// plan_.bestBelowBound, any free corner may move, and before the search; where nothing meets the
+// bound, the best point below it goes in if one qualifies. False: none of these; the first choice
+// goes ahead.
 bool Refiner::optimalOrRelocate(const BadTriangle& bt, const double* const* p, const TriangleShape& sh, const double* first) {
   double cc[2], x[2];
   optimal_.forget();
