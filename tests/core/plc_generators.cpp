@@ -55,6 +55,15 @@ double ringArea(const std::vector<double>& xy) {
 
 }  // namespace
 
+void addRing(ruppert::Plc& plc, const std::vector<double>& xy) {
+  const std::uint32_t base = std::uint32_t(plc.points.size() / 2), n = std::uint32_t(xy.size() / 2);
+  plc.points.insert(plc.points.end(), xy.begin(), xy.end());
+  for (std::uint32_t i = 0; i < n; ++i) {
+    plc.segments.push_back(base + i);
+    plc.segments.push_back(base + (i + 1) % n);
+  }
+}
+
 bool segmentsTouch(const double* p, const double* q, const double* r, const double* s) {
   using ruppert::detail::orient2d;
   const double o1 = orient2d(p, q, r), o2 = orient2d(p, q, s), o3 = orient2d(r, s, p), o4 = orient2d(r, s, q);

@@ -82,6 +82,9 @@ ruppert::Plc permuted(const ruppert::Plc& plc, std::uint64_t seed, std::vector<s
 // The PLC plus a copy shifted by (dx, 0).
 ruppert::Plc withShiftedCopy(const ruppert::Plc& plc, double dx);
 
+// Appends a closed ring of segments through the points xy (x0, y0, x1, y1, ...) to plc.
+void addRing(ruppert::Plc& plc, const std::vector<double>& xy);
+
 // True when closed segments pq and rs share a point (exact predicates). Used to keep generated PLCs clean.
 bool segmentsTouch(const double* p, const double* q, const double* r, const double* s);
 

@@ -24,16 +24,6 @@ ruppert::Options cdtOptions() {
 
 Mesh cdt(const Plc& plc, ruppert::Options o = cdtOptions()) { return ruppert::triangulate(plc, o); }
 
-// A closed ring of segments through the points appended to plc.
-void addRing(Plc& plc, std::initializer_list<double> xy) {
-  const std::uint32_t base = std::uint32_t(plc.points.size() / 2), n = std::uint32_t(xy.size() / 2);
-  plc.points.insert(plc.points.end(), xy);
-  for (std::uint32_t i = 0; i < n; ++i) {
-    plc.segments.push_back(base + i);
-    plc.segments.push_back(base + (i + 1) % n);
-  }
-}
-
 void addSquare(Plc& plc, double lo, double hi) { addRing(plc, {lo, lo, hi, lo, hi, hi, lo, hi}); }
 
 ruppert_test::ValidateOptions against(const Plc& plc, double area = -1) {

@@ -623,10 +623,11 @@ TEST_CASE("at 40 degrees vertices on segments slide along them, and that complet
 // the vertices of both sides at the same places, and the strip fills with right triangles; slides
 // stagger them. A comb of ten teeth 1/19 wide and 0.8 long (the per-call benchmark's comb-10): 367
 // triangles at 30 degrees without sliding, 299 sliding after the search for an optimal point, 297
-// sliding first; with off-centers alone, which never slide, 371. Both meshes pass the validator (segments as chains, Delaunay, the bound, the area), the
-// slides are Relocated events of vertices on segments, and each diametral rule gets its own fan
-// check (with disks a slide may not leave an encroached subsegment behind: cdt_guitar at 30
-// degrees ran down to the length floor before that check).
+// sliding first; with off-centers alone, which never slide, 371. All three meshes here pass the
+// validator (segments as chains, Delaunay, the bound, the area), the slides are Relocated events of
+// vertices on segments, and each diametral rule gets its own fan check (with disks a slide may not
+// leave an encroached subsegment behind: cdt_guitar at 30 degrees ran down to the length floor
+// before that check).
 TEST_CASE("at 30 degrees vertices on segments slide too and stagger thin strips", "[refine][optimal]") {
   using ruppert::EventKind;
   Plc comb;
@@ -637,9 +638,7 @@ TEST_CASE("at 30 degrees vertices on segments slide too and stagger thin strips"
     ring.insert(ring.end(), {(2 * i + 1) * w, 1, 2 * i * w, 1});
     if (i > 0) ring.insert(ring.end(), {2 * i * w, 0.2, (2 * i - 1) * w, 0.2});
   }
-  comb.points = ring;
-  const std::uint32_t n = static_cast<std::uint32_t>(ring.size() / 2);
-  for (std::uint32_t i = 0; i < n; ++i) comb.segments.insert(comb.segments.end(), {i, (i + 1) % n});
+  ruppert_test::addRing(comb, ring);
   Options o;
   o.minAngle = 30;
   o.trace = true;
