@@ -55,7 +55,7 @@ struct RefinePlan {
   std::uint64_t triangleCap = 0;  // stop once the mesh has more triangles (0: no cap)
   std::uint64_t used = 0;         // steps (insertions, moves) an earlier run already took (budget)
   // The request's Steiner budget in steps, this run's being budget - used; kAutoSteinerBudget:
-  // steinerBudget() (Options::maxSteiner or the automatic one).
+  // the automatic one, a checkpoint for the size measure's guard (refine_setup.h), not a stop.
   std::uint64_t budget = kAutoSteinerBudget;
   // Replaying the first `budget` steps of a longer run (refine.cpp): at the budget the mesh as it
   // stands, not the push's best mesh so far.

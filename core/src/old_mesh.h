@@ -41,7 +41,7 @@ class OldMesh {
   double boundFor(const double* p0, const double* p1, const double* p2) const;
   // True when the interior of p0 p1 p2 meets the interior of some old triangle.
   bool overlapsAny(const double* p0, const double* p1, const double* p2) const;
-  // About how many vertices the bounds call for (eight per unit of area / bound, as steinerBudget).
+  // About how many vertices the bounds call for (eight per unit of area / bound, as automaticSteinerBudget).
   double budgetEstimate() const { return budget_; }
 
  private:

@@ -47,8 +47,10 @@ bool refinementRequested(const MeshState& m) {
 RefineOutcome Refiner::run() {
   corner_ = acuteCorners(m_);
   const double demand = areaDemand(m_);
-  const std::uint64_t budget = plan_.budget != kAutoSteinerBudget ? plan_.budget : steinerBudget(m_, demand);
+  const std::uint64_t budget = plan_.budget != kAutoSteinerBudget ? plan_.budget : automaticSteinerBudget(m_, demand);
   budget_ = budget > plan_.used ? budget - plan_.used : 0;
+  guarded_ = plan_.budget == kAutoSteinerBudget;
+  automatic_ = budget;
   reserveForAreaBounds(m_, budget_, demand);
   // Initial queues: every subsegment and every triangle (linear in the mesh size, §6.3).
   for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
@@ -334,16 +336,17 @@ RefineOutcome replayStaged(MeshState& m, const StagedPath& path, std::uint64_t k
 // from the start, stopped at k. (Budgeting each stage instead would take another way: a 33-degree
 // mesh done within k steps and a direct attempt cut short by the budget lead to the push.)
 RefineOutcome refine(MeshState& m) {
-  if (!(m.options->minAngle > kStagedAboveDegrees)) return Refiner(m, RefinePlan::direct(m.options->minAngle)).run();
+  if (!(m.options->minAngle > kStagedAboveDegrees))
+    return Refiner(m, RefinePlan::direct(m.options->minAngle, m.options->maxSteiner)).run();
   const double demand = areaDemand(m);
   const std::uint64_t automatic = automaticSteinerBudget(m, demand);
   const std::uint64_t k = std::min(m.options->maxSteiner, automatic);
   StagedPath path;
-  if (k == automatic) return refineStaged(m, steinerBudget(m, demand), path);
+  if (k == automatic) return refineStaged(m, m.options->maxSteiner, path);  // automatic: guarded
   // A budget of 0 inserts nothing, on every way: no need to know which.
   if (k == 0) return Refiner(m, RefinePlan::direct(m.options->minAngle, 0)).run();
   MeshState start = m;
-  RefineOutcome out = refineStaged(m, automatic, path);
+  RefineOutcome out = refineStaged(m, kAutoSteinerBudget, path);
   if (path.steps <= k) return out;
   m = std::move(start);
   return replayStaged(m, path, k);

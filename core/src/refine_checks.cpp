@@ -7,6 +7,8 @@
 
 #include "old_mesh.h"
 #include "predicates.h"
+#include "refine_setup.h"
+#include "cold_code.h"
 
 namespace ruppert::detail {
 
@@ -95,13 +97,27 @@ void Refiner::checkTriangle(std::uint32_t s) {
 // The loop also stops once k are in (outOfBudget), so any k > 0 gives the first k insertions of
 // the unbounded run.
 bool Refiner::mayInsert() {
-  if (inserted_ < budget_) return true;
+  if (inserted_ < budget_ || extendBudget()) return true;
   budgetHit_ = true;
   return false;
 }
 
+RUPPERT_COLD_BEGIN
+bool Refiner::extendBudget() {
+  if (!guarded_ || guardStopped_) return false;
+  const std::uint64_t steps = plan_.used + inserted_;
+  const std::uint64_t next = nextGuardCheckpoint(m_, automatic_, steps, guardIntegral_);
+  if (next == 0) {
+    guardStopped_ = true;
+    return false;
+  }
+  budget_ = next - plan_.used;
+  return true;
+}
+RUPPERT_COLD_END
+
 bool Refiner::outOfBudget() {
-  if (inserted_ >= budget_) {
+  if (inserted_ >= budget_ && !extendBudget()) {
     budgetHit_ = true;
     return true;
   }

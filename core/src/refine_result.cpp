@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cold_code.h"
+#include "refine_setup.h"
 
 // Runs once per refinement: compiled for size (cold_code.h).
 RUPPERT_COLD_BEGIN
@@ -31,6 +32,16 @@ Refiner::Unmet Refiner::countUnmet() const {
     else ++u.otherSkinny, u.minSin2 = std::min(u.minSin2, q.sin2MinAngle);
   }
   return u;
+}
+
+std::string Refiner::guardMessage(std::uint64_t unmet) const {
+  char measure[64];
+  std::snprintf(measure, sizeof measure, "%.4g", guardIntegral_);
+  return "refinement stopped after " + std::to_string(plan_.used + inserted_) +
+         " steps, more than the automatic budget plus " + std::to_string(int(kGuardStepsPerLfsUnit)) +
+         " per unit of the size measure (the integral of 1/lfs^2 over the domain, " + measure +
+         ", section 6.5): it is not converging; " + std::to_string(unmet) +
+         " triangle(s) do not meet the bounds (maxSteiner sets a budget instead)";
 }
 
 std::string Refiner::unreachableMessage(std::uint64_t unmet, double reached) const {
@@ -70,7 +81,9 @@ void Refiner::finish() {
     // ran into the precision floor: the mesh returned is complete (a single triangle in a
     // 0.86-degree input angle, 1e6 from the origin, with an area bound, was marked unreachable).
     if (unmet > 0) add(ReasonKind::AngleUnreachable, unmet, unreachableMessage(unmet, out_.reachedAngle));
-  } else if (budgetHit_)
+  } else if (budgetHit_ && guardStopped_)
+    add(ReasonKind::SteinerBudget, unmet, guardMessage(unmet));
+  else if (budgetHit_)
     add(ReasonKind::SteinerBudget, unmet, "the Steiner budget of " + std::to_string(budget_ + plan_.used) +
                                               " vertices was reached; " + std::to_string(unmet) +
                                               " triangle(s) do not meet the bounds");

@@ -91,6 +91,11 @@ class Refiner {
     std::uint64_t rejected = 0;
   } best_;
   std::uint64_t budget_ = 0, inserted_ = 0;
+  // The automatic budget's checkpoints (nextGuardCheckpoint): whether this run has them, the first
+  // one, and the size measure the last one estimated.
+  bool guarded_ = false, guardStopped_ = false;
+  std::uint64_t automatic_ = 0;
+  double guardIntegral_ = 0;
   std::uint64_t steps_ = 0;  // steps (insertions, moves) in the mesh run() returns
   bool cancelled_ = false, budgetHit_ = false;
   std::uint64_t floorHits_ = 0;  // insertions refused at the precision limit
@@ -197,6 +202,10 @@ class Refiner {
   bool mayInsert();
 
   bool outOfBudget();
+  // At the budget: with the automatic one, whether the refinement may go on (budget_ raised to the
+  // next checkpoint); false to stop.
+  bool extendBudget();
+  std::string guardMessage(std::uint64_t unmet) const;
 
   // ---- forbidden splits (Options::noBoundarySteiner, noSegmentSteiner) ---------------------------
   // Such a subsegment is never split. A point that encroaches it, lies beyond it or on it is not

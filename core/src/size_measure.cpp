@@ -146,32 +146,80 @@ class FeatureGrid {
   }
 };
 
+// area / (mean lfs of the corners)^2 is a fair quadrature only where the triangle is small beside
+// lfs; a triangle longer than half its corners' smallest lfs (a coarse mesh, before refinement has
+// reached the features) that is worth over a unit is cut in four at its edges' midpoints, up to
+// `depth` times. Without this,
+// long triangles of an early mesh whose corners sit near features counted a tiny lfs over their
+// whole area: 40 times the integral of the refined mesh.
+constexpr int kSubdivisions = 6;
+
+double subdividedIntegral(FeatureGrid& grid, const double* const p[3], const double f[3], int depth) {
+  double longest2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double dx = p[i][0] - p[(i + 1) % 3][0], dy = p[i][1] - p[(i + 1) % 3][1];
+    longest2 = std::max(longest2, dx * dx + dy * dy);
+  }
+  const double least = std::min({f[0], f[1], f[2]});
+  const double mean = (f[0] + f[1] + f[2]) / 3;
+  const double area =
+      0.5 * std::fabs((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]));
+  const double estimate = mean > 0 && mean < HUGE_VAL ? area / (mean * mean) : 0;
+  // A piece worth under a unit is kept as it is: the cuts are for the few large triangles whose
+  // estimate could be far off, not for the slivers of a dense mesh (bounded work).
+  if (depth == 0 || !(4 * longest2 > least * least) || !(estimate > 1)) return estimate;
+  double mid[3][2], fm[3];
+  for (int i = 0; i < 3; ++i) {
+    const double* a = p[(i + 1) % 3];
+    const double* b = p[(i + 2) % 3];
+    mid[i][0] = 0.5 * (a[0] + b[0]), mid[i][1] = 0.5 * (a[1] + b[1]);  // opposite corner i
+    fm[i] = grid.lfs(mid[i]);
+  }
+  double sum = 0;
+  for (int i = 0; i < 3; ++i) {  // the corner triangles: corner i and the midpoints beside it
+    const double* q[3] = {p[i], mid[(i + 2) % 3], mid[(i + 1) % 3]};
+    const double g[3] = {f[i], fm[(i + 2) % 3], fm[(i + 1) % 3]};
+    sum += subdividedIntegral(grid, q, g, depth - 1);
+  }
+  const double* q[3] = {mid[0], mid[1], mid[2]};
+  return sum + subdividedIntegral(grid, q, fm, depth - 1);
+}
+
 }  // namespace
 
-double estimateLfsIntegral(const MeshState& m) {
+double estimateLfsIntegral(const MeshState& m, double reuseBelow) {
   const Triangulation& t = m.tri;
   FeatureGrid grid(m);
-  std::vector<double> lfs(t.vertexCount(), -1);
+  // Per vertex: lfs, queried or passed on from a neighbour's, and how far it may be off (the length
+  // of the edges it was passed along: lfs is 1-Lipschitz).
+  std::vector<double> lfs(t.vertexCount(), -1), slack(t.vertexCount(), 0);
   double integral = 0;
   for (std::uint32_t s = 0; s < t.slotCount(); ++s) {
     if (!t.alive(s)) continue;
     const double* p[3] = {t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2])};
-    // lfs is 1-Lipschitz: in a triangle 50 times smaller than the lfs known at one of its vertices,
-    // the other vertices' lfs differ from it by under 2%; skip their (costlier) grid queries.
-    double known = -1;
-    for (int i = 0; i < 3; ++i) known = std::max(known, lfs[t.tv[3 * s + i]]);
     double longest = 0;
     for (int i = 0; i < 3; ++i)
       longest = std::max(longest, std::hypot(p[i][0] - p[(i + 1) % 3][0], p[i][1] - p[(i + 1) % 3][1]));
-    double mean = 0;
+    // A corner's value passes to the others (no costlier grid query) while the distance it has
+    // come stays under reuseBelow times it: their lfs then differ from it by less than that fraction.
+    int from = -1;
     for (int i = 0; i < 3; ++i) {
       const std::uint32_t v = t.tv[3 * s + i];
-      if (lfs[v] < 0) lfs[v] = known > 0 && longest < 0.02 * known ? known : grid.lfs(t.pt(v));
-      mean += lfs[v] / 3;
+      if (lfs[v] > 0 && slack[v] + longest < reuseBelow * lfs[v] && (from < 0 || slack[v] < slack[t.tv[3 * s + from]]))
+        from = i;
     }
-    const double area =
-        0.5 * std::fabs((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]));
-    if (mean > 0 && mean < HUGE_VAL) integral += area / (mean * mean);
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t v = t.tv[3 * s + i];
+      if (lfs[v] >= 0) continue;
+      if (from >= 0) {
+        const std::uint32_t u = t.tv[3 * s + from];
+        lfs[v] = lfs[u], slack[v] = slack[u] + longest;
+      } else {
+        lfs[v] = grid.lfs(t.pt(v));
+      }
+    }
+    const double f[3] = {lfs[t.tv[3 * s]], lfs[t.tv[3 * s + 1]], lfs[t.tv[3 * s + 2]]};
+    integral += subdividedIntegral(grid, p, f, kSubdivisions);
   }
   return integral;
 }

@@ -238,6 +238,25 @@ GeneratedPlc crossingClusters(std::uint64_t seed, double decades) {
   return g;
 }
 
+GeneratedPlc nearCollinearSliver(std::uint64_t seed) {
+  Draw draw(seed);
+  GeneratedPlc g;
+  const double sx = roundToGrid(draw.unit() * 4 - 2), sy = roundToGrid(draw.unit() * 4 - 2);
+  const double width = 1e-4 + 2e-4 * draw.unit();
+  const std::uint64_t inner = 1 + draw.below(3);
+  // Points: the left end, the chain's inner points from left to right, the right end, the apex.
+  g.plc.points = {-1 + sx, sy};
+  for (std::uint64_t k = 0; k < inner; ++k) {
+    const double x = -1 + 2 * (k + 0.25 + 0.5 * draw.unit()) / double(inner);
+    g.plc.points.insert(g.plc.points.end(), {x + sx, width * (0.7 + 0.6 * draw.unit()) + sy});
+  }
+  g.plc.points.insert(g.plc.points.end(), {1 + sx, sy, sx, -0.3 - 0.4 * draw.unit() + sy});
+  const std::uint32_t right = std::uint32_t(inner + 1), apex = right + 1;
+  for (std::uint32_t v = 0; v < right; ++v) g.plc.segments.insert(g.plc.segments.end(), {v, v + 1});
+  g.plc.segments.insert(g.plc.segments.end(), {right, apex, apex, 0, 0, right});
+  return g;
+}
+
 GeneratedPlc nearOverlaps(std::uint64_t seed) {
   Draw draw(seed);
   GeneratedPlc g;

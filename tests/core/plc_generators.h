@@ -67,6 +67,12 @@ GeneratedPlc crossingClusters(std::uint64_t seed, double decades);
 // (area = 0, not computed).
 GeneratedPlc nearOverlaps(std::uint64_t seed);
 
+// A segment from (-1, 0) to (1, 0) under a chain of 2 to 4 boundary edges from (-1, 0) to (1, 0)
+// whose inner points sit 1e-4 to 3e-4 above it (nearly collinear), closed below by an apex at
+// (0, -0.3..-0.7): a sliver that needs tens of thousands of triangles at 30 degrees, with input
+// angles of about 1e-4 rad at both ends. Shifted by up to 2 (area = 0, not computed).
+GeneratedPlc nearCollinearSliver(std::uint64_t seed);
+
 // An nx-by-ny grid of points spaced `step` apart with the grid's boundary as segments between
 // neighbouring boundary points (so every boundary side is a chain of collinear points), plus, when
 // `crossLines` is set, the middle row and column as chains of segments. Every unit cell's corners are

@@ -469,6 +469,45 @@ TEST_CASE("the automatic Steiner budget lets a star of 80 crossing chords comple
   CHECK(mesh.stats.intersectionVertices > 2500);
 }
 
+// A sliver under a nearly collinear chain (CDT's hanging3 is one) needs far more vertices than its
+// five or six input points suggest: a fixed count of 10,000 + 200 per point stopped every one of these
+// incomplete, at 0.01-degree triangles. The automatic budget is now a checkpoint, past which the
+// refinement goes on while it stays within a multiple of the size measure (§6.5).
+TEST_CASE("slivers under nearly collinear chains complete at 30 and 33 degrees with the automatic budget", "[refine]") {
+  int pastFirstCheckpoint = 0;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const Plc plc = ruppert_test::nearCollinearSliver(seed).plc;
+    for (double angle : {30.0, 33.0}) {
+      Options o;
+      o.minAngle = angle;
+      const Mesh mesh = refineChecked(plc, o, "sliver, seed " + std::to_string(seed));
+      INFO("seed " << seed << " at " << angle << ": " << mesh.stats.vertices << " vertices");
+      for (const auto& r : mesh.reasons) INFO(r.message);
+      CHECK(mesh.complete);
+      pastFirstCheckpoint += mesh.stats.vertices > 10000 + 200 * plc.points.size() / 2;
+    }
+  }
+  CHECK(pastFirstCheckpoint >= 5);
+}
+
+// Circumcenters with closed diametral disks at 34 degrees, just under the limit of Fig. 6.9, keep
+// splitting a gear's teeth: unbounded, this one runs to 2.6 million vertices and ends incomplete
+// anyway (6 s). The guard stops it once its steps pass 64 per unit of the size measure.
+TEST_CASE("the automatic budget stops a refinement that is not converging, and says why", "[refine]") {
+  const Plc plc = ruppert_test::familyMember(*ruppert_test::findShapeFamily("gear"), 12).plc;
+  Options o;
+  o.minAngle = 34;
+  o.placement = ruppert::Placement::Circumcenter;
+  o.encroachment = ruppert::Encroachment::DiametralDisk;
+  const Mesh mesh = ruppert::triangulate(plc, o);
+  INFO(mesh.stats.vertices << " vertices");
+  CHECK_FALSE(mesh.complete);
+  REQUIRE_FALSE(mesh.reasons.empty());
+  CHECK(mesh.reasons[0].kind == ruppert::ReasonKind::SteinerBudget);
+  CHECK(mesh.reasons[0].message.find("size measure") != std::string::npos);
+  CHECK(mesh.stats.vertices < 500000);
+}
+
 // A fuzz_mesh finding at 30 degrees (circumcenters, convex hull, automatic holes): a piece of a
 // segment starting at a rounded crossing was recovered as one edge passing a hair beside an input
 // point that lies exactly on the segment; the 675th insertion split that edge and left the stretch

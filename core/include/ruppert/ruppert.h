@@ -192,8 +192,9 @@ struct Options {
   double maxArea = 0.0;  // <= 0: no global area bound
   // Optional size field: max triangle area at (x, y); return <= 0 or +inf for "no bound here".
   std::function<double(double x, double y)> sizeFunction;
-  // Budget of Steiner vertices. kAutoSteinerBudget: a default proportional to the input that
-  // reasonable inputs never reach. Running out is not an error: complete becomes false.
+  // Budget of Steiner vertices. kAutoSteinerBudget: no fixed count; refinement stops only once its
+  // vertices exceed a multiple of the chapter's size measure (§6.5), i.e. when it is not converging.
+  // Running out is not an error: complete becomes false.
   std::uint64_t maxSteiner = kAutoSteinerBudget;
   Placement placement = Placement::Optimal;  // the fewest triangles, and 35-40 degrees
   Encroachment encroachment = Encroachment::DiametralLens;
