@@ -93,7 +93,9 @@ void Refiner::finish() {
             " split(s) of subsegments were refused because " +
             (o_.noSegmentSteiner ? "no new vertex may lie on a segment" : "no new vertex may lie on the domain's boundary") +
             " (no-segment-steiner / no-boundary-steiner), and the vertices that would have caused them were not inserted");
-  else if (unmet > 0 || floorHits_ > 0)
+  // Refused insertions that leave every bound met (a split of an encroached subsegment that no
+  // bad triangle waits on) leave nothing unmet: the mesh is complete.
+  else if (unmet > 0)
     add(ReasonKind::PrecisionFloor, unmet,
         std::to_string(unmet) + " triangle(s) could not be improved: " + std::to_string(floorHits_) +
             " insertion(s) were refused because the new vertex would be closer than double precision can "

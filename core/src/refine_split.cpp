@@ -69,16 +69,21 @@ bool Refiner::subsegmentSplitPoint(std::uint32_t h, const double* pa, const doub
   // On a subsegment with no triangle beyond it, a split point rounded to the outside can land in
   // another part of the domain across an exterior sliver thinner than the rounding (found by
   // fuzzing, tests/hostile/boundary-split-rounded-across-an-exterior-sliver.poly: two segments
-  // 1e-7 rad apart bounding a hole). Move it an ulp at a time onto the
-  // domain's side, the left of a -> b.
+  // 1e-7 rad apart bounding a hole). Move it onto the domain's side, the left of a -> b, along the
+  // normal by 2^-53 to 2^-48 of the segment's length or its endpoints' magnitude, whichever is
+  // larger (that magnitude bounds the rounding), doubling per try. Never by an ulp of the point's
+  // own coordinates: a midpoint of (c, y1)-(-c, y2) has x = 0, whose ulp is a subnormal that no
+  // output can hold, and the split would be refused.
   if (t_.twin[h] == kNone) {
-    const double towardsX = pa[1] - pb[1], towardsY = pb[0] - pa[0];
-    for (int step = 0;; ++step) {
+    const double nx = pa[1] - pb[1], ny = pb[0] - pa[0];  // length len, pointing left
+    const double reach = std::max({std::fabs(pa[0]), std::fabs(pa[1]), std::fabs(pb[0]), std::fabs(pb[1])});
+    const double x0 = x, y0 = y;
+    double t = 0x1p-53 * std::max(1.0, reach / len);
+    for (int step = 0;; ++step, t *= 2) {
       const double p[2] = {x, y};
       if (orient2d(pa, pb, p) >= 0) break;
-      if (step == 4) return false;
-      x = std::nextafter(x, towardsX > 0 ? HUGE_VAL : towardsX < 0 ? -HUGE_VAL : x);
-      y = std::nextafter(y, towardsY > 0 ? HUGE_VAL : towardsY < 0 ? -HUGE_VAL : y);
+      if (step == 6) return false;
+      x = x0 + t * nx, y = y0 + t * ny;
     }
   }
   xy[0] = x, xy[1] = y;

@@ -156,6 +156,54 @@ GeneratedPlc randomStarPolygon(std::uint64_t seed, std::size_t n, std::size_t ho
   return g;
 }
 
+namespace {
+
+// A star-shaped ring of n vertices (n a multiple of 4) around the origin: vertex k in the k-th of
+// n equal sectors, so the axes are sector boundaries and the edges across them are known.
+std::vector<double> centredRing(Draw& draw, std::size_t n, double rMin, double rMax) {
+  std::vector<double> ring;
+  for (std::size_t k = 0; k < n; ++k) {
+    // A direction in the quarter of the circle that s (a fraction of the turn) lies in:
+    // (1 - t^2, 2t) / (1 + t^2), at angle 2 atan(t) into that quarter, for t in [0, 1).
+    const double s = (double(k) + 0.1 + 0.8 * draw.unit()) / double(n);
+    const std::size_t quarter = std::size_t(4 * s);
+    const double t = 4 * s - double(quarter);
+    const double c = (1 - t * t) / (1 + t * t), si = 2 * t / (1 + t * t);
+    const double r = rMin + (rMax - rMin) * draw.unit();
+    const double dx[4] = {c, -si, -c, si}, dy[4] = {si, c, -si, -c};
+    ring.push_back(r * dx[quarter]);
+    ring.push_back(r * dy[quarter]);
+  }
+  // The four edges across the axes: from vertex k - 1 to k where k = 0, n/4, n/2, 3n/4. Moving
+  // both ends' crossing coordinate to the smaller magnitude keeps each vertex in its sector.
+  for (std::size_t q = 0; q < 4; ++q) {
+    const std::size_t k = q * n / 4, j = (k + n - 1) % n;
+    const std::size_t axis = q % 2 == 0 ? 1 : 0;  // y crosses 0 at k = 0 and n/2, x at n/4, 3n/4
+    const double m = std::min(std::fabs(ring[2 * j + axis]), std::fabs(ring[2 * k + axis]));
+    ring[2 * j + axis] = std::copysign(m, ring[2 * j + axis]);
+    ring[2 * k + axis] = std::copysign(m, ring[2 * k + axis]);
+  }
+  return ring;
+}
+
+}  // namespace
+
+GeneratedPlc originCentredOutline(std::uint64_t seed, std::size_t n, bool hole) {
+  Draw draw(seed);
+  n = std::max<std::size_t>((n + 3) / 4 * 4, 8);
+  GeneratedPlc g;
+  const std::vector<double> outer = centredRing(draw, n, 0.7, 1.3);
+  addRing(g.plc, outer);
+  g.area = ringArea(outer);
+  if (hole) {
+    const std::vector<double> inner = centredRing(draw, 8, 0.1, 0.2);
+    addRing(g.plc, inner);
+    g.plc.holes = {0, 0};
+    g.area -= ringArea(inner);
+  }
+  return g;
+}
+
 GeneratedPlc randomNonCrossingSegments(std::uint64_t seed, std::size_t attempts) {
   Draw draw(seed);
   GeneratedPlc g;
@@ -381,6 +429,13 @@ ruppert::Plc rotated90(const ruppert::Plc& plc) {
     const double oldX = x;
     x = -y;
     y = oldX;
+  });
+}
+
+ruppert::Plc mirrored(const ruppert::Plc& plc, bool flipX, bool flipY) {
+  return mapped(plc, [&](double& x, double& y) {
+    if (flipX) x = -x;
+    if (flipY) y = -y;
   });
 }
 

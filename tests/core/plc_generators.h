@@ -33,6 +33,14 @@ GeneratedPlc randomPointSet(std::uint64_t seed, std::size_t n);
 // with up to `holes` small square holes inside it (each with a hole seed at its centre).
 GeneratedPlc randomStarPolygon(std::uint64_t seed, std::size_t n, std::size_t holes);
 
+// A map-like outline centred on the origin: a star-shaped ring of n (rounded up to a multiple of 4,
+// at least 8) vertices at radii 0.7 to 1.3 and, with `hole`, an 8-vertex hole ring at radii 0.1 to
+// 0.2 around the origin (its seed at the origin). Coordinates use every bit of a double (not dyadic),
+// and each ring edge that crosses an axis runs from (+c, y1) to (-c, y2) (or (x1, +c) to (x2, -c)),
+// so its midpoint lies on the axis and the rest of it rounds. No trigonometric functions: the
+// directions come from the rational parametrisation of the circle, the same bits everywhere.
+GeneratedPlc originCentredOutline(std::uint64_t seed, std::size_t n, bool hole);
+
 // The unit square's boundary and random segments strictly inside it, drawn `attempts` times and kept
 // only when they touch no segment kept so far (not even at an endpoint).
 GeneratedPlc randomNonCrossingSegments(std::uint64_t seed, std::size_t attempts);
@@ -83,6 +91,7 @@ GeneratedPlc gridPlc(std::size_t nx, std::size_t ny, double step = 1.0, bool cro
 ruppert::Plc scaled(const ruppert::Plc& plc, double factor);             // points, holes, region seeds
 ruppert::Plc translated(const ruppert::Plc& plc, double dx, double dy);
 ruppert::Plc rotated90(const ruppert::Plc& plc);                         // (x, y) -> (-y, x)
+ruppert::Plc mirrored(const ruppert::Plc& plc, bool flipX, bool flipY);  // x -> -x and/or y -> -y
 // Points permuted (newIndex[old] gives the new index) and segments reversed in order.
 ruppert::Plc permuted(const ruppert::Plc& plc, std::uint64_t seed, std::vector<std::uint32_t>* newIndex);
 // The PLC plus a copy shifted by (dx, 0).

@@ -417,6 +417,22 @@ TEST_CASE("chords crossing at small angles refine to completion with a modest ve
 // Bowyer-Watson cavity swallowed every triangle around that point, which vanished; and a boundary
 // subsegment's rounded midpoint fell across an exterior sliver 1e-7 rad wide into the triangles on
 // its far side, which the new triangles then overlapped.
+// Three points, the third 1e-15 above the midpoint of the others (tests/hostile/segment-split-next-
+// to-a-sliver-apex.poly): the hull edge below it is encroached, but its split point would lie 1e-15
+// from the apex and is refused. The one triangle left sits in the hull's input angles, exempt: nothing
+// is unmet, so the refused split must not make the mesh incomplete.
+TEST_CASE("a refused split that leaves every bound met does not make the mesh incomplete", "[refine]") {
+  Plc plc;
+  plc.points = {0, 0, 1, 0, 0.5, 1e-15};
+  for (double angle : {30.0, 33.0}) {
+    Options o;
+    o.minAngle = angle;
+    const Mesh mesh = refineChecked(plc, o, "a sliver 1e-15 high");
+    CHECK(mesh.complete);
+    for (const ruppert::Reason& r : mesh.reasons) CHECK(r.kind == ruppert::ReasonKind::SmallInputAngle);
+  }
+}
+
 TEST_CASE("insertions a hair from a vertex or across a sliver keep the mesh valid", "[refine]") {
   const std::string dir = hostileDir();
   const std::pair<const char*, std::vector<std::uint64_t>> cases[] = {
