@@ -262,6 +262,8 @@ void orderForInsertion(const std::vector<double>& xy, const std::vector<std::uin
   // Renumber: internal vertex k is the k-th point inserted.
   out.inputIndex = std::move(order);
   const std::uint32_t d = out.distinctCount();
+  // With room for a plain CDT's other vertices: buildDelaunay takes this array as it is.
+  out.xy.reserve(2 * (std::size_t(d) + kCdtExtraVertices));
   out.xy.resize(2 * std::size_t(d));
   std::vector<std::uint32_t> internalOf(n, 0);
   for (std::uint32_t k = 0; k < d; ++k) {

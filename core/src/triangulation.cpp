@@ -1,5 +1,7 @@
 #include "triangulation.h"
 
+#include <utility>
+
 #include "predicates.h"
 
 namespace ruppert::detail {
@@ -10,6 +12,13 @@ std::uint32_t Triangulation::addVertex(double x, double y) {
   vtri.push_back(kNone);
   scratch_.push_back(kNone);
   return vertexCount() - 1;
+}
+
+void Triangulation::adoptVertices(std::vector<double>&& coordinates, std::size_t vertices) {
+  xy = std::move(coordinates);
+  xy.reserve(2 * vertices), vtri.reserve(vertices), scratch_.reserve(vertices);
+  vtri.assign(xy.size() / 2, kNone);
+  scratch_.assign(xy.size() / 2, kNone);
 }
 
 std::uint32_t Triangulation::nextStamp() const {

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace ruppert::detail {
@@ -22,6 +23,12 @@ inline constexpr std::int32_t kHullEdge = -2;  // con[h]: convex-hull or boundin
 // The capacity that scratch lists made once per call (cavities, their boundaries, new triangles)
 // start with: more than most cavities need.
 inline constexpr std::size_t kScratchReserve = 32;
+
+// Frees a vector's memory (assigning {} would keep its capacity).
+template <class Vector>
+void release(Vector& v) {
+  Vector().swap(v);
+}
 
 inline std::uint32_t next3(std::uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; }
 inline std::uint32_t prev3(std::uint32_t h) { return h % 3 == 0 ? h + 2 : h - 1; }
@@ -52,6 +59,9 @@ class Triangulation {
   std::uint32_t apex(std::uint32_t h) const { return tv[h]; }          // vertex opposite h
 
   std::uint32_t addVertex(double x, double y);
+  // Takes `coordinates` (x0,y0,x1,y1,...) as the first vertices, none in the mesh yet, without
+  // copying them, and reserves room for `vertices` in all.
+  void adoptVertices(std::vector<double>&& coordinates, std::size_t vertices);
   // A triangle with no neighbours and no constraints yet, in a free slot if there is one.
   std::uint32_t newTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     std::uint32_t t;
@@ -75,6 +85,12 @@ class Triangulation {
     xy.reserve(2 * vertices), vtri.reserve(vertices), scratch_.reserve(vertices);
     tv.reserve(3 * slots), twin.reserve(3 * slots), con.reserve(3 * slots), mark_.reserve(slots);
   }
+  // Frees what only insertion and search use (the per-slot stamps, the per-vertex fan table).
+  void releaseScratch() { release(mark_), release(scratch_), release(freeSlots); }
+  // The same arrays' memory handed over for output's per-slot and per-vertex maps (their sizes are
+  // the slot and vertex counts; values unspecified): no new pages for them at the output's peak.
+  std::vector<std::uint32_t> takeSlotScratch() { return std::move(mark_); }
+  std::vector<std::uint32_t> takeVertexScratch() { return std::move(scratch_); }
   void killTriangle(std::uint32_t t) {
     tv[3 * t] = tv[3 * t + 1] = tv[3 * t + 2] = kNone;
     freeSlots.push_back(t);
