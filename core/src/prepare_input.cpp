@@ -196,24 +196,28 @@ void mergeDuplicates(const Plc& plc, const std::vector<double>& xy, std::vector<
   }
   const double span = std::max(maxX - minX, maxY - minY);
   const double toGrid = span > 0 ? 65535.0 / span : 0;
-  std::vector<KeyedPoint> sorted(n);
+  std::vector<std::uint64_t> sorted(n);  // key << 32 | index
   for (std::size_t i = 0; i < n; ++i) {
     const double x = xy[2 * i], y = xy[2 * i + 1];
-    sorted[i] = {hilbertKey(static_cast<std::uint32_t>((x - minX) * toGrid), static_cast<std::uint32_t>((y - minY) * toGrid)),
-                 static_cast<std::uint32_t>(i), x, y};
+    const std::uint32_t key = hilbertKey(static_cast<std::uint32_t>((x - minX) * toGrid), static_cast<std::uint32_t>((y - minY) * toGrid));
+    sorted[i] = std::uint64_t(key) << 32 | i;
   }
   // Within a key, by coordinates then index, so identical points are adjacent, lowest index first.
-  sortPoints(sorted);
+  sortByKey(sorted, xy);
   representative.assign(n, 0);
   distinct.clear();
   distinct.reserve(n);
   std::size_t duplicateCount = 0;
+  auto same = [&xy](std::uint64_t a, std::uint64_t b) {
+    const std::size_t i = static_cast<std::uint32_t>(a), j = static_cast<std::uint32_t>(b);
+    return xy[2 * i] == xy[2 * j] && xy[2 * i + 1] == xy[2 * j + 1];
+  };
   for (std::size_t k = 0; k < n;) {
     std::size_t j = k + 1;
-    while (j < n && sorted[j].x == sorted[k].x && sorted[j].y == sorted[k].y) ++j;
-    const std::uint32_t rep = sorted[k].index;
+    while (j < n && same(sorted[j], sorted[k])) ++j;
+    const std::uint32_t rep = static_cast<std::uint32_t>(sorted[k]);
     distinct.push_back(rep);
-    for (std::size_t m = k; m < j; ++m) representative[sorted[m].index] = rep;
+    for (std::size_t m = k; m < j; ++m) representative[static_cast<std::uint32_t>(sorted[m])] = rep;
     duplicateCount += j - k - 1;
     k = j;
   }
