@@ -10,6 +10,7 @@
 
 #include "angle_stats.h"
 #include "boundary_markers.h"
+#include "huge_pages.h"
 #include "jettison.h"
 
 namespace ruppert::detail {
@@ -55,6 +56,7 @@ void writeVertices(const MeshState& m, std::uint32_t outVertices, Mesh& mesh) {
   const Plc& plc = *m.plc;
   const std::uint32_t inputPoints = static_cast<std::uint32_t>(plc.points.size() / 2);
   auto outIndex = [&](std::uint32_t v) { return m.outputMap[v]; };
+  reserveHuge(mesh.points, 2 * std::size_t(outVertices));
   mesh.points.resize(2 * std::size_t(outVertices));
   mesh.vertexKinds.resize(outVertices);
   // Every input point, duplicates included, keeps its coordinates bit-identical; only the lowest index
@@ -116,6 +118,7 @@ std::vector<std::uint32_t> scanTriangles(MeshState& m, Mesh& mesh) {
 void writeTriangleArrays(MeshState& m, const std::vector<std::uint32_t>& slotToTri, Mesh& mesh) {
   Triangulation& t = m.tri;
   const std::uint32_t slots = t.slotCount(), count = mesh.stats.triangles;
+  reserveHuge(mesh.neighbors, 3 * std::size_t(count));
   mesh.neighbors.resize(3 * std::size_t(count));
   for (std::uint32_t s = 0; s < slots; ++s) {
     const std::uint32_t o = slotToTri[s];
@@ -129,6 +132,7 @@ void writeTriangleArrays(MeshState& m, const std::vector<std::uint32_t>& slotToT
   release(t.twin);
   t.tv.resize(3 * std::size_t(count));
   mesh.triangles = std::move(t.tv);
+  reserveHuge(mesh.triangleAttributes, count);
   if (m.attribute.empty()) {
     mesh.triangleAttributes.assign(count, 0.0);
   } else {

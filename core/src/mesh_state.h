@@ -75,12 +75,12 @@ struct MeshState {
 
   // Out of line: one copy of the vectors' growth code for the two callers (build, refinement).
   [[gnu::noinline]] void reserve(std::size_t vertices, std::size_t slots) {
-    kind.reserve(vertices), onSegment.reserve(vertices);
+    kind.reserve(vertices), reserveHuge(onSegment, vertices);
     tri.reserve(vertices, slots);
   }
   // The distinct input points as vertices 0 .. n-1, taking their coordinates without a copy.
   void adoptInputPoints(std::vector<double>&& xy, std::size_t vertices, std::size_t slots) {
-    kind.reserve(vertices), onSegment.reserve(vertices);
+    kind.reserve(vertices), reserveHuge(onSegment, vertices);
     kind.assign(xy.size() / 2, VertexKind::Input), onSegment.assign(xy.size() / 2, -1);
     tri.adoptVertices(std::move(xy), vertices);
     tri.reserve(vertices, slots);

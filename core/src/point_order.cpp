@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "huge_pages.h"
 
 namespace ruppert::detail {
 
@@ -19,7 +20,9 @@ void sortByKey(std::vector<std::uint64_t>& keyed, const std::vector<double>& xy)
   const std::size_t n = keyed.size();
   // Least significant byte of the key first: each pass is stable, so after the fourth the keys are
   // in order and, the index being the low word, each key's points in input order.
-  std::vector<std::uint64_t> buffer(n);
+  std::vector<std::uint64_t> buffer;
+  reserveHuge(buffer, n);
+  buffer.resize(n);
   for (int shift = 32; shift < 64; shift += 8) {
     std::size_t start[257] = {};
     for (std::uint64_t k : keyed) ++start[((k >> shift) & 0xFF) + 1];

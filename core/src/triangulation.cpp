@@ -16,7 +16,7 @@ std::uint32_t Triangulation::addVertex(double x, double y) {
 
 void Triangulation::adoptVertices(std::vector<double>&& coordinates, std::size_t vertices) {
   xy = std::move(coordinates);
-  xy.reserve(2 * vertices), vtri.reserve(vertices), scratch_.reserve(vertices);
+  reserveHuge(xy, 2 * vertices), reserveHuge(vtri, vertices), reserveHuge(scratch_, vertices);
   vtri.assign(xy.size() / 2, kNone);
   scratch_.assign(xy.size() / 2, kNone);
 }

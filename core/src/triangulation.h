@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "huge_pages.h"
 namespace ruppert::detail {
 
 inline constexpr std::uint32_t kNone = 0xFFFFFFFFu;
@@ -82,8 +83,8 @@ class Triangulation {
   // Room for this many vertices and triangle slots without regrowing (a small mesh otherwise spends
   // a sixth of its time growing these arrays from empty one doubling at a time).
   void reserve(std::size_t vertices, std::size_t slots) {
-    xy.reserve(2 * vertices), vtri.reserve(vertices), scratch_.reserve(vertices);
-    tv.reserve(3 * slots), twin.reserve(3 * slots), con.reserve(3 * slots), mark_.reserve(slots);
+    reserveHuge(xy, 2 * vertices), reserveHuge(vtri, vertices), reserveHuge(scratch_, vertices);
+    reserveHuge(tv, 3 * slots), reserveHuge(twin, 3 * slots), reserveHuge(con, 3 * slots), reserveHuge(mark_, slots);
   }
   // Frees what only insertion and search use (the per-slot stamps, the per-vertex fan table).
   void releaseScratch() { release(mark_), release(scratch_), release(freeSlots); }

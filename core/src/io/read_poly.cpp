@@ -33,6 +33,7 @@
 
 #include "ruppert/ruppert.h"
 #include "cold_code.h"
+#include "huge_pages.h"
 
 RUPPERT_COLD_BEGIN
 
@@ -216,7 +217,7 @@ class TriangleReader {
       in_.fail(ErrorCode::TooLarge, header.line, "point count " + std::to_string(n) + " exceeds 2^32 - 1");
     }
     const std::uint64_t room = in_.checkCount(n, 3, header.line, "point");
-    plc.points.reserve(2 * room);
+    detail::reserveHuge(plc.points, 2 * room);
     if (markers) plc.pointMarkers.reserve(room);
     // Attribute columns are kept (Plc::pointAttributes) up to kMaxAttributes per point and 2^27 values
     // in all (missing trailing fields read as 0, as Triangle reads them, so the count alone sets the
@@ -423,7 +424,9 @@ std::string readWholeFile(const std::string& path) {
     file.seekg(0);
     return slurp(file, path);
   }
-  std::string text(static_cast<std::size_t>(size), '\0');
+  std::string text;
+  detail::reserveHuge(text, static_cast<std::size_t>(size));
+  text.resize(static_cast<std::size_t>(size));
   file.read(&text[0], size);
   if (file.bad()) throw Error(ErrorCode::IoError, path + ": read failed");
   text.resize(static_cast<std::size_t>(file.gcount()));
