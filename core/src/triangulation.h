@@ -65,18 +65,23 @@ class Triangulation {
   void adoptVertices(std::vector<double>&& coordinates, std::size_t vertices);
   // A triangle with no neighbours and no constraints yet, in a free slot if there is one.
   std::uint32_t newTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    std::uint32_t t;
     if (!freeSlots.empty()) {
-      t = freeSlots.back();
+      const std::uint32_t t = freeSlots.back();
       freeSlots.pop_back();
-      tv[3 * t] = a, tv[3 * t + 1] = b, tv[3 * t + 2] = c;
-      for (std::uint32_t i = 3 * t; i < 3 * t + 3; ++i) twin[i] = kNone, con[i] = kFree;
-    } else {
-      t = slotCount();
-      tv.push_back(a), tv.push_back(b), tv.push_back(c);
-      for (int i = 0; i < 3; ++i) twin.push_back(kNone), con.push_back(kFree);
-      mark_.push_back(0);
+      return refillTriangle(t, a, b, c);
     }
+    const std::uint32_t t = slotCount();
+    tv.push_back(a), tv.push_back(b), tv.push_back(c);
+    for (int i = 0; i < 3; ++i) twin.push_back(kNone), con.push_back(kFree);
+    mark_.push_back(0);
+    vtri[a] = vtri[b] = vtri[c] = t;
+    return t;
+  }
+  // Slot t (free, or about to be: a cavity's) becomes the triangle a, b, c with no neighbours and
+  // no constraints yet.
+  std::uint32_t refillTriangle(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    tv[3 * t] = a, tv[3 * t + 1] = b, tv[3 * t + 2] = c;
+    for (std::uint32_t i = 3 * t; i < 3 * t + 3; ++i) twin[i] = kNone, con[i] = kFree;
     vtri[a] = vtri[b] = vtri[c] = t;
     return t;
   }
