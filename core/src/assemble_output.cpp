@@ -10,6 +10,7 @@
 
 #include "angle_stats.h"
 #include "boundary_markers.h"
+#include "huge_pages.h"
 #include "jettison.h"
 
 namespace ruppert::detail {
@@ -39,6 +40,7 @@ void copyAttributes(const MeshState& m, Mesh& mesh) {
 std::uint32_t numberVertices(MeshState& m) {
   const Triangulation& t = m.tri;
   const std::uint32_t inputPoints = static_cast<std::uint32_t>(m.plc->points.size() / 2);
+  m.outputMap = m.tri.takeVertexScratch();
   m.outputMap.assign(t.vertexCount(), kNone);
   std::uint32_t outVertices = inputPoints;
   for (std::uint32_t v = 0; v < t.vertexCount(); ++v) {
@@ -54,6 +56,7 @@ void writeVertices(const MeshState& m, std::uint32_t outVertices, Mesh& mesh) {
   const Plc& plc = *m.plc;
   const std::uint32_t inputPoints = static_cast<std::uint32_t>(plc.points.size() / 2);
   auto outIndex = [&](std::uint32_t v) { return m.outputMap[v]; };
+  reserveHuge(mesh.points, 2 * std::size_t(outVertices));
   mesh.points.resize(2 * std::size_t(outVertices));
   mesh.vertexKinds.resize(outVertices);
   // Every input point, duplicates included, keeps its coordinates bit-identical; only the lowest index
@@ -75,43 +78,69 @@ void writeVertices(const MeshState& m, std::uint32_t outVertices, Mesh& mesh) {
 
 }
 
-// mesh.triangles, neighbors, segments, segmentIds and triangleAttributes, and the angle statistics.
-void writeTriangles(const MeshState& m, Mesh& mesh) {
-  const Triangulation& t = m.tri;
+// mesh.segments, segmentIds and the angle statistics, in one pass over the slots while the
+// triangulation is whole. Returns each slot's output triangle (kNone for a free slot).
+std::vector<std::uint32_t> scanTriangles(MeshState& m, Mesh& mesh) {
+  Triangulation& t = m.tri;
   auto outIndex = [&](std::uint32_t v) { return m.outputMap[v]; };
-  std::vector<std::uint32_t> slotToTri(t.slotCount(), kNone);
-  std::uint32_t count = 0;
-  for (std::uint32_t s = 0; s < t.slotCount(); ++s)
-    if (t.alive(s)) slotToTri[s] = count++;
-  mesh.triangles.resize(3 * count);
-  mesh.neighbors.resize(3 * count);
-  mesh.triangleAttributes.resize(count);
+  std::vector<std::uint32_t> slotToTri = t.takeSlotScratch();
+  slotToTri.assign(t.slotCount(), kNone);
   // The subsegments number at least the input's segments: room for those and some splits, so that
   // small meshes do not grow these lists from empty (their count is known only after this pass).
   mesh.segments.reserve(m.plc->segments.size() + 64), mesh.segmentIds.reserve(m.plc->segments.size() / 2 + 32);
-  Stats& st = mesh.stats;
   AngleStats angles;
+  std::uint32_t count = 0;
   for (std::uint32_t s = 0; s < t.slotCount(); ++s) {
     if (!t.alive(s)) continue;
-    const std::uint32_t o = slotToTri[s];
-    for (int i = 0; i < 3; ++i) {
-      mesh.triangles[3 * o + i] = outIndex(t.tv[3 * s + i]);
-      const std::uint32_t g = t.twin[3 * s + i];
-      mesh.neighbors[3 * o + i] = g == kNone ? kNoNeighbor : static_cast<std::int32_t>(slotToTri[g / 3]);
-      const std::uint32_t h = 3 * s + i;
+    slotToTri[s] = count++;
+    for (std::uint32_t h = 3 * s; h < 3 * s + 3; ++h) {
+      const std::uint32_t g = t.twin[h];
       if (t.con[h] != kFree && (g == kNone || h < g)) {
         mesh.segments.push_back(outIndex(t.origin(h)));
         mesh.segments.push_back(outIndex(t.dest(h)));
         mesh.segmentIds.push_back(t.con[h] >= 0 ? t.con[h] : kNoInputSegment);
       }
     }
-    mesh.triangleAttributes[o] = m.attribute.empty() ? 0.0 : m.attribute[s];
     angles.add(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2]));
   }
+  Stats& st = mesh.stats;
   st.angleHistogram = angles.takeHistogram();
   st.minAngle = angles.minAngle();
   st.maxAngle = angles.maxAngle();
   st.triangles = count;
+  return slotToTri;
+}
+
+// mesh.triangles, neighbors and triangleAttributes. The triangulation's vertex array becomes
+// mesh.triangles in place (a triangle's output index is never above its slot) and each array goes
+// as soon as it is read: a CDT of 10^6 points would otherwise hold its triangulation and its
+// output, 72 MB and 64 MB, at once.
+void writeTriangleArrays(MeshState& m, const std::vector<std::uint32_t>& slotToTri, Mesh& mesh) {
+  Triangulation& t = m.tri;
+  const std::uint32_t slots = t.slotCount(), count = mesh.stats.triangles;
+  reserveHuge(mesh.neighbors, 3 * std::size_t(count));
+  mesh.neighbors.resize(3 * std::size_t(count));
+  for (std::uint32_t s = 0; s < slots; ++s) {
+    const std::uint32_t o = slotToTri[s];
+    if (o == kNone) continue;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t g = t.twin[3 * s + i];
+      mesh.neighbors[3 * o + i] = g == kNone ? kNoNeighbor : static_cast<std::int32_t>(slotToTri[g / 3]);
+      t.tv[3 * o + i] = m.outputMap[t.tv[3 * s + i]];
+    }
+  }
+  release(t.twin);
+  t.tv.resize(3 * std::size_t(count));
+  mesh.triangles = std::move(t.tv);
+  reserveHuge(mesh.triangleAttributes, count);
+  if (m.attribute.empty()) {
+    mesh.triangleAttributes.assign(count, 0.0);
+  } else {
+    mesh.triangleAttributes.resize(count);
+    for (std::uint32_t s = 0; s < slots; ++s)
+      if (slotToTri[s] != kNone) mesh.triangleAttributes[slotToTri[s]] = m.attribute[s];
+  }
+  release(m.attribute);
 }
 
 // Stats: the vertices by kind.
@@ -131,14 +160,20 @@ void countVertexKinds(Mesh& mesh) {
                 st.intersectionVertices;
 }
 
-// The public Mesh from the state: vertices, attributes, triangles, counts, markers and notices.
+// The public Mesh from the state, which it takes apart: vertices, attributes, triangles, counts,
+// markers and notices.
 Mesh assembleMesh(MeshState& m) {
   Mesh mesh;
   const Plc& plc = *m.plc;
   const std::uint32_t outVertices = numberVertices(m);
+  // Each part of the state goes once read (see writeTriangleArrays).
+  const std::vector<std::uint32_t> slotToTri = scanTriangles(m, mesh);
+  release(m.tri.con), release(m.maxArea), release(m.inDomain);
+  m.tri.releaseScratch();
   writeVertices(m, outVertices, mesh);
   copyAttributes(m, mesh);
-  writeTriangles(m, mesh);
+  release(m.tri.xy), release(m.tri.vtri), release(m.kind), release(m.onSegment), release(m.attributes);
+  writeTriangleArrays(m, slotToTri, mesh);
   countVertexKinds(mesh);
   mesh.indexBase = plc.indexBase;
   mesh.notices = std::move(m.notices);

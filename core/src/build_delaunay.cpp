@@ -8,20 +8,18 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "mesh_state.h"
 #include "predicates.h"
+#include "refine.h"
 
 namespace ruppert::detail {
 
 void buildDelaunay(MeshState& m) {
-  const PreparedInput& in = m.input;
+  PreparedInput& in = m.input;
   const std::uint32_t n = in.distinctCount();
   m.inputCount = n;
-  // The input, the box corners, and as many Steiner vertices again (refinement grows from there).
-  const std::size_t vertices = 2 * (std::size_t(n) + 4) + 16;
-  m.reserve(vertices, 2 * vertices + 8);
-  for (std::uint32_t v = 0; v < n; ++v) m.addVertex(in.xy[2 * v], in.xy[2 * v + 1], VertexKind::Input, -1);
   if (n < 3)
     throw Error(ErrorCode::DegenerateInput, "the input has " + std::to_string(n) +
                                                 " distinct point(s); at least 3 not on one line are needed");
@@ -39,6 +37,12 @@ void buildDelaunay(MeshState& m) {
     const double cx = 0.5 * (minX + maxX), cy = 0.5 * (minY + maxY);
     lo[0] = cx - half, lo[1] = cy - half, hi[0] = cx + half, hi[1] = cy + half;
   }
+  // Refinement grows from twice the input and the box corners. A plain CDT adds only the corners
+  // and its segments' crossings, usually none or few (more still fit: the arrays then grow).
+  const std::size_t vertices =
+      refinementRequested(m) ? 2 * (std::size_t(n) + 4) + 16 : std::size_t(n) + kCdtExtraVertices;
+  // The triangulation takes the prepared coordinates: one copy of the points, not two.
+  m.adoptInputPoints(std::move(in.xy), vertices, 2 * vertices + 8);
   m.boxFirst = m.addVertex(lo[0], lo[1], VertexKind::Unused, -1);
   m.addVertex(hi[0], lo[1], VertexKind::Unused, -1);
   m.addVertex(hi[0], hi[1], VertexKind::Unused, -1);

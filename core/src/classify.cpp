@@ -194,13 +194,11 @@ void assignRegions(MeshState& m, const std::vector<std::uint8_t>& state) {
   Triangulation& t = m.tri;
   const std::uint32_t slots = t.slotCount();
   const Plc& plc = *m.plc;
-  m.attribute.assign(slots, 0.0);
-  m.maxArea.assign(slots, m.input.maxArea);
   struct Part {
     double attribute = 0, maxArea = 0;
   };
   std::vector<Part> parts;
-  std::vector<std::uint32_t> partOf(slots, kNone);
+  std::vector<std::uint32_t> partOf(m.input.regions.empty() ? 0 : slots, kNone);
   std::uint32_t hint = kNone;
   for (std::size_t k = 0; k < m.input.regions.size(); ++k) {
     const Region& r = m.input.regions[k];
@@ -220,12 +218,16 @@ void assignRegions(MeshState& m, const std::vector<std::uint8_t>& state) {
     part.attribute = r.attribute;
     if (r.maxArea > 0) part.maxArea = part.maxArea > 0 ? std::min(part.maxArea, r.maxArea) : r.maxArea;
   }
-  // Nothing per slot to remember: MeshState::maxAreaOf stands for the arrays (the bounding-box
-  // variant's outside triangles have no bound, so it keeps them).
+  // Nothing per slot to remember: MeshState::maxAreaOf stands for the arrays, which are then never
+  // filled (16 bytes per slot, 32 MB for a CDT of 10^6 points). The bounding-box variant's outside
+  // triangles have no bound, so it keeps them.
   if (parts.empty() && m.options->variant != Variant::BoundingBox) {
-    m.attribute.clear(), m.maxArea.clear();
+    release(m.attribute), release(m.maxArea);
     return;
   }
+  m.attribute.assign(slots, 0.0);
+  m.maxArea.assign(slots, m.input.maxArea);
+  if (parts.empty()) return;
   for (std::uint32_t u = 0; u < slots; ++u) {
     if (partOf[u] == kNone) continue;
     const Part& part = parts[partOf[u]];
@@ -265,7 +267,7 @@ void removeOutside(MeshState& m) {
     }
     t.killTriangle(s);
   }
-  m.inDomain.clear();
+  release(m.inDomain);
   for (std::uint32_t v = 0; v < t.vertexCount(); ++v) t.vtri[v] = kNone;
   for (std::uint32_t s = 0; s < slots; ++s)
     if (t.alive(s))

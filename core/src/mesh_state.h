@@ -5,11 +5,12 @@
 //   classify   findDomain, classifyTriangles, removeOutside (classify.cpp), keepOldMeshDomain
 //              (old_mesh.cpp)
 //   refine     refine (refine.cpp and refine_*.cpp: class Refiner, refiner.h)
-//   output     assembleOutput (assemble_output.cpp)
+//   output     assembleOutput (assemble_output.cpp), which takes the state apart
 // Each field says which stages write it ("w:") and which read it ("r:").
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "prepare_input.h"
@@ -74,7 +75,14 @@ struct MeshState {
 
   // Out of line: one copy of the vectors' growth code for the two callers (build, refinement).
   [[gnu::noinline]] void reserve(std::size_t vertices, std::size_t slots) {
-    kind.reserve(vertices), onSegment.reserve(vertices);
+    kind.reserve(vertices), reserveHuge(onSegment, vertices);
+    tri.reserve(vertices, slots);
+  }
+  // The distinct input points as vertices 0 .. n-1, taking their coordinates without a copy.
+  void adoptInputPoints(std::vector<double>&& xy, std::size_t vertices, std::size_t slots) {
+    kind.reserve(vertices), reserveHuge(onSegment, vertices);
+    kind.assign(xy.size() / 2, VertexKind::Input), onSegment.assign(xy.size() / 2, -1);
+    tri.adoptVertices(std::move(xy), vertices);
     tri.reserve(vertices, slots);
   }
   std::uint32_t addVertex(double x, double y, VertexKind k, std::int32_t segment) {

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <string>
 
+#include "huge_pages.h"
 #include "point_order.h"
 #include "predicates.h"
 
@@ -163,7 +164,9 @@ std::vector<double> scaleInput(const Plc& plc, const Options& options, double ma
                formatNumber(maxAbs) + "; exact arithmetic cannot resolve such a range");
     return s;
   };
-  std::vector<double> xy(2 * n);  // every input point, scaled, in input order
+  std::vector<double> xy;  // every input point, scaled, in input order
+  reserveHuge(xy, 2 * n);
+  xy.resize(2 * n);
   for (std::size_t i = 0; i < n; ++i) {
     xy[2 * i] = scaled(plc.points[2 * i], "points", i, ".x");
     xy[2 * i + 1] = scaled(plc.points[2 * i + 1], "points", i, ".y");
@@ -196,24 +199,31 @@ void mergeDuplicates(const Plc& plc, const std::vector<double>& xy, std::vector<
   }
   const double span = std::max(maxX - minX, maxY - minY);
   const double toGrid = span > 0 ? 65535.0 / span : 0;
-  std::vector<KeyedPoint> sorted(n);
+  std::vector<std::uint64_t> sorted;  // key << 32 | index
+  reserveHuge(sorted, n);
+  sorted.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const double x = xy[2 * i], y = xy[2 * i + 1];
-    sorted[i] = {hilbertKey(static_cast<std::uint32_t>((x - minX) * toGrid), static_cast<std::uint32_t>((y - minY) * toGrid)),
-                 static_cast<std::uint32_t>(i), x, y};
+    const std::uint32_t key = hilbertKey(static_cast<std::uint32_t>((x - minX) * toGrid), static_cast<std::uint32_t>((y - minY) * toGrid));
+    sorted[i] = std::uint64_t(key) << 32 | i;
   }
   // Within a key, by coordinates then index, so identical points are adjacent, lowest index first.
-  sortPoints(sorted);
+  sortByKey(sorted, xy);
+  reserveHuge(representative, n);
   representative.assign(n, 0);
   distinct.clear();
-  distinct.reserve(n);
+  reserveHuge(distinct, n);
   std::size_t duplicateCount = 0;
+  auto same = [&xy](std::uint64_t a, std::uint64_t b) {
+    const std::size_t i = static_cast<std::uint32_t>(a), j = static_cast<std::uint32_t>(b);
+    return xy[2 * i] == xy[2 * j] && xy[2 * i + 1] == xy[2 * j + 1];
+  };
   for (std::size_t k = 0; k < n;) {
     std::size_t j = k + 1;
-    while (j < n && sorted[j].x == sorted[k].x && sorted[j].y == sorted[k].y) ++j;
-    const std::uint32_t rep = sorted[k].index;
+    while (j < n && same(sorted[j], sorted[k])) ++j;
+    const std::uint32_t rep = static_cast<std::uint32_t>(sorted[k]);
     distinct.push_back(rep);
-    for (std::size_t m = k; m < j; ++m) representative[sorted[m].index] = rep;
+    for (std::size_t m = k; m < j; ++m) representative[static_cast<std::uint32_t>(sorted[m])] = rep;
     duplicateCount += j - k - 1;
     k = j;
   }
@@ -257,19 +267,26 @@ void orderForInsertion(const std::vector<double>& xy, const std::vector<std::uin
     ++count[round[i] + 1];
   }
   for (int k = 0; k < kRounds; ++k) count[k + 1] += count[k];
-  std::vector<std::uint32_t> order(distinct.size());
+  std::vector<std::uint32_t> order;
+  reserveHuge(order, distinct.size());
+  order.resize(distinct.size());
   for (std::size_t i = 0; i < distinct.size(); ++i) order[count[round[i]]++] = distinct[i];
   // Renumber: internal vertex k is the k-th point inserted.
   out.inputIndex = std::move(order);
   const std::uint32_t d = out.distinctCount();
+  // With room for a plain CDT's other vertices: buildDelaunay takes this array as it is.
+  reserveHuge(out.xy, 2 * (std::size_t(d) + kCdtExtraVertices));
   out.xy.resize(2 * std::size_t(d));
-  std::vector<std::uint32_t> internalOf(n, 0);
+  std::vector<std::uint32_t> internalOf;
+  reserveHuge(internalOf, n);
+  internalOf.resize(n);
   for (std::uint32_t k = 0; k < d; ++k) {
     const std::uint32_t i = out.inputIndex[k];
     internalOf[i] = k;
     out.xy[2 * std::size_t(k)] = xy[2 * std::size_t(i)];
     out.xy[2 * std::size_t(k) + 1] = xy[2 * std::size_t(i) + 1];
   }
+  reserveHuge(out.representative, n);
   out.representative.resize(n);
   for (std::size_t i = 0; i < n; ++i) out.representative[i] = internalOf[representative[i]];
 }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -13,6 +14,9 @@
 #include "ruppert/ruppert.h"
 
 namespace ruppert::detail {
+
+// Room a plain CDT keeps for vertices beyond the input's: the 4 box corners and a few crossings.
+inline constexpr std::size_t kCdtExtraVertices = 68;
 
 struct PreparedInput {
   // internal coordinate = input coordinate * 2^exponent (exact; ldexp reaches factors beyond the
@@ -34,7 +38,7 @@ struct PreparedInput {
   // Internal vertices 0 .. distinctCount()-1 are the distinct input points, numbered in insertion
   // order (a spatially coherent random order): the triangulation then touches memory in the order it
   // inserts, which matters more than instructions at 10^6 points.
-  std::vector<double> xy;                     // per internal vertex, scaled
+  std::vector<double> xy;                     // per internal vertex, scaled (until buildDelaunay takes it)
   std::vector<std::uint32_t> inputIndex;      // per internal vertex: the lowest input index at its place
   std::vector<std::uint32_t> representative;  // per input point: the internal vertex it became
   std::uint32_t distinctCount() const { return static_cast<std::uint32_t>(inputIndex.size()); }

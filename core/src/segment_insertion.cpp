@@ -389,6 +389,38 @@ class SegmentInserter {
   }
 };
 
+// The points insertHull takes (input points and crossings), less those strictly left of every
+// edge of the polygon through the extreme points in eight directions (Akl and Toussaint): such a
+// point winds inside that polygon, so inside the hull, and is on no hull edge. The chain finds the
+// same hull from what is left, and a plain CDT of 10^6 points sorts a few hundred points instead
+// of all. (Rounded sums only change which points are extreme, never the test's safety.)
+std::vector<KeyedPoint> hullCandidates(const MeshState& m) {
+  const Triangulation& t = m.tri;
+  auto takes = [&m](std::uint32_t v) { return v < m.inputCount || m.kind[v] == VertexKind::Intersection; };
+  // Directions counter-clockwise from west: the extremes lie around the hull in this order.
+  constexpr double dir[8][2] = {{-1, 0}, {-1, -1}, {0, -1}, {1, -1}, {1, 0}, {1, 1}, {0, 1}, {-1, 1}};
+  std::uint32_t ext[8];
+  double best[8];
+  std::fill(ext, ext + 8, kNone), std::fill(best, best + 8, -HUGE_VAL);
+  for (std::uint32_t v = 0; v < t.vertexCount(); ++v) {
+    if (!takes(v)) continue;
+    const double* p = t.pt(v);
+    for (int i = 0; i < 8; ++i)
+      if (const double d = dir[i][0] * p[0] + dir[i][1] * p[1]; d > best[i]) best[i] = d, ext[i] = v;
+  }
+  auto inside = [&](std::uint32_t v) {
+    for (int i = 0; i < 8; ++i) {
+      const std::uint32_t a = ext[i], b = ext[(i + 1) % 8];
+      if (a != b && !(orient2d(t.pt(a), t.pt(b), t.pt(v)) > 0)) return false;
+    }
+    return true;
+  };
+  std::vector<KeyedPoint> kept;
+  for (std::uint32_t v = 0; v < t.vertexCount(); ++v)
+    if (takes(v) && !inside(v)) kept.push_back({0, v, t.xy[2 * v], t.xy[2 * v + 1]});
+  return kept;
+}
+
 }  // namespace
 
 void insertHull(MeshState& m) {
@@ -400,11 +432,8 @@ void insertHull(MeshState& m) {
   // crosses a constrained edge in exact arithmetic. Collinear points on the hull are skipped here
   // and picked up by segment insertion (they split the hull edge).
   // By x then y (one key for all; the vertices' points are distinct).
-  std::vector<KeyedPoint> sorted;
-  sorted.reserve(m.inputCount);
+  std::vector<KeyedPoint> sorted = hullCandidates(m);
   const Triangulation& t = m.tri;
-  for (std::uint32_t v = 0; v < t.vertexCount(); ++v)
-    if (v < m.inputCount || m.kind[v] == VertexKind::Intersection) sorted.push_back({0, v, t.xy[2 * v], t.xy[2 * v + 1]});
   sortPoints(sorted);
   std::vector<std::uint32_t> pts(sorted.size());
   for (std::size_t k = 0; k < sorted.size(); ++k) pts[k] = sorted[k].index;

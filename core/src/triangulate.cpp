@@ -74,6 +74,7 @@ Mesh triangulate(const Plc& userPlc, const Options& options) {
   Domain domain = findDomain(m);
   if (hullCanStandIn(m, domain)) domain = meshHullInstead(m, domain);
   classifyTriangles(m, domain);
+  release(domain.outside);  // 1 byte per slot, no longer read
   // §6.7: the constrained variant's triangulation holds only the domain from here on; Ruppert's
   // original (the box) refines the whole box and cuts the domain out at the end.
   if (!box) removeOutside(m);

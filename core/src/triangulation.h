@@ -12,8 +12,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
+#include "huge_pages.h"
 namespace ruppert::detail {
 
 inline constexpr std::uint32_t kNone = 0xFFFFFFFFu;
@@ -22,6 +24,12 @@ inline constexpr std::int32_t kHullEdge = -2;  // con[h]: convex-hull or boundin
 // The capacity that scratch lists made once per call (cavities, their boundaries, new triangles)
 // start with: more than most cavities need.
 inline constexpr std::size_t kScratchReserve = 32;
+
+// Frees a vector's memory (assigning {} would keep its capacity).
+template <class Vector>
+void release(Vector& v) {
+  Vector().swap(v);
+}
 
 inline std::uint32_t next3(std::uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; }
 inline std::uint32_t prev3(std::uint32_t h) { return h % 3 == 0 ? h + 2 : h - 1; }
@@ -52,29 +60,43 @@ class Triangulation {
   std::uint32_t apex(std::uint32_t h) const { return tv[h]; }          // vertex opposite h
 
   std::uint32_t addVertex(double x, double y);
+  // Takes `coordinates` (x0,y0,x1,y1,...) as the first vertices, none in the mesh yet, without
+  // copying them, and reserves room for `vertices` in all.
+  void adoptVertices(std::vector<double>&& coordinates, std::size_t vertices);
   // A triangle with no neighbours and no constraints yet, in a free slot if there is one.
   std::uint32_t newTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    std::uint32_t t;
     if (!freeSlots.empty()) {
-      t = freeSlots.back();
+      const std::uint32_t t = freeSlots.back();
       freeSlots.pop_back();
-      tv[3 * t] = a, tv[3 * t + 1] = b, tv[3 * t + 2] = c;
-      for (std::uint32_t i = 3 * t; i < 3 * t + 3; ++i) twin[i] = kNone, con[i] = kFree;
-    } else {
-      t = slotCount();
-      tv.push_back(a), tv.push_back(b), tv.push_back(c);
-      for (int i = 0; i < 3; ++i) twin.push_back(kNone), con.push_back(kFree);
-      mark_.push_back(0);
+      return refillTriangle(t, a, b, c);
     }
+    const std::uint32_t t = slotCount();
+    tv.push_back(a), tv.push_back(b), tv.push_back(c);
+    for (int i = 0; i < 3; ++i) twin.push_back(kNone), con.push_back(kFree);
+    mark_.push_back(0);
+    vtri[a] = vtri[b] = vtri[c] = t;
+    return t;
+  }
+  // Slot t (free, or about to be: a cavity's) becomes the triangle a, b, c with no neighbours and
+  // no constraints yet.
+  std::uint32_t refillTriangle(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    tv[3 * t] = a, tv[3 * t + 1] = b, tv[3 * t + 2] = c;
+    for (std::uint32_t i = 3 * t; i < 3 * t + 3; ++i) twin[i] = kNone, con[i] = kFree;
     vtri[a] = vtri[b] = vtri[c] = t;
     return t;
   }
   // Room for this many vertices and triangle slots without regrowing (a small mesh otherwise spends
   // a sixth of its time growing these arrays from empty one doubling at a time).
   void reserve(std::size_t vertices, std::size_t slots) {
-    xy.reserve(2 * vertices), vtri.reserve(vertices), scratch_.reserve(vertices);
-    tv.reserve(3 * slots), twin.reserve(3 * slots), con.reserve(3 * slots), mark_.reserve(slots);
+    reserveHuge(xy, 2 * vertices), reserveHuge(vtri, vertices), reserveHuge(scratch_, vertices);
+    reserveHuge(tv, 3 * slots), reserveHuge(twin, 3 * slots), reserveHuge(con, 3 * slots), reserveHuge(mark_, slots);
   }
+  // Frees what only insertion and search use (the per-slot stamps, the per-vertex fan table).
+  void releaseScratch() { release(mark_), release(scratch_), release(freeSlots); }
+  // The same arrays' memory handed over for output's per-slot and per-vertex maps (their sizes are
+  // the slot and vertex counts; values unspecified): no new pages for them at the output's peak.
+  std::vector<std::uint32_t> takeSlotScratch() { return std::move(mark_); }
+  std::vector<std::uint32_t> takeVertexScratch() { return std::move(scratch_); }
   void killTriangle(std::uint32_t t) {
     tv[3 * t] = tv[3 * t + 1] = tv[3 * t + 2] = kNone;
     freeSlots.push_back(t);
