@@ -45,12 +45,13 @@ bool refinementRequested(const MeshState& m) {
 }
 
 RefineOutcome Refiner::run() {
-  corner_ = acuteCorners(m_);
+  double inverseGaps = 0;
+  corner_ = acuteCorners(m_, &inverseGaps);
   const double demand = areaDemand(m_);
   const std::uint64_t budget = plan_.budget != kAutoSteinerBudget ? plan_.budget : automaticSteinerBudget(m_, demand);
   budget_ = budget > plan_.used ? budget - plan_.used : 0;
   guarded_ = plan_.budget == kAutoSteinerBudget;
-  automatic_ = budget;
+  guardBase_ = static_cast<double>(budget) + kGuardStepsPerInverseRadian * inverseGaps;
   reserveForAreaBounds(m_, budget_, demand);
   // Initial queues: every subsegment and every triangle (linear in the mesh size, §6.3).
   for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {

@@ -106,7 +106,7 @@ RUPPERT_COLD_BEGIN
 bool Refiner::extendBudget() {
   if (!guarded_ || guardStopped_) return false;
   const std::uint64_t steps = plan_.used + inserted_;
-  const std::uint64_t next = nextGuardCheckpoint(m_, automatic_, steps, guardIntegral_);
+  const std::uint64_t next = nextGuardCheckpoint(m_, guardBase_, steps, guardIntegral_);
   if (next == 0) {
     guardStopped_ = true;
     return false;

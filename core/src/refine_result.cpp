@@ -38,7 +38,8 @@ std::string Refiner::guardMessage(std::uint64_t unmet) const {
   char measure[64];
   std::snprintf(measure, sizeof measure, "%.4g", guardIntegral_);
   return "refinement stopped after " + std::to_string(plan_.used + inserted_) +
-         " steps, more than the automatic budget plus " + std::to_string(int(kGuardStepsPerLfsUnit)) +
+         " steps, more than the automatic budget, " + std::to_string(int(kGuardStepsPerInverseRadian)) +
+         " per inverse radian of the input's acute corners and " + std::to_string(int(kGuardStepsPerLfsUnit)) +
          " per unit of the size measure (the integral of 1/lfs^2 over the domain, " + measure +
          ", section 6.5): it is not converging; " + std::to_string(unmet) +
          " triangle(s) do not meet the bounds (maxSteiner sets a budget instead)";

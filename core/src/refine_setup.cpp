@@ -24,7 +24,7 @@ namespace ruppert::detail {
 // sharper (refine_split.cpp). The directions are gathered per vertex in one flat array (counting
 // sort by vertex), and the gaps are between neighbours in angular order: sorted, O(d log d) for a
 // vertex of degree d.
-std::vector<std::uint8_t> acuteCorners(const MeshState& m) {
+std::vector<std::uint8_t> acuteCorners(const MeshState& m, double* inverseGaps) {
   const Triangulation& t = m.tri;
   const std::uint32_t n = t.vertexCount();
   std::vector<std::uint8_t> corner(n, 0);
@@ -65,7 +65,12 @@ std::vector<std::uint8_t> acuteCorners(const MeshState& m) {
     // cos(gap) > sin(1e-12): the gap is below 90 degrees by more than rounding (a reflex gap of the
     // domain, past 270 degrees, has a positive cosine too).
     const double cosine = std::cos(gap);
-    if (gap < kPi && cosine > 1e-12) corner[v] = static_cast<std::uint8_t>(1 + std::min(254.0, 254 * cosine));
+    if (gap < kPi && cosine > 1e-12) {
+      corner[v] = static_cast<std::uint8_t>(1 + std::min(254.0, 254 * cosine));
+      // Counted down to 5e-5 rad (hanging3's 1.5e-4 in full): a narrower corner is left to §6.6 and
+      // the precision floor, not met by more triangles (near-overlaps 1e-12 rad apart ran away).
+      if (inverseGaps != nullptr) *inverseGaps += 1 / std::max(gap, 5e-5);
+    }
   }
   return corner;
 }
@@ -101,9 +106,9 @@ std::uint64_t automaticSteinerBudget(const MeshState& m, double demand) {
 // triangles); about half as many vertices. A refinement into a corner it cannot fix went past
 // 20,000 triangles per unit before it stopped at the precision floor. The estimate reuses a
 // neighbour's lfs within a quarter of it (25% at worst, against the factor of 15 kept in hand).
-std::uint64_t nextGuardCheckpoint(const MeshState& m, std::uint64_t automatic, std::uint64_t steps, double& integral) {
+std::uint64_t nextGuardCheckpoint(const MeshState& m, double base, std::uint64_t steps, double& integral) {
   integral = estimateLfsIntegral(m, 0.25);
-  const double allowance = std::min(static_cast<double>(automatic) + kGuardStepsPerLfsUnit * integral, 4e9);
+  const double allowance = std::min(base + kGuardStepsPerLfsUnit * integral, 4e9);
   const double done = static_cast<double>(steps);
   if (!(done + 1 < allowance)) return 0;
   return static_cast<std::uint64_t>(std::min(allowance, 2 * done + 1));

@@ -91,10 +91,10 @@ class Refiner {
     std::uint64_t rejected = 0;
   } best_;
   std::uint64_t budget_ = 0, inserted_ = 0;
-  // The automatic budget's checkpoints (nextGuardCheckpoint): whether this run has them, the first
-  // one, and the size measure the last one estimated.
+  // The automatic budget's checkpoints (nextGuardCheckpoint): whether this run has them, their base
+  // allowance, and the size measure the last one estimated.
   bool guarded_ = false, guardStopped_ = false;
-  std::uint64_t automatic_ = 0;
+  double guardBase_ = 0;
   double guardIntegral_ = 0;
   std::uint64_t steps_ = 0;  // steps (insertions, moves) in the mesh run() returns
   bool cancelled_ = false, budgetHit_ = false;

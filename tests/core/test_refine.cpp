@@ -497,8 +497,9 @@ TEST_CASE("slivers under nearly collinear chains complete at 30 and 33 degrees w
       Options o;
       o.minAngle = angle;
       const Mesh mesh = refineChecked(plc, o, "sliver, seed " + std::to_string(seed));
-      INFO("seed " << seed << " at " << angle << ": " << mesh.stats.vertices << " vertices");
-      for (const auto& r : mesh.reasons) INFO(r.message);
+      std::string reasons;
+      for (const auto& r : mesh.reasons) reasons += r.message + "; ";
+      INFO("seed " << seed << " at " << angle << ": " << mesh.stats.vertices << " vertices; " << reasons);
       CHECK(mesh.complete);
       pastFirstCheckpoint += mesh.stats.vertices > 10000 + 200 * plc.points.size() / 2;
     }
