@@ -14,8 +14,12 @@
 #include <deque>
 #include <string>
 
+#include "cold_code.h"
 #include "mesh_state.h"
 #include "predicates.h"
+
+// Once per call, a pass or two over the triangles: compiled for size (cold_code.h).
+RUPPERT_COLD_BEGIN
 
 namespace ruppert::detail {
 namespace {
@@ -275,3 +279,5 @@ void removeOutside(MeshState& m) {
 }
 
 }  // namespace ruppert::detail
+
+RUPPERT_COLD_END

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "cold_code.h"
 #include "huge_pages.h"
 
 namespace ruppert::detail {
@@ -16,6 +17,8 @@ void sortPoints(std::vector<KeyedPoint>& points) {
   });
 }
 
+// Once per call, linear in the points: compiled for size (cold_code.h).
+RUPPERT_COLD_BEGIN
 void sortByKey(std::vector<std::uint64_t>& keyed, const std::vector<double>& xy) {
   const std::size_t n = keyed.size();
   // Least significant byte of the key first: each pass is stable, so after the fourth the keys are
@@ -48,5 +51,7 @@ void sortByKey(std::vector<std::uint64_t>& keyed, const std::vector<double>& xy)
     k = j;
   }
 }
+
+RUPPERT_COLD_END
 
 }  // namespace ruppert::detail

@@ -7,9 +7,13 @@
 #include <numeric>
 #include <string>
 
+#include "cold_code.h"
 #include "huge_pages.h"
 #include "point_order.h"
 #include "predicates.h"
+
+// Once per call, linear in the input (a sort aside): compiled for size (cold_code.h).
+RUPPERT_COLD_BEGIN
 
 namespace ruppert::detail {
 
@@ -304,3 +308,5 @@ PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<N
 }
 
 }  // namespace ruppert::detail
+
+RUPPERT_COLD_END

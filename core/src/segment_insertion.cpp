@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "cold_code.h"
 #include "mesh_state.h"
 #include "point_attributes.h"
 #include "point_order.h"
@@ -394,6 +395,8 @@ class SegmentInserter {
 // point winds inside that polygon, so inside the hull, and is on no hull edge. The chain finds the
 // same hull from what is left, and a plain CDT of 10^6 points sorts a few hundred points instead
 // of all. (Rounded sums only change which points are extreme, never the test's safety.)
+// Once per call, a pass over the points: compiled for size (cold_code.h), as insertHull below.
+RUPPERT_COLD_BEGIN
 std::vector<KeyedPoint> hullCandidates(const MeshState& m) {
   const Triangulation& t = m.tri;
   auto takes = [&m](std::uint32_t v) { return v < m.inputCount || m.kind[v] == VertexKind::Intersection; };
@@ -456,6 +459,7 @@ void insertHull(MeshState& m) {
   // 19: a careless PLC whose points all lay within rounding of one line kept a non-Delaunay edge).
   if (inserter.repairs() > 0) m.tri.legalizeAll();
 }
+RUPPERT_COLD_END
 
 void insertSegments(MeshState& m) {
   SegmentInserter inserter(m);
