@@ -102,6 +102,8 @@ bool Refiner::mayInsert() {
   return false;
 }
 
+// Only at the automatic budget's checkpoints (a few per run that passes the first): compiled for
+// size (cold_code.h).
 RUPPERT_COLD_BEGIN
 bool Refiner::extendBudget() {
   if (!guarded_ || guardStopped_) return false;
