@@ -87,9 +87,9 @@ double areaDemand(const MeshState& m) {
 
 // The automatic budget, the guard's first checkpoint: ten thousand, plus 200 per input vertex (of
 // the 61 shared PLCs, the complete meshes at 33 and 35 degrees use at most 40 Steiner vertices per
-// input vertex once past the first ten thousand), plus 100 per crossing of two segments (stars of 80 to 300 chords through a disk's
-// centre, 3,160 to 44,850 crossings at small angles, use 30-63 Steiner vertices per crossing at 30
-// and 33 degrees; 40 per crossing stopped several of them incomplete), plus eight per unit of area
+// input vertex once past the first ten thousand), plus 100 per crossing of two segments (stars of
+// 80 to 300 chords through a disk's centre, 3,160 to 44,850 crossings at small angles, use 30-63
+// Steiner vertices per crossing at 30 and 33 degrees; 40 per crossing stopped several of them incomplete), plus eight per unit of area
 // bound (area A with triangles of area a needs about A / (2 a) vertices). Most inputs finish within
 // it, so the guard's size measure is seldom computed.
 std::uint64_t automaticSteinerBudget(const MeshState& m, double demand) {
@@ -102,7 +102,7 @@ std::uint64_t automaticSteinerBudget(const MeshState& m, double demand) {
 }
 
 // Triangles per unit of the size measure in complete meshes at 33 degrees: at most 3.6 over the
-// shared PLCs, 8.2 on three nearly collinear hull edges (artem-ogre/CDT's hanging3, 56,847
+// shared PLCs, 7.5 on three nearly collinear hull edges (artem-ogre/CDT's hanging3, 56,847
 // triangles); about half as many vertices. A refinement into a corner it cannot fix went past
 // 20,000 triangles per unit before it stopped at the precision floor. The estimate reuses a
 // neighbour's lfs within a quarter of it (25% at worst, against the factor of 15 kept in hand).

@@ -149,9 +149,8 @@ class FeatureGrid {
 // area / (mean lfs of the corners)^2 is a fair quadrature only where the triangle is small beside
 // lfs; a triangle longer than half its corners' smallest lfs (a coarse mesh, before refinement has
 // reached the features) that is worth over a unit is cut in four at its edges' midpoints, up to
-// `depth` times. Without this,
-// long triangles of an early mesh whose corners sit near features counted a tiny lfs over their
-// whole area: 40 times the integral of the refined mesh.
+// `depth` times. Without this, long triangles of an early mesh whose corners sit near features
+// counted a tiny lfs over their whole area: 40 times the integral of the refined mesh.
 constexpr int kSubdivisions = 6;
 
 double subdividedIntegral(FeatureGrid& grid, const double* const p[3], const double f[3], int depth) {
