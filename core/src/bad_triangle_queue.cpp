@@ -42,19 +42,31 @@ int BadTriangleQueue::classOf(double shortest2) {
   // Four classes per power of two (of the squared length): cuts at 2^-0.75, 2^-0.5, 2^-0.25.
   const int quarter = (mantissa >= 0.5946035575013605) + (mantissa >= 0.7071067811865476) +
                       (mantissa >= 0.8408964152537145);
-  return std::clamp(4 * (e - kLowestExponent) + quarter, 0, kBuckets - 2);
+  return std::clamp(4 * (e - kLowestExponent) + quarter, 0, kBuckets - 1);
 }
 
-void BadTriangleQueue::push(const Triangulation& t, std::uint32_t s, bool skinny, double shortest2,
-                            double sin2MinAngle) {
-  const int k = skinny ? classOf(shortest2) : kBuckets - 1;
+int BadTriangleQueue::sizeClassOf(double area) {
+  const double k = std::floor((std::log2(area) - kLowestAreaExponent) * kSizeClassesPerOctave);
+  return static_cast<int>(std::clamp(k, 0.0, double(kSizeBuckets - 1)));
+}
+
+void BadTriangleQueue::push(const Triangulation& t, std::uint32_t s, bool skinny, double key, double sin2MinAngle) {
   const auto angleClass =
       static_cast<std::uint8_t>(std::min<double>(kAngleClasses - 1, sin2MinAngle / 0.75 * (kAngleClasses - 1)));
-  buckets_[k].push_back({s, t.tv[3 * s], t.tv[3 * s + 1], t.tv[3 * s + 2], angleClass});
-  usedLow_ = std::min(usedLow_, k), usedHigh_ = std::max(usedHigh_, k);
+  const BadTriangle e{s, t.tv[3 * s], t.tv[3 * s + 1], t.tv[3 * s + 2], angleClass};
   ++queuedByAngle_[angleClass];
-  lowestBucket_ = std::min(lowestBucket_, k);
-  if (k < kBuckets - 1) highestSkinny_ = std::max(highestSkinny_, k);
+  if (skinny) {
+    const int k = classOf(key);
+    buckets_[k].push_back(e);
+    usedLow_ = std::min(usedLow_, k), usedHigh_ = std::max(usedHigh_, k);
+    lowestBucket_ = std::min(lowestBucket_, k);
+    highestSkinny_ = std::max(highestSkinny_, k);
+  } else {
+    if (sizeBuckets_.empty()) sizeBuckets_.resize(kSizeBuckets);
+    const int k = sizeClassOf(key);
+    sizeBuckets_[k].push_back(e);
+    highestSize_ = std::max(highestSize_, k);
+  }
   if (++queued_ > compactAt_) dropStaleEntries(t);
 }
 
@@ -65,43 +77,40 @@ void BadTriangleQueue::push(const Triangulation& t, std::uint32_t s, bool skinny
 // not change) keeps memory proportional to the mesh.
 void BadTriangleQueue::dropStaleEntries(const Triangulation& t) {
   queued_ = 0;
-  for (auto& b : buckets_) {
-    b.erase(std::remove_if(b.begin(), b.end(),
-                           [&](const BadTriangle& e) {
-                             if (isCurrent(t, e)) return false;
-                             --queuedByAngle_[e.angleClass];
-                             return true;
-                           }),
-            b.end());
-    queued_ += b.size();
+  for (auto* classes : {&buckets_, &sizeBuckets_}) {
+    for (auto& b : *classes) {
+      b.erase(std::remove_if(b.begin(), b.end(),
+                             [&](const BadTriangle& e) {
+                               if (isCurrent(t, e)) return false;
+                               --queuedByAngle_[e.angleClass];
+                               return true;
+                             }),
+              b.end());
+      queued_ += b.size();
+    }
   }
   compactAt_ = 2 * std::max<std::uint64_t>(queued_, t.slotCount()) + (1u << 16);
 }
 
+bool BadTriangleQueue::take(std::vector<BadTriangle>& bucket, BadTriangle& out) {
+  if (bucket.empty()) return false;
+  out = bucket.back();
+  bucket.pop_back();
+  --queued_;
+  --queuedByAngle_[out.angleClass];
+  return true;
+}
+
 bool BadTriangleQueue::pop(BadTriangle& out) {
   if (largestFirst_) {
-    for (; highestSkinny_ >= 0; --highestSkinny_) {
-      auto& b = buckets_[highestSkinny_];
-      if (b.empty()) continue;
-      out = b.back();
-      b.pop_back();
-      --queued_;
-      --queuedByAngle_[out.angleClass];
-      return true;
-    }
-    lowestBucket_ = std::max(lowestBucket_, kBuckets - 1);  // only the size class may hold entries
+    for (; highestSkinny_ >= 0; --highestSkinny_)
+      if (take(buckets_[highestSkinny_], out)) return true;
+    lowestBucket_ = kBuckets;  // no skinny class holds an entry
   }
-  while (lowestBucket_ < kBuckets) {
-    auto& b = buckets_[lowestBucket_];
-    if (!b.empty()) {
-      out = b.back();
-      b.pop_back();
-      --queued_;
-      --queuedByAngle_[out.angleClass];
-      return true;
-    }
-    ++lowestBucket_;
-  }
+  for (; lowestBucket_ < kBuckets; ++lowestBucket_)
+    if (take(buckets_[lowestBucket_], out)) return true;
+  for (; highestSize_ >= 0; --highestSize_)
+    if (take(sizeBuckets_[highestSize_], out)) return true;
   return false;
 }
 

@@ -89,7 +89,7 @@ void Refiner::checkTriangle(std::uint32_t s) {
   const bool large = bound > 0 && q.area > bound;
   const bool skinny = isSkinny(q);
   if (!skinny && !large) return;
-  const double shortest2 = skinny ? std::min({sq(p1, p2), sq(p2, p0), sq(p0, p1)}) : 0;
+  const double shortest2 = skinny ? std::min({sq(p1, p2), sq(p2, p0), sq(p0, p1)}) : q.area;
   bad_.push(t_, s, skinny, shortest2, q.sin2MinAngle);
 }
 

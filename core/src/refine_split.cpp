@@ -190,7 +190,7 @@ void Refiner::splitTriangle(const BadTriangle& bt) {
   Location loc;
   bool located = false;
   // As for Petal, only where no area bound applies.
-  if (skinny && o_.placement == Placement::Optimal && !(maxAreaAt(s) > 0)) {
+  if (skinny && o_.placement == Placement::Optimal && !(maxAreaAt(s) > 0 && q.area > maxAreaAt(s))) {
     if (optimalOrRelocate(bt, p, sh, target)) return;
     // Nothing changed since the placement looked at the first choice: its cavity is known.
     located = optimal_.takeFirst(loc, cavityTris_, cavityBoundary_);

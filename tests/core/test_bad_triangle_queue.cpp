@@ -1,6 +1,7 @@
 // The bad-triangle queue's two orders (bad_triangle_queue.h): smallest shortest edge first, as
 // refinement always does up to 34 degrees, and largest first, for the direct attempts above it
-// (bound_push.h). Too-large triangles come last either way; within a class, last in first out.
+// (bound_push.h). Too-large triangles come last either way, the largest area first; within a class,
+// last in first out.
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -59,4 +60,17 @@ TEST_CASE("the bad-triangle queue pops the largest shortest edge first when aske
   CHECK(b.slot == 1);
   q.push(t, 8, true, 16, 0.1);
   CHECK(drain(q) == std::vector<std::uint32_t>{8, 3, 0, 4, 7, 6, 2, 5});
+}
+
+TEST_CASE("the bad-triangle queue pops too-large triangles by area, largest first, after every skinny one", "[queue]") {
+  const Triangulation t = slots(6);
+  BadTriangleQueue q;
+  // Areas over many powers of two, two of them in one class (1.0 and 1.01: the later one first).
+  q.push(t, 0, false, 1.0, 0.5);
+  q.push(t, 1, false, 1e-9, 0.5);
+  q.push(t, 2, false, 64, 0.5);
+  q.push(t, 3, true, 1e-4, 0.1);
+  q.push(t, 4, false, 1.01, 0.5);
+  q.push(t, 5, false, 0.3, 0.5);
+  CHECK(drain(q) == std::vector<std::uint32_t>{3, 2, 4, 0, 5, 1});
 }
