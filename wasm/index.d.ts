@@ -78,7 +78,7 @@ export interface TriangulateOptions {
    * in stats.reachedAngle), never below 33 degrees outside the chapter's exemptions nor over four
    * times the triangles of the 33-degree mesh, when 33 degrees completes. With the default
    * placement the bound held on 100% / 93% / 5% of the benchmark's 300 generated PLCs at 35 / 38 /
-   * 40 degrees (README, Measured); a complete mesh at 38 had a median 4.9 (at most 15.5) times the
+   * 40 degrees (docs/measurements.md); a complete mesh at 38 had a median 4.9 (at most 15.5) times the
    * triangles of the same PLC's 33-degree mesh (native CLI, the same PLCs).
    */
   minAngle?: number;

@@ -14,8 +14,8 @@ import { absoluteUrl, classicScriptUrl, getNodeHost } from './host.js';
 // import.meta.url), written out per file so that bundlers that copy assets (vite, webpack) see it and
 // copy the file; it is only called where there is an import.meta.url: a classic-script bundle
 // (esbuild's default iife format) has none, and the file is expected beside the bundle. A bundler
-// that copies no assets (esbuild) leaves that URL as it is, relative to the bundle: then, as the
-// README says, the file is expected beside the bundle rather than in a dist/ below it.
+// that copies no assets (esbuild) leaves that URL as it is, relative to the bundle: then, as
+// docs/usage.md says, the file is expected beside the bundle rather than in a dist/ below it.
 function packagedOrBeside(file, packaged) {
   if (import.meta.url === undefined) return new URL(file, classicScriptUrl);
   const url = packaged();

@@ -29,61 +29,106 @@ bool parseStrictCount(const std::string& text, std::uint64_t& value) {
 }
 
 const char* usageLine() {
-  return "usage: ruppert [--min-angle DEG] [--max-area A] [--max-steiner N] [-o BASE] "
-         "[--format triangle|json|svg|msh|vtu|geojson] [--input-format poly|node|json|geojson] [--quiet] [--stats] [--trace FILE] "
-         "[--placement optimal|offcenter|circumcenter|petal] [--encroachment lens|disk] [--variant cdt|box] [--convex-hull] [--auto-holes] "
-         "[--order 1|2] [--voronoi] [-e|--edges] [--no-boundary-steiner] [--no-segment-steiner] [-j|--jettison] "
-         "[--help] [--version] INPUT";
+  // Wrapped to 80 columns; the error path prints it after the message.
+  return "usage: ruppert [--min-angle DEG] [--max-area A] [--max-steiner N] [-o BASE|-]\n"
+         "               [--format triangle|json|svg|msh|vtu|geojson]\n"
+         "               [--input-format poly|node|json|geojson] [--quiet] [--stats]\n"
+         "               [--trace FILE] [--placement optimal|offcenter|circumcenter|petal]\n"
+         "               [--encroachment lens|disk] [--variant cdt|box] [--convex-hull]\n"
+         "               [--auto-holes] [--order 1|2] [--voronoi] [-e|--edges]\n"
+         "               [--no-boundary-steiner] [--no-segment-steiner] [-j|--jettison]\n"
+         "               [--help] [--version] INPUT";
 }
+
+namespace {
+
+// The options and what they do, in columns that fit 80 characters.
+const char* const kOptionsHelp =
+    "  --min-angle DEG      smallest angle to reach, 0..60 (default 30); above 34,\n"
+    "                       where out of reach: the best mesh reached (at least 33\n"
+    "                       degrees), marked incomplete\n"
+    "  --max-area A         largest triangle area (default: no bound); --min-angle 0\n"
+    "                       without --max-area gives the plain constrained Delaunay\n"
+    "                       triangulation\n"
+    "  --max-steiner N      at most N new vertices (default: automatic)\n"
+    "  -o BASE              write the mesh: BASE.node, BASE.ele, BASE.poly (triangle\n"
+    "                       format), BASE.json (json) or BASE.svg (svg); without -o\n"
+    "                       only the summary is printed\n"
+    "  -o -                 write the one file of --format (not triangle: three\n"
+    "                       files) to standard output; the summary and --stats then\n"
+    "                       go to standard error\n"
+    "  --format F           triangle (default), json, svg, msh (Gmsh 4.1: BASE.msh),\n"
+    "                       vtu (VTK XML: BASE.vtu) or geojson (a FeatureCollection\n"
+    "                       of triangles: BASE.geojson)\n"
+    "  --input-format F     poly, node, json or geojson: how to read INPUT (default:\n"
+    "                       its extension; for - the text decides: '{' is json or\n"
+    "                       geojson, else .poly or .node)\n"
+    "  --placement P        optimal (default: off-centers, but where one would make a\n"
+    "                       skinny triangle the point maximising the smallest new\n"
+    "                       angle; the fewest triangles, and 35-40 degrees),\n"
+    "                       offcenter (faster), circumcenter, or petal (a point of\n"
+    "                       the shortest edge's petal there)\n"
+    "  --encroachment E     lens (default: diametral lenses) or disk (closed\n"
+    "                       diametral disks)\n"
+    "  --variant V          cdt (default: constrained, no triangles outside the\n"
+    "                       domain) or box (Ruppert's original: conforming mesh of\n"
+    "                       an enclosing box)\n"
+    "  --convex-hull        mesh the whole convex hull, not only what segments\n"
+    "                       enclose\n"
+    "  --auto-holes         without hole seeds: regions at even nesting depth become\n"
+    "                       holes\n"
+    "  --order 2            quadratic triangles: .ele gets 6 nodes per triangle\n"
+    "                       (corners, then the midpoints of the edges opposite them),\n"
+    "                       .node the midpoints after the corners\n"
+    "  --voronoi            also write the dual: BASE.v.node (circumcentres) and\n"
+    "                       BASE.v.edge\n"
+    "  -e, --edges          also write BASE.edge: every edge once, with its boundary\n"
+    "                       marker (triangle format only)\n"
+    "  --no-boundary-steiner  no new vertex on the domain's boundary (Triangle's -Y);\n"
+    "                       what quality that leaves unreachable is reported, not\n"
+    "                       looped over\n"
+    "  --no-segment-steiner   no new vertex on any segment (Triangle's -YY)\n"
+    "  -j, --jettison       leave unused input points (merged duplicates, points\n"
+    "                       outside the domain) out of the output; the others are\n"
+    "                       renumbered in order\n"
+    "  --stats              print statistics (vertex kinds, angle histogram, size\n"
+    "                       optimality)\n"
+    "  --trace FILE         write every step (insertion, or move of a free vertex) as\n"
+    "                       JSON lines to FILE\n"
+    "  --quiet              no summary and no warnings (errors and --stats still\n"
+    "                       print)\n"
+    "  --help, --version\n";
+
+// Each example runs as written from the top of a source tree (tests/readme checks them), the
+// inputs being the ones in docs/examples.
+const char* const kExamplesHelp =
+    "Examples (the inputs ship in the source tree's docs/examples):\n"
+    "  ruppert docs/examples/lake.poly\n"
+    "      the summary of a 30-degree mesh; nothing written\n"
+    "  ruppert --min-angle 33 --max-area 0.5 -o lake docs/examples/lake.poly\n"
+    "      lake.node, lake.ele and lake.poly\n"
+    "  ruppert --format vtu --stats -o plate docs/examples/plate.json\n"
+    "      plate.vtu for ParaView, and the statistics\n"
+    "  ruppert --format msh -o - - < docs/examples/park.geojson > park.msh\n"
+    "      GeoJSON from standard input, Gmsh's .msh to standard output\n";
+
+}  // namespace
 
 std::string helpText() {
   return std::string(usageLine()) +
          "\n\n"
-         "Quality triangle mesh of a planar straight-line graph by Delaunay refinement (Ruppert).\n"
-         "INPUT is a Triangle .poly or .node file, a .json file {\"points\": [...], \"segments\": [...], ...},\n"
-         "a .geojson file (Polygon/MultiPolygon features; inner rings are holes), or - for standard input.\n"
-         "INPUT BASE.ele refines that mesh (with BASE.node, and BASE.poly and BASE.area when present:\n"
-         "a maximum area per triangle, -1 for none, kept by every new triangle within an old one).\n"
+         "Quality triangle mesh of a planar straight-line graph by Delaunay refinement\n"
+         "(Ruppert). INPUT is a Triangle .poly or .node file, a .json file\n"
+         "{\"points\": [...], \"segments\": [...], ...}, a .geojson file (Polygon and\n"
+         "MultiPolygon features; inner rings are holes), or - for standard input.\n"
+         "INPUT BASE.ele refines that mesh (with BASE.node, and BASE.poly and BASE.area\n"
+         "when present: a maximum area per triangle, -1 for none, kept by every new\n"
+         "triangle within an old one).\n"
+         "\n" +
+         kOptionsHelp + "\n" + kExamplesHelp +
          "\n"
-         "  --min-angle DEG      smallest angle to reach, 0..60 (default 30); above 34, where out of\n"
-         "                       reach: the best mesh reached (at least 33 degrees), marked incomplete\n"
-         "  --max-area A         largest triangle area (default: no bound)\n"
-         "                       --min-angle 0 without --max-area gives the plain constrained Delaunay mesh\n"
-         "  --max-steiner N      at most N new vertices (default: automatic)\n"
-         "  -o BASE              write the mesh: BASE.node, BASE.ele, BASE.poly (triangle format),\n"
-         "                       BASE.json (json) or BASE.svg (svg); without -o only the summary is printed\n"
-         "  --format F           triangle (default), json, svg, msh (Gmsh 4.1: BASE.msh), vtu (VTK XML:\n"
-         "                       BASE.vtu) or geojson (a FeatureCollection of triangles: BASE.geojson)\n"
-         "  -o -                 write the one file of --format (not triangle: three files) to standard\n"
-         "                       output; the summary and --stats then go to standard error\n"
-         "  --input-format F     poly, node, json or geojson: how to read INPUT (default: its extension;\n"
-         "                       for - the text decides: '{' is json or geojson, else .poly or .node)\n"
-         "  --placement P        optimal (default: off-centers, but where one would make a skinny\n"
-         "                       triangle the point maximising the smallest new angle; the fewest\n"
-         "                       triangles, and 35-40 degrees), offcenter (faster), circumcenter, or\n"
-         "                       petal (a point of the shortest edge's petal there)\n"
-         "  --encroachment E     lens (default: diametral lenses) or disk (closed diametral disks)\n"
-         "  --variant V          cdt (default: constrained, no triangles outside the domain) or box\n"
-         "                       (Ruppert's original: conforming mesh of an enclosing box)\n"
-         "  --convex-hull        mesh the whole convex hull, not only what segments enclose\n"
-         "  --auto-holes         without hole seeds: regions at even nesting depth become holes\n"
-         "  --order 2            quadratic triangles: .ele gets 6 nodes per triangle (corners, then the\n"
-         "                       midpoints of the edges opposite them), .node the midpoints after the corners\n"
-         "  --voronoi            also write the dual: BASE.v.node (circumcentres) and BASE.v.edge\n"
-         "  -e, --edges          also write BASE.edge: every edge once, with its boundary marker\n"
-         "                       (triangle format only)\n"
-         "  --no-boundary-steiner  no new vertex on the domain's boundary (Triangle's -Y); what\n"
-         "                       quality that leaves unreachable is reported, not looped over\n"
-         "  --no-segment-steiner   no new vertex on any segment (Triangle's -YY)\n"
-         "  -j, --jettison       leave unused input points (merged duplicates, points outside the\n"
-         "                       domain) out of the output; the others are renumbered in order\n"
-         "  --stats              print statistics (vertex kinds, angle histogram, size optimality)\n"
-         "  --trace FILE         write every step (insertion, or move of a free vertex) as JSON lines\n"
-         "                       to FILE\n"
-         "  --quiet              no summary and no warnings (errors and --stats still print)\n"
-         "  --help, --version\n"
-         "\n"
-         "Exit status: 0 success, 1 invalid input, 2 usage error, 3 output could not be written.\n";
+         "Exit status: 0 success, 1 invalid input, 2 usage error, 3 output could not be\n"
+         "written.\n";
 }
 
 namespace {
@@ -234,6 +279,48 @@ Handler handlerOf(const std::string& name) {
   return nullptr;
 }
 
+// Edits between a and b: insertions, deletions, substitutions and swaps of two neighbouring
+// characters, each counting one (so "--min-angel" is one edit from "--min-angle").
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1, 0));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t substitution = d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, substitution});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  }
+  return d[a.size()][b.size()];
+}
+
+// The option an unknown `name` was probably meant as: the one spelling nearest to it in lower case,
+// at most a quarter of its length away (names under 4 characters: only a difference of case).
+// Empty when none is that near, or when two spellings are equally near.
+std::string nearestOption(const std::string& name) {
+  std::string lower = name;
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::size_t limit = lower.size() < 4 ? 0 : std::max<std::size_t>(1, lower.size() / 4);
+  std::string best;
+  std::size_t bestDistance = limit + 1;
+  bool tie = false;
+  for (const auto& entry : optionTable()) {
+    for (const std::string& spelling : entry.first) {
+      const std::size_t distance = editDistance(lower, spelling);
+      if (distance < bestDistance) {
+        best = spelling;
+        bestDistance = distance;
+        tie = false;
+      } else if (distance == bestDistance) {
+        tie = true;
+      }
+    }
+  }
+  return tie ? std::string() : best;
+}
+
 // Options that cannot go together, and a missing INPUT.
 void checkCombination(const CliArgs& out) {
   if (out.input.empty() && !out.help && !out.version) throw UsageError("missing INPUT");
@@ -258,7 +345,8 @@ CliArgs parseArgs(const std::vector<std::string>& args) {
       OptionValue value(arg, args, i);
       handler(value, out);
     } else if (name.size() > 1 && name[0] == '-') {  // a lone "-" is INPUT: standard input
-      throw UsageError("unknown option '" + name + "'");
+      const std::string near = nearestOption(name);
+      throw UsageError("unknown option '" + name + "'" + (near.empty() ? "" : " (did you mean " + near + "?)"));
     } else {
       if (!out.input.empty()) throw UsageError("more than one INPUT ('" + out.input + "' and '" + name + "')");
       if (name.empty()) throw UsageError("INPUT must not be empty");

@@ -1,7 +1,7 @@
 #!/usr/bin/env node
 // `npm run test:bundlers`: the package as users bundle it. `npm pack`, install the tarball and
 // vite, webpack 5 and esbuild into one temporary app, build app/src/main.js with each (no bundler
-// configuration beyond the entry; esbuild gets the .wasm copied beside the bundle, as the README
+// configuration beyond the entry; esbuild gets the .wasm copied beside the bundle, as docs/usage.md
 // says), serve each output on 127.0.0.1 (and the sources through vite's development server) and
 // run it in Debian's Chromium: a mesh on the main
 // thread, the text formats module read and write there, a worker mesh with progress, a cancel and a

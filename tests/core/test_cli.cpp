@@ -197,3 +197,75 @@ TEST_CASE("cli: an unwritable output exits 3", "[io][cli]") {
   const Run t = run("--min-angle 0 --trace '" + nowhere + ".jsonl' " + input);
   CHECK(t.status == 3);
 }
+
+TEST_CASE("cli: an unknown option gets the nearest one as a did-you-mean", "[io][cli]") {
+  if (!haveCli()) return;
+  const std::pair<const char*, const char*> near[] = {
+      {"--min-angel 20", "unknown option '--min-angel' (did you mean --min-angle?)"},
+      {"--min-angel=20", "unknown option '--min-angel' (did you mean --min-angle?)"},
+      {"--maxarea 0.1", "unknown option '--maxarea' (did you mean --max-area?)"},
+      {"-min-angle 20", "unknown option '-min-angle' (did you mean --min-angle?)"},
+      {"--QUIET", "unknown option '--QUIET' (did you mean --quiet?)"},
+      {"--edge", "unknown option '--edge' (did you mean --edges?)"},
+      {"--no-segment-steinr", "unknown option '--no-segment-steinr' (did you mean --no-segment-steiner?)"},
+  };
+  for (const auto& [args, message] : near) {
+    INFO(args);
+    const Run r = run(std::string(args) + " x.poly");
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Catch::StartsWith(std::string("error: ") + message + "\n"));
+  }
+  // Nothing near enough: no guess. Short names only match ignoring case.
+  for (const char* args : {"--bogus", "--angle 20", "-x", "--mesh-it"}) {
+    INFO(args);
+    const Run r = run(std::string(args) + " x.poly");
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Catch::Contains("unknown option"));
+    CHECK_THAT(r.err, !Catch::Contains("did you mean"));
+  }
+}
+
+TEST_CASE("cli: --help and the usage line fit 80 columns", "[io][cli]") {
+  if (!haveCli()) return;
+  const Run help = run("--help");
+  REQUIRE(help.status == 0);
+  const Run usage = run("--bogus x.poly");
+  REQUIRE(usage.status == 2);
+  for (const std::string& text : {help.out, usage.err}) {
+    std::istringstream lines(text);
+    std::size_t count = 0;
+    for (std::string line; std::getline(lines, line); ++count) {
+      INFO(line);
+      CHECK(line.size() <= 80);
+    }
+    CHECK(count >= 8);  // the usage line alone takes eight
+  }
+  CHECK_THAT(help.out, Catch::Contains("\nExamples"));
+}
+
+TEST_CASE("cli: every example of --help runs as written on the shipped inputs", "[io][cli]") {
+  if (!haveCli()) return;
+  // The examples name docs/examples/... from the top of the source tree (RUPPERT_FIXTURES is
+  // tests/fixtures): run them in a scratch folder holding a link to docs/, with `ruppert` the binary.
+  const fs::path source = fs::path(kCliFixtures).parent_path().parent_path().parent_path().parent_path();
+  REQUIRE(fs::exists(source / "docs" / "examples"));
+  const fs::path dir = scratch() / "help-examples";
+  fs::create_directories(dir);
+  std::error_code ec;
+  fs::create_directory_symlink(source / "docs", dir / "docs", ec);
+  const Run help = run("--help");
+  std::istringstream lines(help.out);
+  int examples = 0;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("  ruppert ", 0) != 0) continue;
+    ++examples;
+    INFO(line);
+    const std::string command = "cd '" + dir.string() + "' && ('" + cliPath() + "'" + line.substr(9) + ") >/dev/null 2>&1";
+    const int raw = std::system(command.c_str());
+    CHECK((WIFEXITED(raw) && WEXITSTATUS(raw) == 0));
+  }
+  CHECK(examples >= 3);
+  CHECK(fs::file_size(dir / "lake.ele") > 0);
+  CHECK(fs::file_size(dir / "plate.vtu") > 0);
+  CHECK_THAT(slurp(dir / "park.msh"), Catch::StartsWith("$MeshFormat"));
+}

@@ -56,6 +56,9 @@ const status = run(process.execPath, ['--test', '--test-concurrency=1', ...tests
     RUPPERT_HOSTILE: resolve(root, 'tests/hostile'),
     // The page's words for the core's names (web/labels.js), checked by names.test.mjs.
     RUPPERT_WEB: resolve(root, 'web'),
+    // The README whose examples readme.test.mjs runs, and the tarball its install line must name.
+    RUPPERT_README: resolve(root, 'README.md'),
+    RUPPERT_TARBALL: tarball,
   },
 });
 if (process.env.RUPPERT_KEEP_TMP) console.log(`kept ${work}`);
