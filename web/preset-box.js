@@ -51,12 +51,14 @@ export function createPresetBox({ app, setDrawing, turnOnSteps, shared }) {
     showCaption('');
   }
 
-  // The corpus of real PLCs beside the repository (../shared/data), when the server offers it
-  // (web/serve.mjs does; a plain static host does not, and the group is simply absent).
+  // The corpus of real PLCs beside the repository (../shared/data), when the server offers it:
+  // web/serve.mjs does, at the URL of the page's <meta name="ruppert-shared-data">; the static site
+  // (build-site.mjs) has no such tag, so it asks for nothing and the group is simply absent.
+  const sharedUrl = document.querySelector('meta[name="ruppert-shared-data"]')?.content || null;
   async function addSharedPresets() {
     let list;
     try {
-      const response = await fetch('../shared-data/index.json', { cache: 'no-cache' });
+      const response = await fetch(new URL('index.json', new URL(sharedUrl, location.href)), { cache: 'no-cache' });
       if (!response.ok) return;
       list = await response.json();
     } catch {
@@ -78,7 +80,7 @@ export function createPresetBox({ app, setDrawing, turnOnSteps, shared }) {
   async function loadSharedPreset(name) {
     const failed = loading();
     try {
-      const response = await fetch(`../shared-data/${encodeURIComponent(name)}`, { cache: 'no-cache' });
+      const response = await fetch(new URL(encodeURIComponent(name), new URL(sharedUrl, location.href)), { cache: 'no-cache' });
       if (!response.ok) throw new Error(`the server answered ${response.status}`);
       const plc = await parseInput(await response.text(), name);
       showCaption('');
@@ -90,7 +92,7 @@ export function createPresetBox({ app, setDrawing, turnOnSteps, shared }) {
       setStatus(`Could not load ${name}: ${error.message}`, 'error');
     }
   }
-  if (shared) addSharedPresets();
+  if (shared && sharedUrl !== null) addSharedPresets();
 
   /** The page opens on the default preset when its link has no drawing (no undo step). */
   function openDefault() {
