@@ -17,10 +17,10 @@ function showCaption(text) {
 /**
  * @param {object} app the page's state (drawing, stepMode)
  * @param {(drawing, how) => void} setDrawing
- * @param {() => void} turnOnSteps step mode on, for a preset that asks for it
+ * @param {(on: boolean) => void} restartSteps step mode on or off as a preset asks, from step 0
  * @param {boolean} shared whether to look for the corpus (not in an embed)
  */
-export function createPresetBox({ app, setDrawing, turnOnSteps, shared }) {
+export function createPresetBox({ app, setDrawing, restartSteps, shared }) {
   for (const preset of PRESETS) {
     const option = document.createElement('option');
     option.value = preset.id;
@@ -34,15 +34,23 @@ export function createPresetBox({ app, setDrawing, turnOnSteps, shared }) {
       loadSharedPreset(value.slice(SHARED_PRESET.length));
       return;
     }
-    applyPreset(findPreset(value), app.drawing.options);
+    if (value === '') showCaption('');
+    else open(value);
   });
 
-  /** Loads a preset: its drawing, its options over `base`, its caption, and step mode if it asks. */
-  function applyPreset(preset, base) {
-    showCaption(preset?.caption ?? '');
-    if (!preset) return;
-    if (preset.steps && !app.stepMode) turnOnSteps();
-    setDrawing({ ...preset.build(), options: { ...base, ...(preset.options ?? {}) } });
+  /**
+   * Opens the preset of that id in the same state whatever came before: its drawing, the default
+   * options with its own over them, its caption, step mode as it asks (from step 0), the view fitted.
+   * Returns false when there is no such preset.
+   */
+  function open(id, { commit = true, steps = true } = {}) {
+    const preset = findPreset(id);
+    if (!preset) return false;
+    $('preset').value = preset.id;
+    showCaption(preset.caption ?? '');
+    if (steps) restartSteps(Boolean(preset.steps));
+    setDrawing({ ...preset.build(), options: { ...DEFAULT_OPTIONS, ...(preset.options ?? {}) } }, { commit });
+    return true;
   }
 
   /** The drawing is no longer a preset (edited, a file, a message): the box and caption say so. */
@@ -94,13 +102,13 @@ export function createPresetBox({ app, setDrawing, turnOnSteps, shared }) {
   }
   if (shared && sharedUrl !== null) addSharedPresets();
 
-  /** The page opens on the default preset when its link has no drawing (no undo step). */
+  /**
+   * The page opens on the default preset when its link has no drawing (no undo step; step mode
+   * as the link says).
+   */
   function openDefault() {
-    const preset = findPreset(DEFAULT_PRESET);
-    $('preset').value = DEFAULT_PRESET;
-    showCaption(preset.caption ?? '');
-    setDrawing({ ...preset.build(), options: { ...DEFAULT_OPTIONS, ...(preset.options ?? {}) } }, { commit: false });
+    open(DEFAULT_PRESET, { commit: false, steps: false });
   }
 
-  return { notPreset, openDefault };
+  return { notPreset, open, openDefault };
 }
