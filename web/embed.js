@@ -25,9 +25,9 @@
 // `id` is the host's: a string, a number or null (absent), echoed in the replies. Messages whose
 // type does not start with 'ruppert:' belong to other scripts and are left alone; so are the
 // page's own kinds of message (ready, meshed, ...), so that two pages never answer each other.
-// Replies go to the message's sender, the page's own news to window.parent (nothing when the page
-// is not in a frame). They carry a drawing's mesh, nothing private, so any origin may receive them
-// ('*'); any origin may also send a drawing to show.
+// Replies go to the message's sender, the page's own news to window.parent (the page itself when
+// it is not in a frame: it ignores what it sent). They carry a drawing's mesh, nothing private, so
+// any origin may receive them ('*'); any origin may also send a drawing to show.
 import { DEFAULT_OPTIONS } from './drawing.js';
 import { ENCROACHMENT_LABELS, PLACEMENT_LABELS, VARIANT_LABELS } from './labels.js';
 
@@ -43,7 +43,7 @@ export const isEditable = () => !isEmbedded() || params().get('edit') === '1';
 export const packageVersion = () => document.querySelector('meta[name="ruppert-version"]')?.content || null;
 
 function post(message, target = window.parent) {
-  if (target === null || target === window) return;  // not in a frame: nobody to tell
+  if (target === null) return;
   try {
     target.postMessage(message, '*');
   } catch {
@@ -196,7 +196,6 @@ export function checkMessage(data) {
  */
 export function listenToHost({ onLoad, onPreset, onStep, onGetMesh, onHello }) {
   window.addEventListener('message', (event) => {
-    if (event.source === window) return;  // the page's own news, when it is not in a frame
     const data = event.data;
     const source = event.source ?? window.parent;
     if (typeof data === 'string' && data.startsWith('ruppert:')) {
