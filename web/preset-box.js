@@ -40,7 +40,8 @@ export function createPresetBox({ app, setDrawing, restartSteps, shared }) {
 
   /**
    * Opens the preset of that id in the same state whatever came before: its drawing, the default
-   * options with its own over them, its caption, step mode as it asks (from step 0), the view fitted.
+   * options with its own over them, its caption, the view fitted, and the replay at step 0 when it
+   * asks for steps, else at the final mesh (steps-panel.js's restart).
    * Returns false when there is no such preset.
    */
   function open(id, { commit = true, steps = true } = {}) {

@@ -79,13 +79,14 @@ export function createStepsPanel({ app, renderer, scheduleDraw, writeLinkSoon, r
   }
 
   /**
-   * A drawing opened afresh (a preset): step mode as it asks, the replay from step 0, nothing
-   * pending. Meshing again is the caller's.
+   * A drawing opened afresh (a preset), nothing pending; meshing again is the caller's. One that
+   * asks for steps turns step mode on at step 0; another leaves step mode as the reader set it, at
+   * the final mesh when it is on (at step 0 when it is turned on later, as on a fresh page).
    */
-  function restart(on) {
-    setMode(on);
+  function restart(asksSteps) {
+    if (asksSteps) setMode(true);
     stepper.pause();
-    stepper.index = 0;
+    stepper.index = app.stepMode && !asksSteps ? Number.MAX_SAFE_INTEGER : 0;  // clamped by the new events
     app.pendingStep = null;
     hostRequest = null;
   }
