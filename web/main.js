@@ -3,10 +3,10 @@
 // Data flow: an edit changes `drawing` -> history + URL hash (page-link.js) -> meshing.js
 // (MeshScheduler: debounced, in a worker) -> the renderer, the mesh panel, the display panel,
 // step mode, the status line, and a postMessage to a host.
-import { DEFAULT_OPTIONS, cloneDrawing, drawingBounds, emptyDrawing, fromPlc } from './drawing.js';
+import { cloneDrawing, drawingBounds, emptyDrawing, fromPlc } from './drawing.js';
 import { createDisplayPanel } from './display-panel.js';
 import { Editor } from './editor.js';
-import { isEditable, isEmbedded, listenToHost, postError } from './embed.js';
+import { isEditable, isEmbedded, listenToHost, postError, postMesh, postReady } from './embed.js';
 import { createExportMenu } from './export-menu.js';
 import { createFilePanel } from './file-panel.js';
 import { parsePolyText } from './files.js';
@@ -17,6 +17,7 @@ import { createMeshing, loading } from './meshing.js';
 import { createPageLink } from './page-link.js';
 import { createParametersPanel } from './parameters-panel.js';
 import { createPresetBox } from './preset-box.js';
+import { PRESETS, findPreset } from './presets.js';
 import { Renderer } from './render.js';
 import { setStatus } from './status-line.js';
 import { createStepsPanel } from './steps-panel.js';
@@ -178,7 +179,9 @@ const hover = createHoverInfo({ app, scheduleDraw });
 const parameters = createParametersPanel({ app, editor, changed });
 const display = createDisplayPanel({ app, scheduleDraw, writeLink: link.write });
 const meshPanel = createMeshPanel();
-const steps = createStepsPanel({ app, renderer, scheduleDraw, writeLinkSoon: link.writeSoon, remeshNow: () => meshing.remesh(0) });
+const steps = createStepsPanel({
+  app, renderer, scheduleDraw, writeLinkSoon: link.writeSoon, remeshNow: () => meshing.remesh(0, { quiet: true }),
+});
 const meshing = createMeshing({
   app, renderer, meshPanel, display, steps, scheduleDraw,
   onArrival: bench ? () => {
@@ -190,27 +193,60 @@ const toolbar = createToolbar({
   app, editor, history, canvas, fitView, scheduleDraw, setDrawing,
   syncRegion: parameters.syncRegion, stepShortcut: steps.shortcut,
 });
-const presets = createPresetBox({ app, setDrawing, turnOnSteps: steps.turnOn, shared: !embedded });
+const presets = createPresetBox({ app, setDrawing, restartSteps: steps.restart, shared: !embedded });
 createFilePanel({ app, setDrawing, notPreset: presets.notPreset });
 createExportMenu({ app, renderer, draw, writeLink: link.write });
 
-// ---------------------------------------------------------------- embedding
+// ---------------------------------------------------------------- embedding (embed.js)
+const SETTLED = ['done', 'error', 'cancelled', 'empty'];
+/** Resolves once no meshing is queued, running or being read (body[data-mesh-state]). */
+function meshSettled() {
+  return new Promise((resolve) => {
+    if (SETTLED.includes(document.body.dataset.meshState)) {
+      resolve();
+      return;
+    }
+    const observer = new MutationObserver(() => {
+      if (!SETTLED.includes(document.body.dataset.meshState)) return;
+      observer.disconnect();
+      resolve();
+    });
+    observer.observe(document.body, { attributes: true, attributeFilter: ['data-mesh-state'] });
+  });
+}
+
 listenToHost({
   async onLoad({ poly, options, id }) {
     const failed = loading();
     try {
       const plc = await parsePolyText(poly, '<ruppert:load>');
-      meshing.forHost(id);
       presets.notPreset();
-      setDrawing(fromPlc(plc, { ...DEFAULT_OPTIONS, ...app.drawing.options, ...options }));
+      meshing.forHost(id);
+      setDrawing(fromPlc(plc, options));
     } catch (error) {
       failed();
       setStatus(`Could not load the posted drawing: ${error.message}`, 'error');
       postError(error, id);
     }
   },
-  onStep: steps.hostStep,
+  onPreset({ name, id, source }) {
+    if (!findPreset(name)) {
+      postError({ code: 'UNKNOWN_PRESET', message: `no preset named '${name}' (the presets are ${PRESETS.map((p) => p.id).join(', ')})` }, id, source);
+      return;
+    }
+    meshing.forHost(id);
+    presets.open(name);
+  },
+  onStep: ({ index, id }) => steps.hostStep(index, id),
+  async onGetMesh({ id, source }) {
+    await meshSettled();
+    if (app.mesh) postMesh(app.mesh, id, source);
+    else postError({ code: 'NO_MESH', message: `no mesh to send (${document.body.dataset.meshState})` }, id, source);
+  },
+  onHello: ({ id, source }) => postReady({ presets: PRESETS.map((p) => p.id), id, target: source }),
 });
+// The first message to the host: the protocol's version and what the page offers.
+postReady({ presets: PRESETS.map((p) => p.id) });
 
 // ---------------------------------------------------------------- start
 const linked = link.read();

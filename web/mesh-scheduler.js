@@ -17,7 +17,7 @@ export const ABORT_AFTER_MS = 400;
 export class MeshScheduler {
   /**
    * @param {{ onStart?: () => void, onResult: (mesh, request) => void, onError: (error, request) => void,
-   *           onProgress?: (progress) => void }} handlers
+   *           onProgress?: (progress) => void, onSuperseded?: (request) => void }} handlers
    */
   constructor(handlers) {
     this.handlers = handlers;
@@ -31,10 +31,13 @@ export class MeshScheduler {
   /**
    * Meshes `plc` with `options` after `delay` ms (0: now), or once the running mesh is done.
    * `id` (a host's request id) rides along to onResult/onError; a request that replaces a waiting
-   * one keeps its id when it has none.
+   * or a running one keeps its id when it has none. `quiet`: the mesh is the same as the last one
+   * (only its trace is asked for or dropped); a request is quiet when all it replaces were.
    */
-  request(plc, options, delay = DEBOUNCE_MS, id = null) {
-    this.waiting = { plc, options, id: id ?? this.waiting?.id ?? null };
+  request(plc, options, delay = DEBOUNCE_MS, id = null, quiet = false) {
+    const replaced = this.waiting;
+    if (replaced && replaced.id !== null && id !== null && replaced.id !== id) this.handlers.onSuperseded?.(replaced);
+    this.waiting = { plc, options, id: id ?? replaced?.id ?? null, quiet: quiet && (replaced?.quiet ?? true) };
     if (this.running !== null) {
       if (performance.now() - this.running.started > ABORT_AFTER_MS) this.startWaiting();
       return;
@@ -55,7 +58,15 @@ export class MeshScheduler {
   }
 
   run(request) {
+    const superseded = this.running?.request;
     this.running?.controller.abort();
+    if (superseded) {
+      // The aborted request's host (if any) gets this one's reply, or, when this one answers
+      // another host request, is told that its request gave way.
+      if (request.id === null) request.id = superseded.id;
+      else if (superseded.id !== null && superseded.id !== request.id) this.handlers.onSuperseded?.(superseded);
+      request.quiet &&= superseded.quiet;
+    }
     const generation = ++this.generation;
     const controller = new AbortController();
     this.running = { controller, request, started: performance.now() };

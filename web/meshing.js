@@ -54,7 +54,9 @@ export function createMeshing({ app, renderer, meshPanel, display, steps, schedu
       // A result that a newer, still debounced request will replace is shown, but not 'done'.
       document.body.dataset.meshState = scheduler.queued ? 'queued' : 'done';
       document.body.dataset.meshCount = String(Number(document.body.dataset.meshCount ?? 0) + 1);
-      postMeshed(mesh, request.id);
+      // The host hears of a new mesh: one per load or preset it sent (with its id), and one per
+      // change of the reader's; a mesh that only adds or drops the trace (step mode) is the same.
+      if (request.id !== null || !request.quiet) postMeshed(mesh, request.id);
       steps.showPending();
       scheduleDraw();
     },
@@ -64,6 +66,7 @@ export function createMeshing({ app, renderer, meshPanel, display, steps, schedu
         setStatus('Meshing cancelled. Change the drawing or a parameter to mesh again.', 'warn');
         if (app.mesh) meshPanel.cancelled();
         document.body.dataset.meshState = scheduler.queued ? 'queued' : 'cancelled';
+        if (request?.id != null) postError(error, request.id);
         return;
       }
       clear();
@@ -72,6 +75,9 @@ export function createMeshing({ app, renderer, meshPanel, display, steps, schedu
       document.body.dataset.meshState = scheduler.queued ? 'queued' : 'error';
       postError(error, request?.id ?? null);
       scheduleDraw();
+    },
+    onSuperseded(request) {
+      postError({ code: 'CANCELLED', message: 'a newer request from the host replaced this one before it was meshed' }, request.id);
     },
   });
   $('cancel').addEventListener('click', () => scheduler.cancel());
@@ -94,9 +100,14 @@ export function createMeshing({ app, renderer, meshPanel, display, steps, schedu
   // The id of a host's 'ruppert:load', given to the mesh request it causes (and echoed in the reply).
   let hostId = null;
 
-  /** Meshes the drawing after `delay` ms (the scheduler's own throttle when undefined). */
-  function remesh(delay) {
+  /**
+   * Meshes the drawing after `delay` ms (the scheduler's own throttle when undefined). `quiet`:
+   * the drawing and its options did not change (step mode asks for the trace, or drops it).
+   */
+  function remesh(delay, { quiet = false } = {}) {
     if (pointCount(app.drawing) < 3) {
+      if (hostId !== null) postError({ code: 'EMPTY_INPUT', message: 'the drawing has fewer than three points: nothing to mesh' }, hostId);
+      hostId = null;
       scheduler.clear();
       stopProgress();
       clear();
@@ -109,7 +120,7 @@ export function createMeshing({ app, renderer, meshPanel, display, steps, schedu
     }
     // 'queued' until the result of this very request arrives (tests and hosts can wait for 'done').
     document.body.dataset.meshState = 'queued';
-    scheduler.request(toPlc(app.drawing), toMeshOptions(app.drawing, { trace: app.stepMode }), delay, hostId);
+    scheduler.request(toPlc(app.drawing), toMeshOptions(app.drawing, { trace: app.stepMode }), delay, hostId, quiet);
     hostId = null;
   }
 

@@ -17,10 +17,10 @@ function showCaption(text) {
 /**
  * @param {object} app the page's state (drawing, stepMode)
  * @param {(drawing, how) => void} setDrawing
- * @param {() => void} turnOnSteps step mode on, for a preset that asks for it
+ * @param {(on: boolean) => void} restartSteps step mode on or off as a preset asks, from step 0
  * @param {boolean} shared whether to look for the corpus (not in an embed)
  */
-export function createPresetBox({ app, setDrawing, turnOnSteps, shared }) {
+export function createPresetBox({ app, setDrawing, restartSteps, shared }) {
   for (const preset of PRESETS) {
     const option = document.createElement('option');
     option.value = preset.id;
@@ -34,15 +34,24 @@ export function createPresetBox({ app, setDrawing, turnOnSteps, shared }) {
       loadSharedPreset(value.slice(SHARED_PRESET.length));
       return;
     }
-    applyPreset(findPreset(value), app.drawing.options);
+    if (value === '') showCaption('');
+    else open(value);
   });
 
-  /** Loads a preset: its drawing, its options over `base`, its caption, and step mode if it asks. */
-  function applyPreset(preset, base) {
-    showCaption(preset?.caption ?? '');
-    if (!preset) return;
-    if (preset.steps && !app.stepMode) turnOnSteps();
-    setDrawing({ ...preset.build(), options: { ...base, ...(preset.options ?? {}) } });
+  /**
+   * Opens the preset of that id in the same state whatever came before: its drawing, the default
+   * options with its own over them, its caption, the view fitted, and the replay at step 0 when it
+   * asks for steps, else at the final mesh (steps-panel.js's restart).
+   * Returns false when there is no such preset.
+   */
+  function open(id, { commit = true, steps = true } = {}) {
+    const preset = findPreset(id);
+    if (!preset) return false;
+    $('preset').value = preset.id;
+    showCaption(preset.caption ?? '');
+    if (steps) restartSteps(Boolean(preset.steps));
+    setDrawing({ ...preset.build(), options: { ...DEFAULT_OPTIONS, ...(preset.options ?? {}) } }, { commit });
+    return true;
   }
 
   /** The drawing is no longer a preset (edited, a file, a message): the box and caption say so. */
@@ -51,12 +60,14 @@ export function createPresetBox({ app, setDrawing, turnOnSteps, shared }) {
     showCaption('');
   }
 
-  // The corpus of real PLCs beside the repository (../shared/data), when the server offers it
-  // (web/serve.mjs does; a plain static host does not, and the group is simply absent).
+  // The corpus of real PLCs beside the repository (../shared/data), when the server offers it:
+  // web/serve.mjs does, at the URL of the page's <meta name="ruppert-shared-data">; the static site
+  // (build-site.mjs) has no such tag, so it asks for nothing and the group is simply absent.
+  const sharedUrl = document.querySelector('meta[name="ruppert-shared-data"]')?.content || null;
   async function addSharedPresets() {
     let list;
     try {
-      const response = await fetch('../shared-data/index.json', { cache: 'no-cache' });
+      const response = await fetch(new URL('index.json', new URL(sharedUrl, location.href)), { cache: 'no-cache' });
       if (!response.ok) return;
       list = await response.json();
     } catch {
@@ -78,7 +89,7 @@ export function createPresetBox({ app, setDrawing, turnOnSteps, shared }) {
   async function loadSharedPreset(name) {
     const failed = loading();
     try {
-      const response = await fetch(`../shared-data/${encodeURIComponent(name)}`, { cache: 'no-cache' });
+      const response = await fetch(new URL(encodeURIComponent(name), new URL(sharedUrl, location.href)), { cache: 'no-cache' });
       if (!response.ok) throw new Error(`the server answered ${response.status}`);
       const plc = await parseInput(await response.text(), name);
       showCaption('');
@@ -90,15 +101,15 @@ export function createPresetBox({ app, setDrawing, turnOnSteps, shared }) {
       setStatus(`Could not load ${name}: ${error.message}`, 'error');
     }
   }
-  if (shared) addSharedPresets();
+  if (shared && sharedUrl !== null) addSharedPresets();
 
-  /** The page opens on the default preset when its link has no drawing (no undo step). */
+  /**
+   * The page opens on the default preset when its link has no drawing (no undo step; step mode
+   * as the link says).
+   */
   function openDefault() {
-    const preset = findPreset(DEFAULT_PRESET);
-    $('preset').value = DEFAULT_PRESET;
-    showCaption(preset.caption ?? '');
-    setDrawing({ ...preset.build(), options: { ...DEFAULT_OPTIONS, ...(preset.options ?? {}) } }, { commit: false });
+    open(DEFAULT_PRESET, { commit: false, steps: false });
   }
 
-  return { notPreset, openDefault };
+  return { notPreset, open, openDefault };
 }

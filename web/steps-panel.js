@@ -15,19 +15,26 @@ const $ = (id) => document.getElementById(id);
  * @param {() => void} remeshNow mesh again (the trace is recorded only in step mode)
  */
 export function createStepsPanel({ app, renderer, scheduleDraw, writeLinkSoon, remeshNow }) {
+  // A host's 'ruppert:step' waiting for its reply: { index, id }.
+  let hostRequest = null;
   // The mesh of each step, meshed on demand; shown when it is still the step wanted.
   const replay = new StepReplay((k, mesh) => {
     if (!app.stepMode || k !== stepper.index) return;
     app.stepMesh = mesh;
     app.hoverTriangle = -1;
     renderer.setMesh(mesh);
-    const { vertices, triangles, minAngle } = mesh.stats;
+    const { vertices, triangles, minAngle, maxAngle } = mesh.stats;
     $('step-mesh').textContent = `Mesh at step ${k}: ${vertices.toLocaleString('en-US')} vertices, ` +
       `${triangles.toLocaleString('en-US')} triangles, smallest angle ${minAngle.toFixed(2)}°`;
     document.body.dataset.stepShown = String(k);
     const events = app.mesh.events;
+    let id = null;
+    if (hostRequest !== null && Math.min(hostRequest.index, stepper.count) === k) {
+      id = hostRequest.id;
+      hostRequest = null;
+    }
     postStepped({
-      index: k, total: stepper.count, vertices, triangles,
+      id, index: k, total: stepper.count, vertices, triangles, minAngle, maxAngle,
       event: k > 0 ? describeEvent(events, k - 1, stepper.context) : null,
     });
     scheduleDraw();
@@ -44,27 +51,44 @@ export function createStepsPanel({ app, renderer, scheduleDraw, writeLinkSoon, r
     scheduleDraw();
   });
 
-  /** Follows the checkbox. */
-  function setStepMode() {
-    app.stepMode = $('step-mode').checked;
-    $('stepper').hidden = !app.stepMode;
-    if (!app.stepMode) {
+  /** Step mode on or off, without meshing again (the caller does). */
+  function setMode(on) {
+    $('step-mode').checked = on;
+    app.stepMode = on;
+    $('stepper').hidden = !on;
+    if (!on) {
       stepper.pause();
       replay.clear();
       app.stepMesh = null;
       if (app.mesh) renderer.setMesh(app.mesh);
     }
+  }
+
+  /** Follows the checkbox. */
+  function setStepMode() {
+    setMode($('step-mode').checked);
     // Events are recorded only on request (options.trace): mesh again.
     remeshNow();
     scheduleDraw();
   }
   $('step-mode').addEventListener('change', setStepMode);
 
-  /** Step mode on before a mesh is asked for (a preset that asks for it, a link): no remesh here. */
+  /** Step mode on before a mesh is asked for (a link): no remesh here. */
   function turnOn() {
-    $('step-mode').checked = true;
-    app.stepMode = true;
-    $('stepper').hidden = false;
+    setMode(true);
+  }
+
+  /**
+   * A drawing opened afresh (a preset), nothing pending; meshing again is the caller's. One that
+   * asks for steps turns step mode on at step 0; another leaves step mode as the reader set it, at
+   * the final mesh when it is on (at step 0 when it is turned on later, as on a fresh page).
+   */
+  function restart(asksSteps) {
+    if (asksSteps) setMode(true);
+    stepper.pause();
+    stepper.index = app.stepMode && !asksSteps ? Number.MAX_SAFE_INTEGER : 0;  // clamped by the new events
+    app.pendingStep = null;
+    hostRequest = null;
   }
 
   /** A new mesh (with its trace in step mode) of the request's input and options. */
@@ -89,7 +113,8 @@ export function createStepsPanel({ app, renderer, scheduleDraw, writeLinkSoon, r
   }
 
   /** A host's 'ruppert:step': step mode on if it is not, the step once its mesh is there. */
-  function hostStep(index) {
+  function hostStep(index, id = null) {
+    hostRequest = { index, id };
     if (!app.stepMode) {
       app.pendingStep = index;
       $('step-mode').checked = true;
@@ -117,6 +142,6 @@ export function createStepsPanel({ app, renderer, scheduleDraw, writeLinkSoon, r
 
   return {
     get index() { return stepper.index; },
-    turnOn, meshed, clear, showPending, hostStep, shortcut,
+    turnOn, restart, meshed, clear, showPending, hostStep, shortcut,
   };
 }

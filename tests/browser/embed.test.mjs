@@ -22,7 +22,7 @@ after(async () => {
 });
 
 const replies = () => page.locator('#log li').evaluateAll((items) => items.map((li) => ({
-  kind: li.className, text: li.textContent, triangles: Number(li.dataset.triangles),
+  kind: li.className, text: li.textContent, triangles: Number(li.dataset.triangles), id: li.dataset.id,
 })));
 
 async function waitForReplies(count) {
@@ -31,10 +31,12 @@ async function waitForReplies(count) {
 }
 
 test('the host page loads a .poly into the frame and prints the meshed reply', async () => {
-  // Reply 1: the frame's default drawing. Reply 2: the 8 x 5 rectangle the host sent, max area 1.
-  const [first, second] = await waitForReplies(2);
-  assert.equal(first.kind, 'meshed');
+  // On ruppert:ready the host sends the 8 x 5 rectangle, max area 1, with id 1: one reply.
+  await page.waitForFunction(() => document.querySelector('#log li[data-id="1"]'), null, { timeout: 20_000 });
+  assert.match(await page.locator('#ready').textContent(), /^Ready: protocol 1, package \d+\.\d+\.\d+\.$/);
+  const second = (await replies()).find((r) => r.id === '1');
   assert.equal(second.kind, 'meshed');
+  assert.equal((await replies()).filter((r) => r.id === '1').length, 1);
   assert.ok(second.triangles >= 40, `an 8 x 5 rectangle with max area 1 has at least 40 triangles: ${second.text}`);
   assert.match(second.text, /complete: true/);
   // The frame shows the same numbers as its own (hidden) stats panel.
@@ -74,6 +76,19 @@ test('a malformed .poly gets a ruppert:error reply', async () => {
   const reply = (await waitForReplies(before + 1)).at(-1);
   assert.equal(reply.kind, 'error');
   assert.match(reply.text, /PARSE_ERROR/);
+});
+
+test('the example host opens a preset by name and gets its mesh', async () => {
+  const before = (await replies()).length;
+  await page.selectOption('#preset', 'figure-6-4');
+  await page.click('#send-preset');
+  const meshed = (await waitForReplies(before + 1)).at(-1);
+  assert.equal(meshed.kind, 'meshed');
+  await page.click('#get-mesh');
+  const mesh = (await waitForReplies(before + 2)).at(-1);
+  assert.equal(mesh.kind, 'mesh');
+  assert.equal(mesh.triangles, meshed.triangles);
+  assert.match(await page.frameLocator('#mesher').locator('#preset-caption').textContent(), /^Figure 6\.4/);
 });
 
 test('the embed is read-only unless &edit=1', async () => {
