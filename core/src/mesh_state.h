@@ -9,6 +9,7 @@
 // Each field says which stages write it ("w:") and which read it ("r:").
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -34,9 +35,12 @@ struct MeshState {
   // (intersections), refine (Steiner vertices; Unused when an insertion is refused). r: constrain
   // (insertHull), refine (acute corners, which vertices may move, seditious edges), output (vertex kinds).
   std::vector<VertexKind> kind;
-  // Per vertex: the input segment it was inserted on (refine's subsegment splits), or -1.
-  // r: refine (seditious edges).
+  // Per vertex: the input segment it was inserted on (refine's subsegment splits), -2 - k for
+  // hull edge k (hullEdgeEnds), or -1. w: refine. r: refine (seditious edges).
   std::vector<std::int32_t> onSegment;
+  // Per convex-hull (or bounding-box) edge that refinement split: its two end vertices, so that the
+  // seditious rule (§6.6) treats it as the segment it stands for. w and r: refine.
+  std::vector<std::array<std::uint32_t, 2>> hullEdgeEnds;
   // Vertices [0, inputCount) are the distinct input points. w: build. r: constrain, refine, output,
   // initAttributes, the size measure.
   std::uint32_t inputCount = 0;

@@ -172,9 +172,13 @@ bool Refiner::seditious(std::uint32_t s, const TriangleShape& sh) const {
   const std::uint32_t u = t_.origin(h), w = t_.dest(h);
   if (m_.kind[u] != VertexKind::SegmentSplit || m_.kind[w] != VertexKind::SegmentSplit) return false;
   const std::int32_t su = m_.onSegment[u], sw = m_.onSegment[w];
-  if (su < 0 || sw < 0 || su == sw) return false;
-  const std::uint32_t a0 = m_.segmentEnd(su, 0), a1 = m_.segmentEnd(su, 1);
-  const std::uint32_t b0 = m_.segmentEnd(sw, 0), b1 = m_.segmentEnd(sw, 1);
+  if (su == -1 || sw == -1 || su == sw) return false;
+  // An input segment's ends, or a hull edge's (which stands for a segment: --convex-hull).
+  auto end = [&](std::int32_t code, int e) {
+    return code >= 0 ? m_.segmentEnd(static_cast<std::size_t>(code), e) : m_.hullEdgeEnds[static_cast<std::size_t>(-2 - code)][e];
+  };
+  const std::uint32_t a0 = end(su, 0), a1 = end(su, 1);
+  const std::uint32_t b0 = end(sw, 0), b1 = end(sw, 1);
   double z[2];
   if (a0 == b0 || a0 == b1) {
     z[0] = t_.xy[2 * a0], z[1] = t_.xy[2 * a0 + 1];

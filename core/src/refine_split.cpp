@@ -90,6 +90,15 @@ bool Refiner::subsegmentSplitPoint(std::uint32_t h, const double* pa, const doub
   return mesh_.representable(xy);
 }
 
+// The onSegment code of a split of subsegment a-b of a hull edge: its ends' code where one is a
+// split already, else a new hull edge with a and b as its ends.
+std::int32_t Refiner::hullEdgeOf(std::uint32_t a, std::uint32_t b) {
+  if (m_.onSegment[a] <= -2) return m_.onSegment[a];
+  if (m_.onSegment[b] <= -2) return m_.onSegment[b];
+  m_.hullEdgeEnds.push_back({a, b});
+  return -1 - static_cast<std::int32_t>(m_.hullEdgeEnds.size());
+}
+
 // Split subsegment h (§6.2, §6.6). `bt` and `rejected`: the triangle whose point was rejected
 // and that point, if that is why, for the trace. False if it cannot be split (precision floor).
 bool Refiner::splitSubsegment(std::uint32_t h, const BadTriangle* bt, const double* rejected) {
@@ -122,7 +131,7 @@ bool Refiner::splitSubsegment(std::uint32_t h, const BadTriangle* bt, const doub
     return false;
   }
   if (!mayInsert()) return false;
-  const std::int32_t segment = t_.con[h] >= 0 ? t_.con[h] : -1;
+  const std::int32_t segment = t_.con[h] >= 0 ? t_.con[h] : t_.con[h] == kHullEdge ? hullEdgeOf(a, b) : -1;
   const double x = split[0], y = split[1];
   const std::uint32_t v = m_.addVertex(x, y, VertexKind::SegmentSplit, segment);
   corner_.push_back(0);

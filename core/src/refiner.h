@@ -270,6 +270,7 @@ class Refiner {
 
   // Split subsegment h (§6.2, §6.6). `bt` and `rejected`: the triangle whose point was rejected
   // and that point, if that is why, for the trace. False if it cannot be split (precision floor).
+  std::int32_t hullEdgeOf(std::uint32_t a, std::uint32_t b);
   bool splitSubsegment(std::uint32_t h, const BadTriangle* bt, const double* rejected);
 
   // The first choice of point for a bad triangle: its circumcenter, or for a skinny one (unless

@@ -4,6 +4,7 @@
 #include "validator.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -898,8 +899,39 @@ std::function<bool(const Mesh&, std::uint32_t)> seditiousTest(const Mesh& mesh, 
       if (v < segmentOf->size() && mesh.vertexKinds[v] == std::uint8_t(ruppert::VertexKind::SegmentSplit))
         (*segmentOf)[v] = mesh.segmentIds[k];
     }
+  // Subsegments without an input segment are pieces of the convex hull's (or the bounding box's)
+  // edges, which stand for segments (Triangle's -c makes them segments): their split vertices, chain by
+  // chain, get the two ends of their chain (the vertices where it stops being split vertices), as
+  // code -2 - chain in segmentOf.
+  auto hullEnds = std::make_shared<std::vector<std::array<std::uint32_t, 2>>>();
+  {
+    const std::size_t n = mesh.points.size() / 2;
+    std::vector<std::vector<std::uint32_t>> along(n);
+    for (std::size_t k = 0; k < mesh.segmentIds.size(); ++k)
+      if (mesh.segmentIds[k] < 0 && mesh.segments[2 * k] < n && mesh.segments[2 * k + 1] < n) {
+        along[mesh.segments[2 * k]].push_back(mesh.segments[2 * k + 1]);
+        along[mesh.segments[2 * k + 1]].push_back(mesh.segments[2 * k]);
+      }
+    auto isSplit = [&](std::uint32_t v) { return mesh.vertexKinds[v] == std::uint8_t(ruppert::VertexKind::SegmentSplit); };
+    for (std::uint32_t v = 0; v < n; ++v) {
+      if (!isSplit(v) || (*segmentOf)[v] != -1 || along[v].size() != 2) continue;
+      const auto code = static_cast<std::int32_t>(-2 - static_cast<std::int64_t>(hullEnds->size()));
+      std::array<std::uint32_t, 2> ends{};
+      (*segmentOf)[v] = code;
+      for (int side = 0; side < 2; ++side) {
+        std::uint32_t previous = v, at = along[v][side];
+        while (isSplit(at) && along[at].size() == 2 && (*segmentOf)[at] == -1) {
+          (*segmentOf)[at] = code;
+          const std::uint32_t next = along[at][0] == previous ? along[at][1] : along[at][0];
+          previous = at, at = next;
+        }
+        ends[side] = at;
+      }
+      hullEnds->push_back(ends);
+    }
+  }
   const ruppert::Plc* plc = &input;
-  return [segmentOf, plc](const Mesh& m, std::uint32_t t) {
+  return [segmentOf, hullEnds, plc](const Mesh& m, std::uint32_t t) {
     const double* p[3];
     std::uint32_t v[3];
     for (int i = 0; i < 3; ++i) v[i] = m.triangles[3 * std::size_t(t) + i], p[i] = &m.points[2 * std::size_t(v[i])];
@@ -913,8 +945,11 @@ std::function<bool(const Mesh&, std::uint32_t)> seditiousTest(const Mesh& mesh, 
     }
     const std::uint32_t u = v[(shortest + 1) % 3], w = v[(shortest + 2) % 3];
     const std::int32_t su = (*segmentOf)[u], sw = (*segmentOf)[w];
-    if (su < 0 || sw < 0 || su == sw) return false;
-    auto end = [plc](std::int32_t s, int e) { return &plc->points[2 * std::size_t(plc->segments[2 * std::size_t(s) + e])]; };
+    if (su == -1 || sw == -1 || su == sw) return false;
+    auto end = [plc, hullEnds, &m](std::int32_t s, int e) {
+      if (s <= -2) return &m.points[2 * std::size_t((*hullEnds)[std::size_t(-2 - s)][e])];
+      return &plc->points[2 * std::size_t(plc->segments[2 * std::size_t(s) + e])];
+    };
     const double *a0 = end(su, 0), *a1 = end(su, 1), *b0 = end(sw, 0), *b1 = end(sw, 1);
     auto same = [](const double* x, const double* y) { return x[0] == y[0] && x[1] == y[1]; };
     double z[2];
