@@ -40,7 +40,9 @@ export const COLOURS = {
   region: '#5f3dc4',
   notice: '#e8590c',
   exempt: '#7048e8',     // triangles nestled in small input angles (§6.6), hatched
-  seditious: '#f76707',  // seditious edges and their triangles (§6.6)
+  // Seditious edges and their triangles (§6.6): teal, a hue none of the angle classes has (the
+  // 20-25° class is orange).
+  seditious: '#0b7285',
 };
 
 function angleClass(angle) {
@@ -308,7 +310,7 @@ export class Renderer {
 
   /**
    * The triangles left skinny on purpose (§6.6, exemptions.js): those nestled in a small input
-   * angle hatched, those on a seditious edge outlined, the seditious edge itself thick, in orange.
+   * angle hatched, those on a seditious edge outlined, the seditious edge itself thick, in teal.
    */
   drawExemptions(x, view, world, screen, px) {
     const { ctx } = this;
