@@ -131,12 +131,13 @@ test('the overlay has a legend, its encroachment region as in force, and precise
   await page.selectOption('#encroachment', 'lens');
   assert.equal(await settle(page), 'done');
   assert.match(await text('step-legend'), /diametral lens \(encroachment: lens, angle ≥ 120°\)/);
+  const lensStep = Number(/^Step (\d+)/.exec(await text('step-info'))[1]);
+  await stepShown(lensStep);
+  await page.waitForTimeout(50);
+  assert.notEqual(await canvasFingerprint(page), disk, 'the lens is drawn, not the disk');
   await page.screenshot({ path: `${SCREENSHOTS}replay-lens.png` });
   await page.selectOption('#encroachment', 'disk');
   assert.equal(await settle(page), 'done');
-  await stepShown(index);
-  await page.waitForTimeout(50);
-  assert.equal(await canvasFingerprint(page), disk);
   // A triangle split only for its area says so.
   await page.fill('#max-area', '2');
   await page.locator('#max-area').dispatchEvent('change');
