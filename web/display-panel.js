@@ -1,5 +1,5 @@
 // The Display panel: the colouring of the triangles and its legend, and the vertex numbers toggle.
-import { VERTEX_NUMBERS_UP_TO, exemptionLegend, legendEntries } from './render.js';
+import { VERTEX_NUMBERS_UP_TO, exemptionLegend, legendEntries, markerLegend } from './render.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -11,7 +11,7 @@ const $ = (id) => document.getElementById(id);
 export function createDisplayPanel({ app, scheduleDraw, writeLink }) {
   /** The legend of the colour mode and of the exemptions marked on the canvas. */
   function updateLegend() {
-    const entries = [...legendEntries(app.colorMode, app.mesh), ...exemptionLegend(app.exemptions)];
+    const entries = [...legendEntries(app.colorMode, app.mesh), ...exemptionLegend(app.exemptions), ...markerLegend(app.drawing)];
     $('legend').replaceChildren(...entries.map(({ colour, label, hatched }) => {
       const item = document.createElement('span');
       item.className = 'legend-item';

@@ -7,6 +7,8 @@
 //   segments a0, b0, a1, b1, ...        point indices
 //   holes    hx0, hy0, ...              hole seeds
 //   regions  [{ x, y, attribute, maxArea }]
+//   segmentMarkers m0, m1, ...  a boundary marker per segment (0: none), kept from files, written by
+//                                every export; absent from older drawings (all 0)
 //   options  { minAngle, maxArea, placement, maxSteiner, variant, encroachment }
 //            maxArea/maxSteiner: null = none/automatic; variant 'cdt' | 'box'; encroachment 'lens' | 'disk'
 import { boundsOf, hasBounds, includePoint } from './bounds.js';
@@ -16,13 +18,14 @@ export const DEFAULT_OPTIONS = Object.freeze({
 });
 
 export function emptyDrawing(options = DEFAULT_OPTIONS) {
-  return { points: [], segments: [], holes: [], regions: [], options: { ...options } };
+  return { points: [], segments: [], segmentMarkers: [], holes: [], regions: [], options: { ...options } };
 }
 
 export function cloneDrawing(d) {
   return {
     points: d.points.slice(),
     segments: d.segments.slice(),
+    segmentMarkers: segmentMarkers(d),
     holes: d.holes.slice(),
     regions: d.regions.map((r) => ({ ...r })),
     options: { ...d.options },
@@ -31,11 +34,19 @@ export function cloneDrawing(d) {
 
 export const pointCount = (d) => d.points.length / 2;
 
+/** The drawing's segment markers, one per segment (0 where none was given). */
+export function segmentMarkers(d) {
+  const m = d.segments.length / 2;
+  return Array.from({ length: m }, (_, k) => d.segmentMarkers?.[k] ?? 0);
+}
+
 /** The mesher's input (Plc of index.d.ts). */
 export function toPlc(d) {
   return {
     points: Float64Array.from(d.points),
     segments: Uint32Array.from(d.segments),
+    // Markers only when some segment has one: the mesh's own rules apply otherwise.
+    ...(segmentMarkers(d).some((m) => m !== 0) ? { segmentMarkers: Int32Array.from(segmentMarkers(d)) } : {}),
     holes: Float64Array.from(d.holes),
     regions: d.regions.map((r) => ({
       x: r.x, y: r.y, attribute: r.attribute ?? 0, ...(r.maxArea > 0 ? { maxArea: r.maxArea } : {}),
@@ -64,6 +75,7 @@ export function fromPlc(plc, options = DEFAULT_OPTIONS) {
   return {
     points: Array.from(plc.points ?? []),
     segments: Array.from(plc.segments ?? []),
+    segmentMarkers: Array.from(plc.segmentMarkers ?? []),
     holes: Array.from(plc.holes ?? []),
     regions: (plc.regions ?? []).map((r) => ({
       x: r.x, y: r.y, attribute: r.attribute ?? 0, maxArea: r.maxArea > 0 ? r.maxArea : null,
@@ -86,6 +98,7 @@ export function addSegment(d, a, b) {
     if ((s === a && t === b) || (s === b && t === a)) return false;
   }
   d.segments.push(a, b);
+  d.segmentMarkers = [...segmentMarkers(d).slice(0, -1), 0];
   return true;
 }
 
@@ -93,17 +106,23 @@ export function addSegment(d, a, b) {
 export function removePoint(d, i) {
   d.points.splice(2 * i, 2);
   const kept = [];
+  const markers = [];
+  const old = segmentMarkers(d);
   for (let k = 0; k < d.segments.length; k += 2) {
     const a = d.segments[k];
     const b = d.segments[k + 1];
     if (a === i || b === i) continue;
     kept.push(a > i ? a - 1 : a, b > i ? b - 1 : b);
+    markers.push(old[k / 2]);
   }
   d.segments = kept;
+  d.segmentMarkers = markers;
 }
 
 export function removeSegment(d, k) {
+  d.segmentMarkers = segmentMarkers(d);
   d.segments.splice(2 * k, 2);
+  d.segmentMarkers.splice(k, 1);
 }
 
 /** Item addresses used by selection and hit testing. */

@@ -36,9 +36,33 @@ export async function exportText(format, mesh, plc) {
     case 'ele': return m.toEle(mesh);
     case 'msh': return m.toMsh(mesh, plc);
     case 'vtu': return m.toVtu(mesh);
-    case 'geojson': return m.toGeoJson(mesh);
+    case 'geojson': return withBoundary(m.toGeoJson(mesh), mesh);
     default: throw new Error(`unknown export format ${format}`);
   }
+}
+
+/**
+ * The package's GeoJSON (one Polygon feature per triangle) with each triangle's boundary markers:
+ * properties.edgeMarkers, per edge opposite vertices[0], [1], [2] (the order of mesh.neighbors), the
+ * marker of the subsegment on it (mesh.segmentMarkers, the input's where it had them), 0 for an edge
+ * on no segment; a solver reading the .geojson tells its boundaries apart as with .poly, .msh and
+ * .vtu, and the file still reads back as the triangles it holds.
+ */
+export function withBoundary(text, mesh) {
+  const collection = JSON.parse(text);
+  const key = (a, b) => (a < b ? `${a},${b}` : `${b},${a}`);
+  const markers = new Map();
+  for (let s = 0; s < mesh.segments.length / 2; s++) {
+    markers.set(key(mesh.segments[2 * s], mesh.segments[2 * s + 1]), mesh.segmentMarkers[s]);
+  }
+  const tri = mesh.triangles;
+  for (const feature of collection.features) {
+    const t = feature.properties?.triangle;
+    if (!Number.isInteger(t)) continue;
+    const [i, j, k] = [tri[3 * t], tri[3 * t + 1], tri[3 * t + 2]];
+    feature.properties.edgeMarkers = [key(j, k), key(k, i), key(i, j)].map((e) => markers.get(e) ?? 0);
+  }
+  return JSON.stringify(collection);
 }
 
 // Numbers in the shortest text that reads back to the same double.
@@ -53,8 +77,10 @@ export function drawingPolyText(plc) {
   const lines = ['# A drawing from the ruppert page: the PLC as drawn (points, segments, holes, regions)',
     `${n} 2 0 0`];
   for (let i = 0; i < n; i++) lines.push(`${i} ${num(plc.points[2 * i])} ${num(plc.points[2 * i + 1])}`);
-  lines.push(`${m} 0`);
-  for (let i = 0; i < m; i++) lines.push(`${i} ${plc.segments[2 * i]} ${plc.segments[2 * i + 1]}`);
+  // With markers (a column of boundary markers) when the drawing has any.
+  const markers = plc.segmentMarkers;
+  lines.push(`${m} ${markers ? 1 : 0}`);
+  for (let i = 0; i < m; i++) lines.push(`${i} ${plc.segments[2 * i]} ${plc.segments[2 * i + 1]}${markers ? ` ${markers[i]}` : ''}`);
   lines.push(`${h}`);
   for (let i = 0; i < h; i++) lines.push(`${i} ${num(plc.holes[2 * i])} ${num(plc.holes[2 * i + 1])}`);
   lines.push(`${plc.regions.length}`);

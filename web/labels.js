@@ -35,7 +35,7 @@ export const EVENT_KIND_LABELS = {
  */
 export const EXEMPTION_LABELS = {
   SMALL_INPUT_ANGLE: { legend: 'in a small input angle (exempt)', row: 'in small input angles (hatched)' },
-  SEDITIOUS_EDGE: { legend: 'seditious edge (exempt)', row: 'on seditious edges (edge in orange)' },
+  SEDITIOUS_EDGE: { legend: 'seditious edge (exempt)', row: 'on seditious edges (edge in teal)' },
 };
 
 /** options.placement, the Steiner placement box's entries (in this order). */

@@ -97,7 +97,8 @@ function scheduleDraw() {
 function draw() {
   if (app.viewMoved) link.writeSoon();
   const step = app.stepMode && app.mesh?.events
-    ? { final: app.mesh, events: app.mesh.events, index: steps.index, shown: app.stepMesh } : null;
+    ? { final: app.mesh, events: app.mesh.events, index: steps.index, shown: app.stepMesh, stage: steps.stage, context: steps.context }
+    : null;
   renderer.draw({
     view,
     drawing: app.drawing,
@@ -180,7 +181,7 @@ const parameters = createParametersPanel({ app, editor, changed });
 const display = createDisplayPanel({ app, scheduleDraw, writeLink: link.write });
 const meshPanel = createMeshPanel();
 const steps = createStepsPanel({
-  app, renderer, scheduleDraw, writeLinkSoon: link.writeSoon, remeshNow: () => meshing.remesh(0, { quiet: true }),
+  app, renderer, meshPanel, scheduleDraw, writeLinkSoon: link.writeSoon, remeshNow: () => meshing.remesh(0, { quiet: true }),
 });
 const meshing = createMeshing({
   app, renderer, meshPanel, display, steps, scheduleDraw,
@@ -193,7 +194,9 @@ const toolbar = createToolbar({
   app, editor, history, canvas, fitView, scheduleDraw, setDrawing,
   syncRegion: parameters.syncRegion, stepShortcut: steps.shortcut,
 });
-const presets = createPresetBox({ app, setDrawing, restartSteps: steps.restart, shared: !embedded });
+const presets = createPresetBox({
+  app, setDrawing, restartSteps: steps.restart, setStages: steps.setStages, shared: !embedded,
+});
 createFilePanel({ app, setDrawing, notPreset: presets.notPreset });
 createExportMenu({ app, renderer, draw, writeLink: link.write });
 

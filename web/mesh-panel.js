@@ -158,14 +158,35 @@ export function createMeshPanel() {
     return exemptions;
   }
 
+  let final = null;  // the mesh of the drawing (step mode: its last step)
+  /** The title says which mesh the rows describe. */
+  const title = (text) => { $('stats-title').textContent = text; };
+
   return {
     /** A new mesh of request.plc: every row; returns its exemptions (or null) for the canvas. */
     show(mesh, request) {
+      final = mesh;
+      title('Mesh');
       showStats(elements, mesh);
       showEventCounts($('stat-events'), mesh);
       return markExemptions(mesh, request);
     },
+    /**
+     * Step mode: the counts, angles, completeness and histogram of step k's mesh (of count); the
+     * Events and Exempt rows stay those of the whole refinement. Null: the final mesh again.
+     */
+    showStep(mesh, k = 0, count = 0) {
+      if (mesh === null || mesh === final) {
+        title(mesh === null ? 'Mesh' : `Mesh at step ${k} of ${count} (the final mesh)`);
+        showStats(elements, final);
+        return;
+      }
+      title(`Mesh at step ${k} of ${count}`);
+      showStats(elements, mesh);
+    },
     clear() {
+      final = null;
+      title('Mesh');
       showStats(elements, null);
       showExemptions($('stat-exempt'), null);
       showEventCounts($('stat-events'), null);

@@ -1,7 +1,8 @@
 // The Parameters panel: min angle (slider and number), max area, Steiner placement, algorithm,
-// encroachment, Steiner budget, and the region seed fields (for new seeds, or the selected one).
+// encroachment, Steiner budget, the region seed fields (for new seeds, or the selected one) and the
+// selected segment's marker.
 // Each field writes app.drawing.options and reports the change; sync() shows a drawing's options.
-import { DEFAULT_OPTIONS, Item } from './drawing.js';
+import { DEFAULT_OPTIONS, Item, segmentMarkers } from './drawing.js';
 import { ENCROACHMENT_LABELS, PLACEMENT_LABELS, VARIANT_LABELS } from './labels.js';
 import { setStatus } from './status-line.js';
 
@@ -103,9 +104,12 @@ export function createParametersPanel({ app, editor, changed }) {
     const maxArea = readNumber($('region-max-area'));
     return { attribute, maxArea: maxArea !== null && maxArea > 0 ? maxArea : null };
   }
-  /** Shows the selected region seed's values in the fields (nothing when no seed is selected). */
+  /** Shows the selected region seed's values in the fields, and the selected segment's marker. */
   function syncRegion() {
     const item = editor.selection;
+    const segment = item?.kind === Item.SEGMENT && item.index < app.drawing.segments.length / 2;
+    $('segment-marker').disabled = !segment;
+    $('segment-marker').value = segment ? String(segmentMarkers(app.drawing)[item.index]) : '';
     if (item?.kind !== Item.REGION) return;
     const region = app.drawing.regions[item.index];
     if (!region) return;
@@ -120,6 +124,16 @@ export function createParametersPanel({ app, editor, changed }) {
       changed(true);
     });
   }
+
+  // The selected segment's boundary marker (a whole number; 0: none).
+  $('segment-marker').addEventListener('change', () => {
+    const item = editor.selection;
+    const value = readNumber($('segment-marker'));
+    if (item?.kind !== Item.SEGMENT || value === null || !Number.isInteger(value)) return;
+    app.drawing.segmentMarkers = segmentMarkers(app.drawing);
+    app.drawing.segmentMarkers[item.index] = value;
+    changed(true);
+  });
 
   return { sync, syncRegion, regionSeed };
 }

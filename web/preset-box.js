@@ -18,9 +18,10 @@ function showCaption(text) {
  * @param {object} app the page's state (drawing, stepMode)
  * @param {(drawing, how) => void} setDrawing
  * @param {(on: boolean) => void} restartSteps step mode on or off as a preset asks, from step 0
+ * @param {(stages: Function|null) => void} setStages the preset's figure stages (presets.js), or none
  * @param {boolean} shared whether to look for the corpus (not in an embed)
  */
-export function createPresetBox({ app, setDrawing, restartSteps, shared }) {
+export function createPresetBox({ app, setDrawing, restartSteps, setStages, shared }) {
   for (const preset of PRESETS) {
     const option = document.createElement('option');
     option.value = preset.id;
@@ -50,6 +51,7 @@ export function createPresetBox({ app, setDrawing, restartSteps, shared }) {
     $('preset').value = preset.id;
     showCaption(preset.caption ?? '');
     if (steps) restartSteps(Boolean(preset.steps));
+    setStages(preset.stages ?? null);
     setDrawing({ ...preset.build(), options: { ...DEFAULT_OPTIONS, ...(preset.options ?? {}) } }, { commit });
     return true;
   }
@@ -58,6 +60,7 @@ export function createPresetBox({ app, setDrawing, restartSteps, shared }) {
   function notPreset() {
     $('preset').value = '';
     showCaption('');
+    setStages(null);
   }
 
   // The corpus of real PLCs beside the repository (../shared/data), when the server offers it:
@@ -93,6 +96,7 @@ export function createPresetBox({ app, setDrawing, restartSteps, shared }) {
       if (!response.ok) throw new Error(`the server answered ${response.status}`);
       const plc = await parseInput(await response.text(), name);
       showCaption('');
+      setStages(null);
       setDrawing(fromPlc(plc, app.drawing.options));
       $('preset').value = SHARED_PRESET + name;
       setStatus(`Loaded ${name}: ${plc.points.length / 2} points, ${plc.segments.length / 2} segments.`, 'ok');

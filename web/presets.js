@@ -1,7 +1,9 @@
 // Example drawings. Each builds points + segments from simple outlines, so the coordinates can be
 // read (and changed) here. A preset may carry options (applied when it is chosen, over the page's
 // current ones), a one-line caption naming the chapter's figure it redraws, and `steps: true` to
-// open it in step-by-step mode.
+// open it in step-by-step mode, and `stages` (a function of the trace) to name the steps that
+// show a figure's snapshots.
+import { EventKind } from '../wasm/index.js';
 
 /** Adds a closed polygon (a ring of segments) and returns its first point index. */
 function ring(d, coordinates) {
@@ -24,13 +26,37 @@ function squareWithHole() {
   return d;
 }
 
-/** In the spirit of the chapter's Figure 6.4: a small polygon with a segment inside it. */
+/**
+ * The chapter's Figure 6.4: a polygon with a segment ab inside it, every segment an edge of the
+ * Delaunay triangulation of the vertices (so stage (b) is that triangulation). With circumcenters,
+ * diametral disks and 30 degrees its refinement runs as the figure's does: the bottom edge is split
+ * at its midpoint first, then a second encroached edge, then a skinny triangle's circumcenter
+ * falls in ab's diametral disk and is rejected, ab being split instead (13 steps in all).
+ */
 function figure64() {
   const d = blank();
-  ring(d, [0, 0, 6, -0.5, 9, 1, 10, 4, 7.5, 6, 8.5, 8, 3, 8.5, 1.5, 6.5, -1, 5.5]);
+  ring(d, [0, 0.5, 6.5, -0.5, 9, 0, 10.5, 4, 7, 5.5, 7.5, 7.5, 3, 8.5, 2, 5.5, -0.5, 5.5]);
   const a = d.points.length / 2;
-  d.points.push(2, 2.5, 7, 4.2);
+  d.points.push(1.8, 2.3, 6.8, 4.5);  // a and b
   d.segments.push(a, a + 1);
+  return d;
+}
+
+/** A rectangle with a segment near its bottom: skinny triangles' circumcenters fall in its disk. */
+function encroachedSegment() {
+  const d = blank();
+  ring(d, [0, 0, 12, 0, 12, 4, 0, 4]);
+  d.points.push(3, 0.6, 9, 0.6);
+  d.segments.push(4, 5);
+  return d;
+}
+
+/** Two segments 15 degrees apart inside a rectangle: splits near their shared vertex go to shells. */
+function narrowCorner() {
+  const d = blank();
+  ring(d, [-2, -2, 12, -2, 12, 6, -2, 6]);
+  d.points.push(0, 0, 10, 0, 9.659258, 2.58819);
+  d.segments.push(4, 5, 4, 6);
   return d;
 }
 
@@ -113,7 +139,34 @@ export const PRESETS = [
   },
   {
     id: 'figure-6-4', name: 'Fig. 6.4 (a)-(f): the refinement step by step', build: figure64, steps: true,
-    caption: 'Figure 6.4: a polygon with an interior segment, refined one insertion at a time; step through it below.',
+    // The algorithm of §6.2 as the book runs it: circumcenters, closed diametral disks (encroached
+    // subsegments are always split first: the core's refinement loop has no other order).
+    options: { minAngle: 30, placement: 'circumcenter', encroachment: 'disk' },
+    caption: 'Figure 6.4: the algorithm of §6.2 (circumcenters, diametral disks, encroached subsegments first); ' +
+      'the stage buttons (a)-(f) under the canvas show the figure\'s six snapshots.',
+    stages: figure64Stages,
+  },
+  {
+    id: 'encroachment', name: 'Encroachment and rejection (diametral disks)', build: encroachedSegment, steps: true,
+    options: { minAngle: 30, placement: 'circumcenter', encroachment: 'disk' },
+    caption: 'Encroachment (§6.2): circumcenters that fall in a subsegment\'s diametral disk are rejected and the subsegment split; ' +
+      'switch Encroachment to the lens for fewer splits.',
+  },
+  {
+    id: 'shells', name: 'Concentric shells: a 15° corner', build: narrowCorner, steps: true,
+    options: { minAngle: 25, placement: 'circumcenter', encroachment: 'disk' },
+    caption: 'Concentric shells (§6.6): near the 15° corner a subsegment is split on a circle of power-of-two radius, not at its midpoint; ' +
+      'step to the shell splits (drawn with their shell).',
+  },
+  {
+    id: 'placement-circumcenter', name: 'Circumcenters: two sizes at 33°', build: twoSizes,
+    options: { minAngle: 33, placement: 'circumcenter' },
+    caption: 'Circumcenters at 33°: about 1,100 triangles. Open "Off-centers: two sizes at 33°" to compare (§6.8).',
+  },
+  {
+    id: 'placement-offcenter', name: 'Off-centers: two sizes at 33°', build: twoSizes,
+    options: { minAngle: 33, placement: 'offcenter' },
+    caption: 'Off-centers at 33°: about 200 triangles, five times fewer than circumcenters on the same input (§6.8).',
   },
   ...[5, 20, 30, 34.2].map((angle) => ({
     id: `figure-6-9-${String(angle).replace('.', '-')}`,
@@ -143,6 +196,44 @@ export const PRESETS = [
 
 // The first sight: two polygons of very different sizes, graded at the default 30 degrees.
 export const DEFAULT_PRESET = 'figure-6-9-30';
+
+const { SEGMENT_SPLIT, REJECTED } = EventKind;
+
+/**
+ * Figure 6.4's six stages in a trace of figure64 (or of an edited drawing: the stages found in
+ * it): [{ figure, label, step, inputOnly, preview, caption }], `step` the replay's step that shows it;
+ * (a) is step 0 with the input alone, (d) the step before the first rejected circumcenter with that
+ * circumcenter drawn as considered (`preview`: the next event's triangle).
+ */
+export function figure64Stages(events) {
+  if (!events || events.count === 0) return [];
+  let split = -1;
+  let rejected = -1;
+  for (let e = 0; e < events.count && rejected < 0; e++) {
+    if (events.kind[e] === SEGMENT_SPLIT && split < 0) split = e;
+    if (events.kind[e] === REJECTED) rejected = e;
+  }
+  const stages = [
+    { label: '(a)', step: 0, inputOnly: true, caption: 'The input PLC: a polygon and the segment ab inside it.' },
+    { label: '(b)', step: 0, caption: 'The Delaunay triangulation of the input vertices: every segment is one of its edges.' },
+  ];
+  if (split >= 0 && (rejected < 0 || split < rejected)) {
+    stages.push({ label: '(c)', step: split + 1, caption: 'The bottom edge is encroached, so it is split at its midpoint p.' });
+  }
+  if (rejected >= 0) {
+    stages.push({
+      label: '(d)', step: rejected, preview: true,
+      caption: 'After all the encroached subsegments are split, the outlined triangle has poor quality, ' +
+        'so the algorithm considers inserting its circumcenter c.',
+    });
+    stages.push({
+      label: '(e)', step: rejected + 1,
+      caption: 'Because c encroaches upon the segment ab (it lies in ab\'s diametral disk), c is not inserted; instead ab is split.',
+    });
+  }
+  stages.push({ label: '(f)', step: events.count, caption: 'The final mesh.' });
+  return stages.map((s) => ({ figure: 'Fig. 6.4', ...s }));
+}
 
 export function presetDrawing(id) {
   const preset = PRESETS.find((p) => p.id === id);

@@ -40,8 +40,27 @@ export const COLOURS = {
   region: '#5f3dc4',
   notice: '#e8590c',
   exempt: '#7048e8',     // triangles nestled in small input angles (§6.6), hatched
-  seditious: '#f76707',  // seditious edges and their triangles (§6.6)
+  // Seditious edges and their triangles (§6.6): teal, a hue none of the angle classes has (the
+  // 20-25° class is orange).
+  seditious: '#0b7285',
 };
+
+// Segment markers (boundary markers): one colour each, strong hues drawn over the fills; 0 (no
+// marker) in the segments' black. Markers above the table's length reuse its colours in turn.
+const MARKER_COLOURS = ['#1c7ed6', '#c2255c', '#2b8a3e', '#862e9c', '#0b7285', '#5c940d', '#a61e4d', '#364fc7'];
+const MARKER_LABELS_UP_TO = 300;
+
+export function markerColour(marker) {
+  if (!marker) return COLOURS.segment;
+  const n = MARKER_COLOURS.length;
+  return MARKER_COLOURS[(((Math.trunc(marker) - 1) % n) + n) % n];
+}
+
+/** Legend rows of the segment markers of a drawing: [{ colour, label }]. */
+export function markerLegend(drawing) {
+  const values = [...new Set(drawing.segmentMarkers ?? [])].filter((m) => m !== 0).sort((a, b) => a - b);
+  return values.map((m) => ({ colour: markerColour(m), label: `segment marker ${m}` }));
+}
 
 function angleClass(angle) {
   for (let c = 0; c < ANGLE_CLASSES.length; c++) if (angle < ANGLE_CLASSES[c][0]) return c;
@@ -308,7 +327,7 @@ export class Renderer {
 
   /**
    * The triangles left skinny on purpose (§6.6, exemptions.js): those nestled in a small input
-   * angle hatched, those on a seditious edge outlined, the seditious edge itself thick, in orange.
+   * angle hatched, those on a seditious edge outlined, the seditious edge itself thick, in teal.
    */
   drawExemptions(x, view, world, screen, px) {
     const { ctx } = this;
@@ -390,6 +409,24 @@ export class Renderer {
     lines(true);
   }
 
+  /** Each marked segment's marker at its midpoint (up to MARKER_LABELS_UP_TO segments). */
+  drawMarkerLabels(d, view) {
+    const { ctx } = this;
+    if (d.segments.length / 2 > MARKER_LABELS_UP_TO) return;
+    ctx.font = 'bold 11px system-ui, sans-serif';
+    ctx.textAlign = 'center';
+    ctx.textBaseline = 'middle';
+    ctx.lineJoin = 'round';
+    for (let k = 0; k < d.segments.length / 2; k++) {
+      const marker = d.segmentMarkers[k] ?? 0;
+      if (marker === 0) continue;
+      const a = d.segments[2 * k]; const b = d.segments[2 * k + 1];
+      const q = view.toScreen((d.points[2 * a] + d.points[2 * b]) / 2, (d.points[2 * a + 1] + d.points[2 * b + 1]) / 2);
+      ctx.strokeStyle = '#fff'; ctx.lineWidth = 3; ctx.strokeText(String(marker), q.x, q.y);
+      ctx.fillStyle = markerColour(marker); ctx.fillText(String(marker), q.x, q.y);
+    }
+  }
+
   drawDrawing(s, world, screen, px) {
     const { ctx } = this;
     const d = s.drawing;
@@ -397,18 +434,23 @@ export class Renderer {
     const selected = (kind, index) => s.selection?.kind === kind && s.selection.index === index;
     const hovered = (kind, index) => s.hoverItem?.kind === kind && s.hoverItem.index === index;
 
-    // Input segments, bold.
+    // Input segments, bold, in their marker's colour (black: no marker).
     world();
-    const segments = new Path2D();
+    const markers = d.segmentMarkers ?? [];
+    const byColour = new Map();
     for (let k = 0; k < d.segments.length; k += 2) {
       const a = d.segments[k]; const b = d.segments[k + 1];
-      segments.moveTo(d.points[2 * a], d.points[2 * a + 1]);
-      segments.lineTo(d.points[2 * b], d.points[2 * b + 1]);
+      const colour = markerColour(markers[k / 2] ?? 0);
+      if (!byColour.has(colour)) byColour.set(colour, new Path2D());
+      byColour.get(colour).moveTo(d.points[2 * a], d.points[2 * a + 1]);
+      byColour.get(colour).lineTo(d.points[2 * b], d.points[2 * b + 1]);
     }
-    ctx.strokeStyle = COLOURS.segment;
     ctx.lineWidth = 2.5 * px;
     ctx.lineCap = 'round';
-    ctx.stroke(segments);
+    for (const [colour, path] of byColour) {
+      ctx.strokeStyle = colour;
+      ctx.stroke(path);
+    }
     for (const [kind, colour] of [['segment', COLOURS.selected], ['segment-hover', COLOURS.hover]]) {
       const item = kind === 'segment' ? s.selection : s.hoverItem;
       if (item?.kind !== 'segment') continue;
@@ -421,6 +463,7 @@ export class Renderer {
       ctx.stroke();
     }
     screen();
+    if (markers.some((m) => m !== 0)) this.drawMarkerLabels(d, view);
 
     // The polyline being drawn: a dashed segment from its last vertex to the pointer.
     if (s.pendingChain) {

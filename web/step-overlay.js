@@ -3,11 +3,50 @@
 import { EventKind } from '../wasm/index.js';
 import { circumcircle, insertionsBefore, pointsAtStep, splitShell } from './event-geometry.js';
 
-const STEP_COLOURS = {
+// Pink for what the event did, blue for what it answered to; neither is among the angle colours
+// (render.js), and the new triangles are hatched, not filled, so their angle colours show through.
+export const STEP_COLOURS = {
   step: '#d6336c',
   stepSecondary: '#1d4ed8',
   newVertex: '#d6336c',
 };
+
+/** The angle at which a vertex encroaches a subsegment (degrees): 90 for the disk, the lens's above. */
+export function encroachmentAngle(context) {
+  if ((context?.encroachment ?? 'lens') === 'disk') return 90;
+  return Math.max(90, 180 - 2 * (context?.minAngle ?? 30));
+}
+
+const svg = (body) => `<svg width="22" height="16" viewBox="0 0 22 16" aria-hidden="true">${body}</svg>`;
+const P = STEP_COLOURS.step;
+const B = STEP_COLOURS.stepSecondary;
+
+/**
+ * The legend of the overlay (every symbol drawStep draws), the encroachment region named as the
+ * option in force: [{ svg, label }].
+ */
+export function stepLegend(context) {
+  const angle = encroachmentAngle(context);
+  const region = angle === 90
+    ? { svg: svg(`<line x1="3" y1="8" x2="19" y2="8" stroke="${P}" stroke-width="3"/><circle cx="11" cy="8" r="7.5" fill="none" stroke="${P}" stroke-dasharray="3 2"/>`),
+      label: 'split subsegment and its diametral disk (encroachment: disk)' }
+    : { svg: svg(`<line x1="3" y1="8" x2="19" y2="8" stroke="${P}" stroke-width="3"/><path d="M3 8 Q11 1 19 8 Q11 15 3 8" fill="none" stroke="${P}" stroke-dasharray="3 2"/>`),
+      label: `split subsegment and its diametral lens (encroachment: lens, angle ≥ ${Number(angle.toFixed(2))}°)` };
+  return [
+    { svg: svg(`<circle cx="11" cy="8" r="5" fill="${P}" stroke="#fff" stroke-width="1.5"/>`), label: 'the new vertex' },
+    { svg: svg(`<rect x="2" y="2" width="18" height="12" fill="url(#h)" stroke="${P}"/><defs><pattern id="h" width="4" height="4" patternUnits="userSpaceOnUse" patternTransform="rotate(45)"><line x1="0" y1="0" x2="0" y2="4" stroke="${P}" stroke-width="1.5"/></pattern></defs>`),
+      label: 'its triangles (the cavity it retriangulated)' },
+    { svg: svg(`<path d="M2 14 L20 14 L8 3 Z" fill="none" stroke="${P}" stroke-width="2" stroke-dasharray="4 2"/>`), label: 'the triangle split, where it was' },
+    { svg: svg(`<circle cx="11" cy="8" r="6.5" fill="none" stroke="${P}" stroke-width="1.5" stroke-dasharray="3 2"/>`), label: 'its circumcircle' },
+    { svg: svg(`<circle cx="11" cy="8" r="5" fill="#fff" stroke="${P}" stroke-width="2.5"/>`), label: 'a circumcenter considered (Fig. 6.4 (d))' },
+    region,
+    { svg: svg(`<circle cx="11" cy="8" r="4.5" fill="${B}" stroke="#fff" stroke-width="1.5"/>`), label: 'the encroaching vertex' },
+    { svg: svg(`<path d="M5 2 L17 14 M17 2 L5 14" stroke="${B}" stroke-width="3"/>`), label: 'a rejected point (its triangle dashed blue)' },
+    { svg: svg(`<circle cx="11" cy="8" r="6.5" fill="none" stroke="${B}" stroke-width="1.5" stroke-dasharray="3 2"/>`), label: 'a concentric shell (§6.6)' },
+    { svg: svg(`<path d="M11 1 L18 8 L11 15 L4 8 Z" fill="none" stroke="${B}" stroke-width="2"/>`), label: 'a petal or optimal point' },
+    { svg: svg(`<path d="M3 12 L18 4 M18 4 L12 4 M18 4 L15 9" fill="none" stroke="${B}" stroke-width="2"/>`), label: 'a relocated vertex' },
+  ];
+}
 
 /**
  * Whether `mesh`, the mesh on screen, is that of step s.index (it arrives from a worker): it has the
@@ -32,7 +71,14 @@ export function showsStep(step, mesh) {
  */
 export function drawStep(ctx, mesh, step, view, world, screen, px) {
   const { final, events, index } = step;
-  if (!events || events.count === 0 || index === 0) return;
+  if (!events || events.count === 0) return;
+  // Fig. 6.4 (d): the next event's triangle and its circumcenter, considered before anything happens.
+  // Alone: the step's own event is the stage before (c), not what (d) shows.
+  if (step.stage?.preview && index < events.count) {
+    drawConsidered(ctx, step, view, world, screen, px);
+    return;
+  }
+  if (index === 0) return;
   const e = index - 1;
   const p = pointsAtStep(events, e, final.points);
   const at = (v) => view.toScreen(p[2 * v], p[2 * v + 1]);
@@ -62,9 +108,7 @@ export function drawStep(ctx, mesh, step, view, world, screen, px) {
   const subsegment = (colour) => {
     const a = events.a[e]; const b = events.b[e];
     line(a, b, colour, 4);
-    // The diametral circle: centred at the midpoint, through both endpoints.
-    const mx = (p[2 * a] + p[2 * b]) / 2; const my = (p[2 * a + 1] + p[2 * b + 1]) / 2;
-    circle(mx, my, Math.hypot(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]) / 2, colour);
+    encroachmentRegion(ctx, p, a, b, encroachmentAngle(step.context), colour, world, screen, px);
   };
   const marker = (x, y, colour, r = 6) => {
     const q = view.toScreen(x, y);
@@ -113,6 +157,74 @@ export function drawStep(ctx, mesh, step, view, world, screen, px) {
     ctx.strokeStyle = STEP_COLOURS.stepSecondary; ctx.lineWidth = 3; ctx.stroke();
   }
   marker(events.xy[2 * e], events.xy[2 * e + 1], STEP_COLOURS.newVertex, 6);
+  // The numbers the event's text names, whether or not every vertex is numbered.
+  const named = kind === EventKind.SEGMENT_SPLIT ? [events.a[e], events.b[e], events.by[e]]
+    : [events.triangle[3 * e], events.triangle[3 * e + 1], events.triangle[3 * e + 2],
+      ...(kind === EventKind.REJECTED ? [events.a[e], events.b[e]] : [])];
+  labelVertices(ctx, [...named, events.vertex[e]].filter((v) => v >= 0), p, view);
+}
+
+/** Vertex numbers beside the given vertices (a white halo keeps them legible over any colour). */
+function labelVertices(ctx, ids, p, view) {
+  ctx.font = 'bold 12px system-ui, sans-serif';
+  ctx.textAlign = 'left';
+  ctx.textBaseline = 'bottom';
+  ctx.lineJoin = 'round';
+  for (const v of new Set(ids)) {
+    const q = view.toScreen(p[2 * v], p[2 * v + 1]);
+    ctx.strokeStyle = '#fff'; ctx.lineWidth = 3; ctx.strokeText(String(v), q.x + 5, q.y - 4);
+    ctx.fillStyle = '#111827'; ctx.fillText(String(v), q.x + 5, q.y - 4);
+  }
+}
+
+/**
+ * The region of points that encroach subsegment ab: those that see it at `angle` degrees or more.
+ * 90: the diametral disk; above: the lens, two arcs of circles of radius |ab| / (2 sin angle)
+ * through a and b, their centres |cos angle| times that radius from the midpoint on either side.
+ */
+export function encroachmentRegion(ctx, p, a, b, angle, colour, world, screen, px) {
+  const ax = p[2 * a]; const ay = p[2 * a + 1];
+  const dx = p[2 * b] - ax; const dy = p[2 * b + 1] - ay;
+  const length = Math.hypot(dx, dy);
+  if (length === 0) return;
+  const mx = ax + dx / 2; const my = ay + dy / 2;
+  const phi = (angle * Math.PI) / 180;
+  const r = length / (2 * Math.sin(phi));
+  const h = r * Math.abs(Math.cos(phi));
+  const half = Math.PI - phi;  // half the angle the arc spans at its centre
+  const normal = Math.atan2(dx, -dy);  // (−dy, dx) / length: the normal's direction
+  world();
+  ctx.strokeStyle = colour; ctx.lineWidth = 1.5 * px; ctx.setLineDash([6 * px, 4 * px]);
+  for (const side of [1, -1]) {
+    // The arc on this side of ab belongs to the circle centred on the other side.
+    const cx = mx - side * h * Math.cos(normal); const cy = my - side * h * Math.sin(normal);
+    const towards = side === 1 ? normal : normal + Math.PI;
+    ctx.beginPath(); ctx.arc(cx, cy, r, towards - half, towards + half); ctx.stroke();
+  }
+  ctx.setLineDash([]);
+  screen();
+}
+
+/** The next event's triangle, its circumcircle and circumcenter c, drawn as considered (Fig. 6.4 (d)). */
+function drawConsidered(ctx, step, view, world, screen, px) {
+  const { events, index: e, final } = step;
+  if (events.kind[e] === EventKind.SEGMENT_SPLIT || events.kind[e] === EventKind.RELOCATED) return;
+  const p = pointsAtStep(events, e, final.points);
+  const [i, j, k] = [events.triangle[3 * e], events.triangle[3 * e + 1], events.triangle[3 * e + 2]];
+  const q = [i, j, k].map((v) => view.toScreen(p[2 * v], p[2 * v + 1]));
+  ctx.beginPath(); ctx.moveTo(q[0].x, q[0].y); ctx.lineTo(q[1].x, q[1].y); ctx.lineTo(q[2].x, q[2].y); ctx.closePath();
+  ctx.strokeStyle = STEP_COLOURS.step; ctx.lineWidth = 2.5; ctx.setLineDash([5, 3]); ctx.stroke(); ctx.setLineDash([]);
+  const c = circumcircle(p, i, j, k);
+  if (!c) return;
+  world();
+  ctx.beginPath(); ctx.arc(c.x, c.y, c.r, 0, 2 * Math.PI);
+  ctx.strokeStyle = STEP_COLOURS.step; ctx.lineWidth = 1.5 * px; ctx.setLineDash([6 * px, 4 * px]); ctx.stroke(); ctx.setLineDash([]);
+  screen();
+  const at = view.toScreen(c.x, c.y);
+  ctx.beginPath(); ctx.arc(at.x, at.y, 6, 0, 2 * Math.PI);
+  ctx.fillStyle = '#fff'; ctx.fill(); ctx.strokeStyle = STEP_COLOURS.step; ctx.lineWidth = 2.5; ctx.stroke();
+  ctx.font = 'bold 14px system-ui, sans-serif'; ctx.textAlign = 'left'; ctx.textBaseline = 'bottom';
+  ctx.fillStyle = STEP_COLOURS.step; ctx.fillText('c', at.x + 8, at.y - 6);
 }
 
 /** The triangles of `mesh` around vertex v, filled: what the insertion of v created. */
@@ -128,10 +240,26 @@ function drawNewTriangles(ctx, mesh, v, world, screen, px) {
     path.closePath();
   }
   world();
-  ctx.fillStyle = 'rgba(250, 204, 21, 0.45)';
+  // The pattern in device pixels, not world units: undo the world transform for it.
+  const pattern = hatch(ctx);
+  pattern.setTransform(ctx.getTransform().inverse());
+  ctx.fillStyle = pattern;
   ctx.fill(path);
   ctx.strokeStyle = STEP_COLOURS.newVertex;
   ctx.lineWidth = 1.5 * px;
   ctx.stroke(path);
   screen();
+}
+
+let hatchPattern = null;
+/** Diagonal pink lines, 6 pixels apart: the new triangles stay readable over their angle colours. */
+function hatch(ctx) {
+  if (hatchPattern) return hatchPattern.pattern;
+  const tile = document.createElement('canvas');
+  tile.width = 6; tile.height = 6;
+  const t = tile.getContext('2d');
+  t.strokeStyle = STEP_COLOURS.newVertex; t.lineWidth = 1.5;
+  t.beginPath(); t.moveTo(-1, 7); t.lineTo(7, -1); t.moveTo(5, 7); t.lineTo(7, 5); t.moveTo(-1, 1); t.lineTo(1, -1); t.stroke();
+  hatchPattern = { pattern: ctx.createPattern(tile, 'repeat') };
+  return hatchPattern.pattern;
 }

@@ -19,6 +19,28 @@ function smallestAngle(points, i, j, k) {
   return Math.min(corner(i, j, k), corner(j, k, i), corner(k, i, j)) * 180 / Math.PI;
 }
 
+/** The area of the triangle of vertices i, j, k of points. */
+function area(points, i, j, k) {
+  const ux = points[2 * j] - points[2 * i]; const uy = points[2 * j + 1] - points[2 * i + 1];
+  const vx = points[2 * k] - points[2 * i]; const vy = points[2 * k + 1] - points[2 * i + 1];
+  return Math.abs(ux * vy - uy * vx) / 2;
+}
+
+/**
+ * Why triangle (i, j, k) was split, with the values that decided it: 'skinny (smallest angle X° <
+ * bound Y°)' when its angle is under the bound, else 'too large (area A > max B)' (the global bound,
+ * else its region's), else its smallest angle alone.
+ */
+export function splitReason(points, i, j, k, context) {
+  const angle = smallestAngle(points, i, j, k);
+  const bound = context?.minAngle ?? 0;
+  if (angle < bound) return `skinny (smallest angle ${angle.toFixed(2)}° < bound ${bound}°)`;
+  const a = area(points, i, j, k);
+  if (context?.maxArea > 0 && a > context.maxArea) return `too large (area ${fmt(a)} > max ${fmt(context.maxArea)})`;
+  if (context?.regions?.some((r) => r.maxArea > 0)) return `too large for its region's max area (area ${fmt(a)}; smallest angle ${angle.toFixed(2)}°)`;
+  return `(smallest angle ${angle.toFixed(2)}°)`;
+}
+
 /**
  * One line describing event e. With `context` ({ points: the final mesh's, minAngle, placement }),
  * a triangle's smallest angle is given against the bound, a split off the midpoint is named by its
@@ -30,13 +52,14 @@ export function describeEvent(events, e, context = null) {
   const where = `(${fmt(events.xy[2 * e])}, ${fmt(events.xy[2 * e + 1])})`;
   const vertex = events.vertex[e];
   const [i, j, k] = [events.triangle[3 * e], events.triangle[3 * e + 1], events.triangle[3 * e + 2]];
-  let triangle = `(${i}, ${j}, ${k})`;
   // The points as they were before this event (a later RELOCATED event may have moved some).
   const points = context?.points ? pointsAtStep(events, e, context.points) : null;
+  // "skinny triangle (1, 2, 3) (smallest angle ...)" or "too large triangle (...) (area ...)".
+  let triangle = `triangle (${i}, ${j}, ${k})`;
   if (points && i >= 0 && events.kind[e] !== EventKind.SEGMENT_SPLIT) {
-    const angle = smallestAngle(points, i, j, k);
-    const bound = context.minAngle ?? 0;
-    triangle += ` (smallest angle ${angle.toFixed(2)}°${angle < bound ? ` < ${bound}°` : ''})`;
+    const reason = splitReason(points, i, j, k, context);
+    const word = /^(skinny|too large)/.exec(reason)?.[1];
+    triangle = word ? `${word} triangle (${i}, ${j}, ${k}) ${reason.slice(word.length + 1)}` : `triangle (${i}, ${j}, ${k}) ${reason}`;
   }
   switch (kind) {
     case EventKind.SEGMENT_SPLIT: {
@@ -47,9 +70,9 @@ export function describeEvent(events, e, context = null) {
       return `Split subsegment (${events.a[e]}, ${events.b[e]})${by >= 0 ? `, encroached by vertex ${by},` : ''} ${at}: vertex ${vertex}.`;
     }
     case EventKind.CIRCUMCENTER:
-      return `Inserted the ${L.CIRCUMCENTER} of skinny or large triangle ${triangle} at ${where}: vertex ${vertex}.`;
+      return `Inserted the ${L.CIRCUMCENTER} of ${triangle} at ${where}: vertex ${vertex}.`;
     case EventKind.OFF_CENTER:
-      return `Inserted the ${L.OFF_CENTER} of skinny triangle ${triangle} at ${where}: vertex ${vertex}.`;
+      return `Inserted the ${L.OFF_CENTER} of ${triangle} at ${where}: vertex ${vertex}.`;
     case EventKind.REJECTED: {
       const circum = !points || rejectedIsCircumcenter(events, e, points);
       // Petal and optimal points are never rejected (they encroach nothing): what is, is the first choice.
@@ -58,12 +81,12 @@ export function describeEvent(events, e, context = null) {
         `encroached subsegment (${events.a[e]}, ${events.b[e]}): rejected; split the subsegment at ${where} instead: vertex ${vertex}.`;
     }
     case EventKind.PETAL_POINT:
-      return `Inserted the ${L.PETAL_POINT} of skinny triangle ${triangle} at ${where} (its off-center would have made a skinny triangle): vertex ${vertex}.`;
+      return `Inserted the ${L.PETAL_POINT} of ${triangle} at ${where} (its off-center would have made a skinny triangle): vertex ${vertex}.`;
     case EventKind.OPTIMAL_POINT:
-      return `Inserted the ${L.OPTIMAL_POINT} of skinny triangle ${triangle} at ${where} (its off-center would have made a skinny triangle): vertex ${vertex}.`;
+      return `Inserted the ${L.OPTIMAL_POINT} of ${triangle} at ${where} (its off-center would have made a skinny triangle): vertex ${vertex}.`;
     case EventKind.RELOCATED:
       return `Moved vertex ${vertex} from (${fmt(events.circumcenter[2 * e])}, ${fmt(events.circumcenter[2 * e + 1])}) to ${where}: ` +
-        `no point fixed skinny triangle ${triangle}, so an endpoint of its shortest edge moved to where every triangle around it meets the bound.`;
+        `no point fixed ${triangle}, so an endpoint of its shortest edge moved to where every triangle around it meets the bound.`;
     default:
       return `Event of unknown kind ${kind}.`;
   }

@@ -2,30 +2,44 @@
 // (StepReplay, step-replay.js, meshed on demand), and the step a link or a host asked for, shown
 // once the mesh with its trace arrives.
 import { postStepped } from './embed.js';
+import { stepLegend } from './step-overlay.js';
 import { StepReplay } from './step-replay.js';
 import { Stepper, describeEvent } from './stepper.js';
+import { setStatus } from './status-line.js';
 
 const $ = (id) => document.getElementById(id);
 
 /**
  * @param {object} app the page's state (mesh, stepMode, stepMesh, pendingStep, hoverTriangle)
  * @param {object} renderer the Renderer (it shows the step's mesh)
+ * @param {object} meshPanel the Mesh panel (it shows the step's mesh too)
  * @param {() => void} scheduleDraw
  * @param {() => void} writeLinkSoon the step is in the link
  * @param {() => void} remeshNow mesh again (the trace is recorded only in step mode)
  */
-export function createStepsPanel({ app, renderer, scheduleDraw, writeLinkSoon, remeshNow }) {
+export function createStepsPanel({ app, renderer, meshPanel, scheduleDraw, writeLinkSoon, remeshNow }) {
   // A host's 'ruppert:step' waiting for its reply: { index, id }.
   let hostRequest = null;
+  // A figure's stages (presets.js): the function that finds them in a trace, those of the trace
+  // in hand, the stage on screen (null: the step is none), and the one a stage button asked for.
+  let stagesOf = null;
+  let stages = [];
+  let stage = null;
+  let stageWanted = null;
   // The mesh of each step, meshed on demand; shown when it is still the step wanted.
   const replay = new StepReplay((k, mesh) => {
     if (!app.stepMode || k !== stepper.index) return;
     app.stepMesh = mesh;
     app.hoverTriangle = -1;
-    renderer.setMesh(mesh);
+    // Stage (a) of a figure: the input alone, no triangulation yet.
+    renderer.setMesh(stage?.inputOnly ? null : mesh);
     const { vertices, triangles, minAngle, maxAngle } = mesh.stats;
-    $('step-mesh').textContent = `Mesh at step ${k}: ${vertices.toLocaleString('en-US')} vertices, ` +
+    const summary = `${vertices.toLocaleString('en-US')} vertices, ` +
       `${triangles.toLocaleString('en-US')} triangles, smallest angle ${minAngle.toFixed(2)}°`;
+    $('step-mesh').textContent = `Mesh at step ${k}: ${summary}`;
+    // The panel and the status line speak of the mesh on screen: this step's.
+    meshPanel.showStep(mesh, k, stepper.count);
+    setStatus(`Step ${k} of ${stepper.count}: ${summary}${k === stepper.count ? ' (the final mesh)' : ''}.`, 'info');
     document.body.dataset.stepShown = String(k);
     const events = app.mesh.events;
     let id = null;
@@ -44,12 +58,57 @@ export function createStepsPanel({ app, renderer, scheduleDraw, writeLinkSoon, r
     first: $('step-first'), back: $('step-back'), play: $('step-play'), forward: $('step-forward'),
     last: $('step-last'), scrub: $('step-scrub'), speed: $('step-speed'), info: $('step-info'),
   }, (k) => {
+    showStage(stageWanted?.step === k ? stageWanted : stages.find((s) => s.step === k && !s.inputOnly) ?? null);
+    stageWanted = null;
     delete document.body.dataset.stepShown;
     writeLinkSoon();
     $('step-mesh').textContent = `Mesh at step ${k}: meshing…`;
     replay.show(k);
     scheduleDraw();
   });
+
+  /** The stage on screen (or none): its caption and its button pressed. */
+  function showStage(s) {
+    stage = s;
+    $('step-stage').textContent = s ? `${s.figure} ${s.label}: ${s.caption}` : '';
+    $('step-stage').hidden = s === null;
+    for (const button of $('step-stages').querySelectorAll('button')) {
+      button.setAttribute('aria-pressed', String(s !== null && button.dataset.label === s.label));
+    }
+  }
+
+  /** The stage buttons of the trace in hand (none without stages). */
+  function showStages(events) {
+    stages = stagesOf && events ? stagesOf(events) : [];
+    $('step-stages').hidden = stages.length === 0;
+    $('step-stages').replaceChildren(...stages.map((s) => {
+      const button = document.createElement('button');
+      button.type = 'button';
+      button.textContent = s.label;
+      button.dataset.label = s.label;
+      button.title = `Step ${s.step}: ${s.caption}`;
+      button.addEventListener('click', () => {
+        stepper.pause();
+        stageWanted = s;
+        stepper.go(s.step);
+      });
+      return button;
+    }));
+    if (stages.length === 0) showStage(null);
+  }
+
+  /** The overlay's legend: every symbol step mode draws, the encroachment region as in force. */
+  function showLegend(options) {
+    $('step-legend').replaceChildren(...stepLegend(options).map(({ svg, label }) => {
+      const item = document.createElement('span');
+      item.className = 'legend-item';
+      const symbol = document.createElement('span');
+      symbol.className = 'step-symbol';
+      symbol.innerHTML = svg;  // the page's own markup (step-overlay.js), no input in it
+      item.append(symbol, label);
+      return item;
+    }));
+  }
 
   /** Step mode on or off, without meshing again (the caller does). */
   function setMode(on) {
@@ -60,7 +119,11 @@ export function createStepsPanel({ app, renderer, scheduleDraw, writeLinkSoon, r
       stepper.pause();
       replay.clear();
       app.stepMesh = null;
-      if (app.mesh) renderer.setMesh(app.mesh);
+      showStage(null);
+      if (app.mesh) {
+        renderer.setMesh(app.mesh);
+        meshPanel.showStep(null);
+      }
     }
   }
 
@@ -94,12 +157,16 @@ export function createStepsPanel({ app, renderer, scheduleDraw, writeLinkSoon, r
   /** A new mesh (with its trace in step mode) of the request's input and options. */
   function meshed(mesh, request) {
     replay.reset(request.plc, request.options, app.stepMode ? mesh : null);
+    const { minAngle, placement, maxArea, encroachment } = request.options;
+    showStages(app.stepMode ? mesh.events : null);
+    showLegend(request.options);
     stepper.setEvents(app.stepMode ? mesh.events : null,
-      { points: mesh.points, minAngle: request.options.minAngle, placement: request.options.placement });
+      { points: mesh.points, minAngle, placement, maxArea: maxArea ?? null, encroachment, regions: request.plc.regions });
   }
 
   function clear() {
     replay.clear();
+    showStages(null);
     stepper.setEvents(null);
   }
 
@@ -142,6 +209,12 @@ export function createStepsPanel({ app, renderer, scheduleDraw, writeLinkSoon, r
 
   return {
     get index() { return stepper.index; },
+    /** The figure stage on screen, or null. */
+    get stage() { return stage; },
+    /** What the event texts and the overlay know of the options: { minAngle, encroachment, ... }. */
+    get context() { return stepper.context; },
+    /** The preset's stages (a function of the trace, presets.js), or null. */
+    setStages(fn) { stagesOf = fn; },
     turnOn, restart, meshed, clear, showPending, hostStep, shortcut,
   };
 }

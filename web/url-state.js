@@ -1,7 +1,7 @@
 // The drawing in the URL hash, so that a link reproduces it:
 //
 //   #d=<base64url of compact JSON>
-//   { "v": 1, "p": [x0, y0, ...], "s": [a0, b0, ...], "h": [hx0, hy0, ...],
+//   { "v": 1, "p": [x0, y0, ...], "s": [a0, b0, ...], "m": [marker per segment] (only if any), "h": [hx0, hy0, ...],
 //     "r": [[x, y, attribute, maxArea], ...],
 //     "o": [minAngle, maxArea, "o" | "c", maxSteiner, "c" | "b", "l" | "d"] }
 //
@@ -36,6 +36,8 @@ export function encodeDrawing(d) {
     p: d.points,
     s: d.segments,
     h: d.holes,
+    // Segment markers only when some segment has one (older links have none: all 0).
+    ...((d.segmentMarkers ?? []).some((m) => m !== 0) ? { m: d.segmentMarkers } : {}),
     r: d.regions.map((r) => [r.x, r.y, r.attribute ?? 0, r.maxArea > 0 ? r.maxArea : 0]),
     o: [o.minAngle, o.maxArea > 0 ? o.maxArea : 0, PLACEMENT_CODES.get(o.placement) ?? 't',
       Number.isInteger(o.maxSteiner) ? o.maxSteiner : -1,
@@ -60,6 +62,8 @@ export function decodeDrawing(hash) {
   const points = finiteArray(data.p ?? [], 'points');
   const segments = finiteArray(data.s ?? [], 'segments');
   const holes = finiteArray(data.h ?? [], 'holes');
+  const segmentMarkers = finiteArray(data.m ?? [], 'segment markers');
+  if (segmentMarkers.length > segments.length / 2 || !segmentMarkers.every(Number.isInteger)) throw new Error('link: bad segment markers');
   if (points.length % 2 || segments.length % 2 || holes.length % 2) throw new Error('link: odd coordinate count');
   const n = points.length / 2;
   if (!segments.every((i) => Number.isInteger(i) && i >= 0 && i < n)) throw new Error('link: segment index out of range');
@@ -76,7 +80,7 @@ export function decodeDrawing(hash) {
     variant: variant === 'b' ? 'box' : 'cdt',
     encroachment: encroachment === 'd' ? 'disk' : 'lens',
   };
-  return { points, segments, holes, regions, options };
+  return { points, segments, segmentMarkers, holes, regions, options };
 }
 
 // What the page shows, beside the drawing: '&step=K' (step mode at step K), '&color=MODE' (the

@@ -127,7 +127,7 @@ test('triangles in small input angles and on seditious edges are counted as the 
   const seditious = reason('SEDITIOUS_EDGE');
   assert.ok(nestled > 0 && seditious > 0, `the fan has ${nestled} nestled and ${seditious} seditious triangles`);
   const text = await page.locator('#stat-exempt').textContent();
-  assert.equal(text, `${nestled} in small input angles (hatched), ${seditious} on seditious edges (edge in orange)`);
+  assert.equal(text, `${nestled} in small input angles (hatched), ${seditious} on seditious edges (edge in teal)`);
   const legend = await page.locator('#legend').textContent();
   assert.match(legend, /in a small input angle \(exempt\)/);
   assert.match(legend, /seditious edge \(exempt\)/);
@@ -137,9 +137,9 @@ test('triangles in small input angles and on seditious edges are counted as the 
   const violet = await countColour([0x70, 0x48, 0xe8]);
   await page.screenshot({ path: `${SCREENSHOTS}exemptions-fan-nestled.png` });
   await zoomTo(other);
-  const orange = await countColour([0xf7, 0x67, 0x07]);
+  const teal = await countColour([0x0b, 0x72, 0x85]);
   await page.screenshot({ path: `${SCREENSHOTS}exemptions-fan-seditious.png` });
   assert.ok(violet > 50, `${violet} violet pixels around nestled triangle ${first}`);
-  assert.ok(orange > 50, `${orange} orange pixels around seditious triangle ${other}`);
+  assert.ok(teal > 50, `${teal} teal pixels around seditious triangle ${other}`);
   assert.deepEqual(errors, []);
 });

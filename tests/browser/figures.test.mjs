@@ -26,7 +26,8 @@ test('the first sight is a figure of the chapter that refines visibly', async ()
 });
 
 test('each figure preset names its figure, applies its options and meshes completely', async () => {
-  const figures = PRESETS.filter((p) => p.caption);
+  // The chapter's figures (the presets of one idea each are tested by teach.test.mjs).
+  const figures = PRESETS.filter((p) => /^Figures? 6\./.test(p.caption ?? ''));
   assert.ok(figures.length >= 9, `${figures.length} figure presets`);
   for (const preset of figures) {
     await page.selectOption('#preset', preset.id);

@@ -18,6 +18,11 @@ after(async () => {
 async function presetState(page, id) {
   await page.selectOption('#preset', id);
   assert.equal(await settle(page), 'done', id);
+  // In step mode the Mesh panel shows the step's mesh, which arrives after the final one.
+  if (await page.locator('#stepper').isVisible()) {
+    const index = Number(/^Step (\d+)/.exec(await page.locator('#step-info').textContent())?.[1]);
+    await page.waitForFunction((k) => document.body.dataset.stepShown === String(k), index);
+  }
   return {
     stats: await readStats(page),
     stepMode: await page.isChecked('#step-mode'),

@@ -175,7 +175,7 @@ test('each kind of event is described with its geometry', async () => {
           : /^Inserted the (circumcenter|off-center) of .*triangle \(\d+, \d+, \d+\)/.test(what) ? 'triangle'
           : /^Inserted the optimal point of .*triangle \(\d+, \d+, \d+\) .*its off-center would have made a skinny triangle/.test(what) ? 'optimal point'
           : /^Moved vertex \d+ from \([-\d.e+]+, [-\d.e+]+\) to \([-\d.e+]+, [-\d.e+]+\): no point fixed skinny triangle \(\d+, \d+, \d+\)/.test(what) ? 'relocated vertex'
-            : /^The (circumcenter|off-center) \(.*\) of \(\d+, \d+, \d+\)( \(smallest angle [\d.]+°( < [\d.]+°)?\))? encroached subsegment \(\d+, \d+\): rejected/.test(what)
+            : /^The (circumcenter|off-center) \(.*\) of (skinny |too large )?triangle \(\d+, \d+, \d+\) \((smallest angle [\d.]+°( < bound [\d.]+°)?|area [\d.e+-]+ > max [\d.e+-]+)\) encroached subsegment \(\d+, \d+\): rejected/.test(what)
               ? `rejected ${/^The (\S+)/.exec(what)[1]}` : 'unknown';
       assert.notEqual(kind, 'unknown', what);
       if (!seen.has(kind)) {
