@@ -18,11 +18,14 @@ after(async () => {
 });
 
 const SQUARE = '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n';
+// An irregular pentagon: under an area bound alone the square is split into a grid of congruent
+// right triangles (the largest first), all of one colour; this one's triangles span several classes.
+const PENTAGON = '5 2 0 0\n1 0 0\n2 1 0.1\n3 0.9 0.9\n4 0.3 1\n5 -0.1 0.5\n5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 1\n0\n';
 
-/** Loads a square with the given options through the host protocol and waits for its picture. */
-async function loadSquare(page, options) {
+/** Loads a .poly (the square unless given) with the options through the host protocol; waits for its picture. */
+async function loadSquare(page, options, poly = SQUARE) {
   const before = await page.evaluate(() => Number(document.body.dataset.meshCount ?? 0));
-  await page.evaluate(([poly, o]) => window.postMessage({ type: 'ruppert:load', id: 'render-test', poly, options: o }, '*'), [SQUARE, options]);
+  await page.evaluate(([text, o]) => window.postMessage({ type: 'ruppert:load', id: 'render-test', poly: text, options: o }, '*'), [poly, options]);
   await page.waitForFunction((n) => Number(document.body.dataset.meshCount) > n, before, { timeout: 60_000 });
   assert.equal(await settle(page, 60_000), 'done');
 }
@@ -97,7 +100,7 @@ test('the WebGL renderer draws the triangles in the colours of the legend', asyn
   assert.equal(await settle(page), 'done');
   assert.equal(await page.evaluate(() => document.body.dataset.renderer), 'webgl', 'headless Chromium gives WebGL2 (SwiftShader)');
   assert.equal(await page.locator('#renderer-note').isHidden(), true);
-  await loadSquare(page, { minAngle: 30, maxArea: 0.004 });
+  await loadSquare(page, { minAngle: 30, maxArea: 0.004 }, PENTAGON);
 
   const blank = await page.evaluate(() => {
     const gl = document.getElementById('gl-canvas');
