@@ -1,11 +1,11 @@
 // Everything the stages share about one meshing run. The stages, in triangulate()'s order:
-//   prepare    prepareInput (prepare_input.cpp), in triangulate.cpp
-//   build      buildDelaunay (build_delaunay.cpp), initAttributes (point_attributes.cpp)
-//   constrain  insertHull, insertSegments, constrainBoxSides (segment_insertion.cpp)
-//   classify   findDomain, classifyTriangles, removeOutside (classify.cpp), keepOldMeshDomain
-//              (old_mesh.cpp)
-//   refine     refine (refine.cpp and refine_*.cpp: class Refiner, refiner.h)
-//   output     assembleOutput (assemble_output.cpp), which takes the state apart
+//   prepare    prepareInput (cdt/prepare_input.cpp), in triangulate.cpp
+//   build      buildDelaunay (cdt/build_delaunay.cpp), initAttributes (point_attributes.cpp)
+//   constrain  insertHull, insertSegments, constrainBoxSides (cdt/segment_insertion.cpp)
+//   classify   findDomain, classifyTriangles, removeOutside (cdt/classify.cpp), keepOldMeshDomain
+//              (cdt/old_mesh.cpp)
+//   refine     refine (refine/refine.cpp and refine/refine_*.cpp: class Refiner, refine/refiner.h)
+//   output     assembleOutput (output/assemble_output.cpp), which takes the state apart
 // Each field says which stages write it ("w:") and which read it ("r:").
 #pragma once
 
@@ -13,9 +13,9 @@
 #include <utility>
 #include <vector>
 
-#include "prepare_input.h"
+#include "cdt/prepare_input.h"
 #include "ruppert/ruppert.h"
-#include "triangulation.h"
+#include "mesh/triangulation.h"
 
 namespace ruppert::detail {
 
