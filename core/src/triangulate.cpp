@@ -13,7 +13,10 @@
 #include "output/assemble_output.h"
 #include "cold_code.h"
 #include "mesh_state.h"
+#include "cdt/build_delaunay.h"
+#include "cdt/classify.h"
 #include "cdt/old_mesh.h"
+#include "cdt/segment_insertion.h"
 #include "point_attributes.h"
 #include "refine/refine.h"
 

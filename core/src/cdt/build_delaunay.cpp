@@ -5,16 +5,26 @@
 // (and the corners lie outside it), or the convex hull is inserted as constraints (insertHull), which
 // cuts the corners off. Inside the domain the corners are never visible, so they cannot change the
 // constrained Delaunay triangulation there.
+#include "cdt/build_delaunay.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
 
 #include "mesh_state.h"
+#include "cdt/old_mesh.h"
 #include "mesh/predicates.h"
-#include "refine/refine.h"
 
 namespace ruppert::detail {
+
+bool refinementRequested(const MeshState& m) {
+  const Options& o = *m.options;
+  bool regionArea = false;
+  for (const Region& r : m.input.regions) regionArea = regionArea || r.maxArea > 0;
+  const bool oldMeshArea = m.oldMesh != nullptr && m.oldMesh->hasBounds();
+  return o.minAngle > 0 || o.maxArea > 0 || regionArea || oldMeshArea || static_cast<bool>(o.sizeFunction);
+}
 
 void buildDelaunay(MeshState& m) {
   PreparedInput& in = m.input;

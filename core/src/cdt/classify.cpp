@@ -10,6 +10,8 @@
 // convex hull instead and asks again. classifyTriangles records the result (MeshState::inDomain,
 // attribute, maxArea); removeOutside deletes the triangles outside the domain and clears their
 // neighbours' twins, so every boundary edge of what remains is a constrained edge.
+#include "cdt/classify.h"
+
 #include <algorithm>
 #include <deque>
 #include <string>

@@ -4,9 +4,10 @@
 #include <cmath>
 #include <string>
 
+#include "cold_code.h"
 #include "mesh_state.h"
 #include "message.h"
-#include "cold_code.h"
+#include "cdt/classify.h"
 #include "mesh/predicates.h"
 
 // The checks, the boundary and the grid's build run once per call: compiled for size (cold_code.h);

@@ -6,6 +6,8 @@
 // flip them away (Sloan's method: flip any crossing edge whose quadrilateral is strictly convex; the
 // others wait their turn), mark a-b constrained, and restore the constrained Delaunay property by
 // Lawson flips on the edges the flips created.
+#include "cdt/segment_insertion.h"
+
 #include <algorithm>
 #include <cmath>
 #include <deque>

@@ -30,19 +30,10 @@
 #include <utility>
 
 #include "cold_code.h"
-#include "cdt/old_mesh.h"
 #include "refine/refine_setup.h"
 #include "refine/refiner.h"
 
 namespace ruppert::detail {
-
-bool refinementRequested(const MeshState& m) {
-  const Options& o = *m.options;
-  bool regionArea = false;
-  for (const Region& r : m.input.regions) regionArea = regionArea || r.maxArea > 0;
-  const bool oldMeshArea = m.oldMesh != nullptr && m.oldMesh->hasBounds();
-  return o.minAngle > 0 || o.maxArea > 0 || regionArea || oldMeshArea || static_cast<bool>(o.sizeFunction);
-}
 
 RefineOutcome Refiner::run() {
   double inverseGaps = 0;

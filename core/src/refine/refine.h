@@ -17,8 +17,6 @@ struct RefineOutcome {
 };
 
 // True when the options ask for any refinement (angle, area or size function).
-bool refinementRequested(const MeshState& m);
-
 RefineOutcome refine(MeshState& m);
 
 // Estimate of the integral of 1/lfs^2 over the meshed domain (§6.5), by quadrature on the mesh as it
