@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "refine/refine_geometry.h"  // kPi
+#include "refine/placement/refine_geometry.h"  // kPi
 
 namespace ruppert::detail {
 

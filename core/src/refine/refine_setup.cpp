@@ -6,7 +6,7 @@
 
 #include "cdt/old_mesh.h"
 #include "refine/refine.h"
-#include "refine/refine_geometry.h"
+#include "refine/placement/refine_geometry.h"
 #include "mesh/triangle_shape.h"
 #include "cold_code.h"
 

@@ -21,7 +21,7 @@
 #include "refine/placement/optimal_placement.h"
 #include "refine/placement/placement.h"
 #include "refine/refine.h"
-#include "refine/refine_geometry.h"
+#include "refine/placement/refine_geometry.h"
 #include "mesh/triangle_shape.h"
 
 namespace ruppert::detail {

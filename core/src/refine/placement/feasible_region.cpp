@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "refine/refine_geometry.h"  // length: sqrt, not the slower hypot (a library call in WebAssembly)
+#include "refine/placement/refine_geometry.h"  // length: sqrt, not the slower hypot (a library call in WebAssembly)
 
 namespace ruppert::detail {
 

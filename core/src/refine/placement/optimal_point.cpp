@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-#include "refine/refine_geometry.h"
+#include "refine/placement/refine_geometry.h"
 
 namespace ruppert::detail {
 

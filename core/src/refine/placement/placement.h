@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "cdt/prepare_input.h"
-#include "refine/refine_geometry.h"
+#include "refine/placement/refine_geometry.h"
 #include "mesh/triangle_shape.h"
 #include "mesh/triangulation.h"
 

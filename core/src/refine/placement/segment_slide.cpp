@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "mesh/predicates.h"
-#include "refine/refine_geometry.h"
+#include "refine/placement/refine_geometry.h"
 #include "mesh/triangle_shape.h"
 
 namespace ruppert::detail {
