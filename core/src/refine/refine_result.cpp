@@ -48,7 +48,7 @@ std::string Refiner::guardMessage(std::uint64_t unmet) const {
 std::string Refiner::unreachableMessage(std::uint64_t unmet, double reached) const {
   char angles[96];
   std::snprintf(angles, sizeof angles, "%.6g degrees is out of reach; the smallest angle reached is %.2f", plan_.requested, reached);
-  // The direct attempts (refine.cpp's directPlan) and their caps.
+  // The direct attempts (above34/staged.cpp's directPlan) and their caps.
   const char* direct =
       secondDirectAttempt(o_)
           ? " did not complete within sixteen times the triangles of the 33-degree mesh, nor, the second and third "

@@ -1,5 +1,6 @@
 // The refinement loop's state and steps (class Refiner), one class in five files by concern:
-//   refine.cpp         the main loop and its stages (bound_push.h), and refine() itself;
+//   refine.cpp         the main loop and its stages (above34/bound_push.h; refine() itself, which
+//                      runs it directly or in stages, is in above34/staged.cpp);
 //   refine_checks.cpp  what is bad: encroached subsegments, skinny and large triangles (area bounds),
 //                      the Steiner budget, forbidden splits, the exemptions of §6.6;
 //   refine_split.cpp   what to do about it: split points of subsegments, the point for a bad

@@ -57,13 +57,13 @@ struct RefinePlan {
   // The request's Steiner budget in steps, this run's being budget - used; kAutoSteinerBudget:
   // the automatic one, a checkpoint for the size measure's guard (refine_setup.h), not a stop.
   std::uint64_t budget = kAutoSteinerBudget;
-  // Replaying the first `budget` steps of a longer run (refine.cpp): at the budget the mesh as it
+  // Replaying the first `budget` steps of a longer run (staged.cpp): at the budget the mesh as it
   // stands, not the push's best mesh so far.
   bool prefix = false;
   // Optimal placement, where no point meets the bound: first try moving any free vertex of the
   // skinny triangle (not only its shortest edge's), and where nothing helps insert the best point
   // below the bound (OptimalPlacement::bestBelowBound) rather than the off-center. Only above
-  // kReachableDegrees, for the second to fourth direct attempts (refine.cpp's directPlan).
+  // kReachableDegrees, for the second to fourth direct attempts (staged.cpp's directPlan).
   bool bestBelowBound = false;
   // Split the skinny triangles with the longest shortest edge first (BadTriangleQueue). Above
   // kReachableDegrees, smallest-first grading leaves small features inside cavities of triangles
