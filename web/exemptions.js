@@ -1,5 +1,5 @@
 // The triangles the refinement leaves skinny on purpose (§6.6), found again from the mesh the
-// page has, by the core's own rules (core/src/refine.cpp: nestledInInputAngle, seditious):
+// page has, by the core's own rules (core/src/refine/refine.cpp: nestledInInputAngle, seditious):
 // - nestled in a small input angle: the smallest angle's two edges are both subsegments;
 // - on a seditious edge: the shortest edge joins split vertices of two input segments that meet
 //   at a vertex z at under 45°, at the same distance from z (the same concentric shell).

@@ -1,11 +1,11 @@
 // Everything the stages share about one meshing run. The stages, in triangulate()'s order:
-//   prepare    prepareInput (prepare_input.cpp), in triangulate.cpp
-//   build      buildDelaunay (build_delaunay.cpp), initAttributes (point_attributes.cpp)
-//   constrain  insertHull, insertSegments, constrainBoxSides (segment_insertion.cpp)
-//   classify   findDomain, classifyTriangles, removeOutside (classify.cpp), keepOldMeshDomain
-//              (old_mesh.cpp)
-//   refine     refine (refine.cpp and refine_*.cpp: class Refiner, refiner.h)
-//   output     assembleOutput (assemble_output.cpp), which takes the state apart
+//   prepare    prepareInput (cdt/prepare_input.h), in triangulate.cpp
+//   build      buildDelaunay (cdt/build_delaunay.h), initAttributes (point_attributes.h)
+//   constrain  insertHull, insertSegments, constrainBoxSides (cdt/segment_insertion.h)
+//   classify   findDomain, classifyTriangles, removeOutside (cdt/classify.h), keepOldMeshDomain
+//              (cdt/old_mesh.h)
+//   refine     refine (refine/refine.h; class Refiner in refine/refiner.h)
+//   output     assembleOutput (output/assemble_output.h), which takes the state apart
 // Each field says which stages write it ("w:") and which read it ("r:").
 #pragma once
 
@@ -14,9 +14,9 @@
 #include <utility>
 #include <vector>
 
-#include "prepare_input.h"
+#include "cdt/prepare_input.h"
 #include "ruppert/ruppert.h"
-#include "triangulation.h"
+#include "mesh/triangulation.h"
 
 namespace ruppert::detail {
 
@@ -98,28 +98,5 @@ struct MeshState {
   // Per internal vertex: its index in Mesh::points, or kNone if left out. w and r: output.
   std::vector<std::uint32_t> outputMap;
 };
-
-// Stages, in order.
-void buildDelaunay(MeshState& m);          // box corners + every distinct input point
-void insertHull(MeshState& m);             // convex hull edges as constraints (no segments / convexHull)
-void insertSegments(MeshState& m);         // input segments, repairing crossings and overlaps
-void constrainBoxSides(MeshState& m);      // bounding-box variant: the box's sides bound what is refined
-
-// Which triangles are outside the domain (findDomain), before anything is removed.
-struct Domain {
-  std::vector<std::uint8_t> outside;         // per slot: 1 outside the domain (exterior, holes), else 0
-  bool segmentsEncloseNothing = false;       // no triangle is enclosed, before the holes (once the
-                                             // hull stands in: what the first call found)
-  std::int64_t emptiedBy = -1;               // the hole seed that removed the last triangle, or -1
-  std::size_t noticesBefore = 0;             // MeshState::notices' size when findDomain began
-  // Nothing to mesh: the pipeline then meshes the convex hull instead, where it can.
-  bool empty() const { return segmentsEncloseNothing || emptiedBy >= 0; }
-};
-// Exterior, then holes. `hullStandsIn`: the convex hull was inserted because a first call found
-// the domain empty (the holes then apply even to an empty domain).
-Domain findDomain(MeshState& m, bool hullStandsIn = false);
-void classifyTriangles(MeshState& m, const Domain& domain);  // inDomain; regions' attributes and areas;
-                                                             // throws EmptyDomain if a hole took all
-void removeOutside(MeshState& m);          // drop the triangles outside the domain (and the box corners)
 
 }  // namespace ruppert::detail

@@ -1,21 +1,24 @@
 // ruppert::triangulate: the pipeline (§6.1's generic Delaunay refinement, constrained as in §6.7),
 // one call per stage, in order:
-//   prepare (prepare_input.cpp: validate, scale, merge duplicates) -> Delaunay of the points
-//   (build_delaunay.cpp) -> constraints (segment_insertion.cpp: hull, segments, with repairs) ->
-//   classify (classify.cpp: exterior, holes, regions) -> refine (refine.cpp, §6.2-6.6, 6.8) ->
-//   output (assemble_output.cpp).
+//   prepare (cdt/prepare_input.cpp: validate, scale, merge duplicates) -> Delaunay of the points
+//   (cdt/build_delaunay.cpp) -> constraints (cdt/segment_insertion.cpp: hull, segments, with
+//   repairs) -> classify (cdt/classify.cpp: exterior, holes, regions) -> refine (refine/, §6.2-6.6,
+//   6.8) -> output (output/assemble_output.cpp).
 // The decisions between stages are made here: the convex hull stands in for segments that enclose
 // nothing, and the variant says when the outside goes (before refining, or after it in the box).
 #include <chrono>
 #include <optional>
 #include <utility>
 
-#include "assemble_output.h"
+#include "output/assemble_output.h"
 #include "cold_code.h"
 #include "mesh_state.h"
-#include "old_mesh.h"
+#include "cdt/build_delaunay.h"
+#include "cdt/classify.h"
+#include "cdt/old_mesh.h"
+#include "cdt/segment_insertion.h"
 #include "point_attributes.h"
-#include "refine.h"
+#include "refine/refine.h"
 
 namespace ruppert {
 

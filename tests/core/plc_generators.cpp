@@ -5,7 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "predicates.h"
+#include "mesh/predicates.h"
 
 namespace ruppert_test {
 namespace {

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "refine_geometry.h"
+#include "refine/placement/refine_geometry.h"
 #include "validator.h"
 
 namespace {

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "angle_stats.h"
+#include "output/angle_stats.h"
 
 namespace {
 

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "bad_triangle_queue.h"
-#include "triangulation.h"
+#include "refine/bad_triangle_queue.h"
+#include "mesh/triangulation.h"
 
 using ruppert::detail::BadTriangle;
 using ruppert::detail::BadTriangleQueue;

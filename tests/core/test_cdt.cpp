@@ -7,7 +7,7 @@
 #include <set>
 
 #include "plc_generators.h"
-#include "predicates.h"
+#include "mesh/predicates.h"
 #include "validator.h"
 
 using namespace ruppert_test;

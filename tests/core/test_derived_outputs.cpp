@@ -13,7 +13,7 @@
 #include <sstream>
 
 #include "plc_generators.h"
-#include "predicates.h"
+#include "mesh/predicates.h"
 #include "ruppert/ruppert.h"
 
 using ruppert::Mesh;

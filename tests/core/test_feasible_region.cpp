@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "feasible_region.h"
+#include "refine/placement/feasible_region.h"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "optimal_point.h"
+#include "refine/placement/optimal_point.h"
 
 namespace {
 

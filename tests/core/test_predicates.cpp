@@ -23,7 +23,7 @@
 #include <random>
 #include <vector>
 
-#include "predicates.h"
+#include "mesh/predicates.h"
 
 namespace {
 

@@ -14,9 +14,9 @@
 #include <random>
 #include <sstream>
 
-#include "old_mesh.h"
+#include "cdt/old_mesh.h"
 #include "plc_generators.h"
-#include "predicates.h"
+#include "mesh/predicates.h"
 #include "ruppert/ruppert.h"
 #include "validator.h"
 

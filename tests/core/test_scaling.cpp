@@ -11,7 +11,7 @@
 #include <random>
 #include <vector>
 
-#include "prepare_input.h"
+#include "cdt/prepare_input.h"
 
 namespace {
 

@@ -11,8 +11,8 @@
 #include <set>
 #include <vector>
 
-#include "predicates.h"
-#include "triangulation.h"
+#include "mesh/predicates.h"
+#include "mesh/triangulation.h"
 
 namespace {
 

@@ -17,7 +17,7 @@
 
 #include <gmpxx.h>
 
-#include "predicates.h"
+#include "mesh/predicates.h"
 
 namespace ruppert_test {
 namespace {

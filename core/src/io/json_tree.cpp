@@ -1,5 +1,5 @@
 // Recursive-descent JSON parser building a JsonValue tree (see json_tree.h).
-#include "json_tree.h"
+#include "io/json_tree.h"
 
 #include <algorithm>
 #include <cerrno>

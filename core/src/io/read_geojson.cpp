@@ -25,7 +25,7 @@
 #include <utility>
 #include <vector>
 
-#include "json_tree.h"
+#include "io/json_tree.h"
 #include "ruppert/ruppert.h"
 
 #include "cold_code.h"

@@ -33,7 +33,7 @@
 
 #include "ruppert/ruppert.h"
 #include "cold_code.h"
-#include "huge_pages.h"
+#include "mesh/huge_pages.h"
 
 RUPPERT_COLD_BEGIN
 

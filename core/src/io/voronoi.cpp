@@ -6,9 +6,9 @@
 #include <ostream>
 #include <string>
 
-#include "mesh_neighbors.h"
+#include "output/mesh_neighbors.h"
 #include "ruppert/ruppert.h"
-#include "text_out.h"
+#include "io/text_out.h"
 #include "cold_code.h"
 
 RUPPERT_COLD_BEGIN

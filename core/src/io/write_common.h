@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "angle_stats.h"
+#include "output/angle_stats.h"
 #include "ruppert/ruppert.h"
-#include "text_out.h"
+#include "io/text_out.h"
 
 namespace ruppert::detail {
 

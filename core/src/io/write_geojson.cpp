@@ -10,7 +10,7 @@
 #include <string>
 
 #include "ruppert/ruppert.h"
-#include "write_common.h"
+#include "io/write_common.h"
 
 #include "cold_code.h"
 

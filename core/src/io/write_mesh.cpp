@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "ruppert/ruppert.h"
-#include "boundary_markers.h"
-#include "text_out.h"
+#include "output/boundary_markers.h"
+#include "io/text_out.h"
 #include "cold_code.h"
 
 RUPPERT_COLD_BEGIN

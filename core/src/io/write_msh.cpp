@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "ruppert/ruppert.h"
-#include "subsegment_marker.h"
-#include "write_common.h"
+#include "output/subsegment_marker.h"
+#include "io/write_common.h"
 
 #include "cold_code.h"
 

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "ruppert/ruppert.h"
-#include "write_common.h"
+#include "io/write_common.h"
 
 #include "cold_code.h"
 

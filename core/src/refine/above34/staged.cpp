@@ -1,0 +1,173 @@
+// refine() itself: directly, as the chapter's loop, or above kStagedAboveDegrees (34 degrees, §6.8)
+// in stages (above34/bound_push.h): the 33-degree mesh first, then direct attempts at the requested
+// bound (directPlan), else the push from the 33-degree mesh (pushPlan); refineStaged takes that way,
+// replayStaged replays its first k steps under a smaller Steiner budget. The loop they run is
+// Refiner's (refine/refiner.h, refine/refine.cpp).
+#include <algorithm>
+#include <utility>
+
+#include "cold_code.h"
+#include "refine/refine.h"
+#include "refine/refine_setup.h"
+#include "refine/refiner.h"
+
+namespace ruppert::detail {
+
+namespace {
+
+bool completeOutcome(const RefineOutcome& r) {
+  for (const Reason& reason : r.reasons)
+    if (reason.kind != ReasonKind::SmallInputAngle && reason.kind != ReasonKind::SeditiousEdge) return false;
+  return true;
+}
+
+std::uint64_t liveTriangles(const MeshState& m) { return m.tri.slotCount() - m.tri.freeSlots.size(); }
+
+// The stages' plans, run once per call: compiled for size (cold_code.h).
+RUPPERT_COLD_BEGIN
+
+// The triangles the output will hold: the bounding-box variant's outside leaves after refinement.
+std::uint64_t domainTriangles(const MeshState& m) {
+  if (m.inDomain.empty()) return liveTriangles(m);
+  std::uint64_t n = 0;
+  for (std::uint32_t s = 0; s < m.tri.slotCount(); ++s) n += m.tri.alive(s) && m.inDomain[s];
+  return n;
+}
+
+// Which way refineStaged went, and what replaying its first steps needs.
+struct StagedPath {
+  enum Branch { AsAsked, Direct, Push } branch = AsAsked;
+  int attempt = 0;               // Direct: which direct attempt (directPlan)
+  std::uint64_t steps = 0;       // steps (insertions, moves) of the mesh returned
+  std::uint64_t reachSteps = 0;  // of the 33-degree mesh (the push's first part)
+  std::uint64_t base = 0;        // the 33-degree mesh's triangles (the caps' unit)
+  std::uint64_t baseDomain = 0;  // ... inside the domain (the push's promise's unit)
+};
+
+// Direct attempt number `attempt` (0 to 3; bound_push.h): as without stages; then the largest skinny
+// triangles first with the best points below the bound, those that beat the off-center's smallest
+// new angle by kBelowBoundGain and then only those that beat it by kStrictBelowBoundGain (up to 128
+// times the 33-degree mesh); last, smallest first again with the best points below the bound (what
+// the second attempt was before largest first: 3 of the 300 generated PLCs at 38 degrees complete
+// only this way, none at 40).
+RefinePlan directPlan(double requested, std::uint64_t base, int attempt, std::uint64_t budget) {
+  RefinePlan plan = RefinePlan::direct(requested, budget);
+  plan.triangleCap = kDirectTriangleFactor * base;
+  if (attempt == 0) return plan;
+  if (attempt == 3) {
+    plan.bestBelowBound = true, plan.belowBoundGain = kBelowBoundGain;
+    return plan;
+  }
+  plan.triangleCap = std::min(kSecondDirectTriangleFactor * base, kSecondDirectTriangleCeiling);
+  plan.bestBelowBound = plan.largestFirst = true;
+  plan.belowBoundGain = attempt == 1 ? kBelowBoundGain : kStrictBelowBoundGain;
+  return plan;
+}
+
+RefinePlan pushPlan(double requested, const StagedPath& path, std::uint64_t budget) {
+  RefinePlan plan{requested, kReachableDegrees, true, kPushTriangleFactor * path.base, path.reachSteps};
+  plan.domainCap = kPushTriangleFactor * path.baseDomain;
+  plan.budget = budget;
+  return plan;
+}
+
+// The push continues the 33-degree run: its trace and rejections come first.
+RefineOutcome afterReach(RefineOutcome reach, RefineOutcome out) {
+  reach.events.insert(reach.events.end(), out.events.begin(), out.events.end());
+  out.events = std::move(reach.events);
+  out.rejected += reach.rejected;
+  return out;
+}
+
+// A request above kStagedAboveDegrees (bound_push.h), with a Steiner budget of `budget` steps: the
+// 33-degree mesh first, for its size; then the requested bound directly, up to sixteen times that
+// size, as without stages; with the optimal placement, where that fails, directly again (three more
+// attempts, directPlan) with RefinePlan::bestBelowBound; else the push from the 33-degree mesh. The
+// way taken goes to path.
+RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path) {
+  const double requested = m.options->minAngle;
+  MeshState start = m;
+  Refiner reachRun(m, RefinePlan::direct(kReachableDegrees, budget));
+  RefineOutcome reach = reachRun.run();
+  if (!completeOutcome(reach)) {  // not even 33 degrees: refine as asked, as without stages
+    m = std::move(start);
+    Refiner run(m, RefinePlan::direct(requested, budget));
+    RefineOutcome out = run.run();
+    path.branch = StagedPath::AsAsked, path.steps = run.steps();
+    return out;
+  }
+  path.reachSteps = reachRun.steps();
+  path.base = liveTriangles(m);
+  path.baseDomain = domainTriangles(m);
+  // True (and m the mesh) where a direct run from the unrefined mesh completes within the cap.
+  auto direct = [&](MeshState from, int number, const RefinePlan& plan, RefineOutcome& out) {
+    Refiner attempt(from, plan);
+    out = attempt.run();
+    if (attempt.capHit() || !completeOutcome(out)) return false;
+    m = std::move(from);
+    path.branch = StagedPath::Direct, path.attempt = number, path.steps = attempt.steps();
+    return true;
+  };
+  RefineOutcome out;
+  for (int number = 0; number < directAttempts(*m.options); ++number) {
+    const RefinePlan plan = directPlan(requested, path.base, number, budget);
+    if (plan.largestFirst && plan.triangleCap < kLargestFirstLeast * path.base) continue;  // too large an input
+    if (direct(start, number, plan, out)) return out;
+  }
+  start = MeshState{};  // free it before the push
+  Refiner push(m, pushPlan(requested, path, budget));
+  out = push.run();
+  path.branch = StagedPath::Push, path.steps = push.steps();
+  return afterReach(std::move(reach), std::move(out));
+}
+
+// The first k steps of the way refineStaged went (with the automatic budget), from the unrefined
+// mesh m: the same plans, stopped at k.
+RefineOutcome replayStaged(MeshState& m, const StagedPath& path, std::uint64_t k) {
+  const double requested = m.options->minAngle;
+  switch (path.branch) {
+    case StagedPath::AsAsked:
+      return Refiner(m, RefinePlan::direct(requested, k)).run();
+    case StagedPath::Direct:
+      return Refiner(m, directPlan(requested, path.base, path.attempt, k)).run();
+    case StagedPath::Push:
+      break;
+  }
+  // The 33-degree run again, judged by the requested bound where it is the result (stopped at k
+  // steps, it ends before the bound could be raised).
+  RefinePlan first{requested, kReachableDegrees, false, 0, 0};
+  first.budget = std::min(k, path.reachSteps);
+  RefineOutcome reach = Refiner(m, first).run();
+  if (k <= path.reachSteps) return reach;
+  RefinePlan push = pushPlan(requested, path, k);
+  push.prefix = true;
+  return afterReach(std::move(reach), Refiner(m, push).run());
+}
+
+}  // namespace
+
+// Above kStagedAboveDegrees with a budget k under the automatic one, the result is the first k steps
+// of the automatic run's (what maxSteiner gives below that by itself, and what the page's replay of
+// a run step by step relies on): that run first, and where it took more than k steps, its way again
+// from the start, stopped at k. (Budgeting each stage instead would take another way: a 33-degree
+// mesh done within k steps and a direct attempt cut short by the budget lead to the push.)
+RefineOutcome refine(MeshState& m) {
+  if (!(m.options->minAngle > kStagedAboveDegrees))
+    return Refiner(m, RefinePlan::direct(m.options->minAngle, m.options->maxSteiner)).run();
+  const double demand = areaDemand(m);
+  const std::uint64_t automatic = automaticSteinerBudget(m, demand);
+  const std::uint64_t k = std::min(m.options->maxSteiner, automatic);
+  StagedPath path;
+  if (k == automatic) return refineStaged(m, m.options->maxSteiner, path);  // automatic: guarded
+  // A budget of 0 inserts nothing, on every way: no need to know which.
+  if (k == 0) return Refiner(m, RefinePlan::direct(m.options->minAngle, 0)).run();
+  MeshState start = m;
+  RefineOutcome out = refineStaged(m, kAutoSteinerBudget, path);
+  if (path.steps <= k) return out;
+  m = std::move(start);
+  return replayStaged(m, path, k);
+}
+
+RUPPERT_COLD_END
+
+}  // namespace ruppert::detail

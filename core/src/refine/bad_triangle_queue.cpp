@@ -1,0 +1,123 @@
+#include "refine/bad_triangle_queue.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ruppert::detail {
+
+namespace {
+
+// The buckets of the last queue this thread destroyed, emptied but with their capacity, for the
+// next one: a small mesh otherwise spends a tenth of its allocations growing the few buckets it
+// uses from empty, one doubling at a time, on every call. Kept only while they are small.
+// Outside [keptLow, keptHigh] every kept bucket has no capacity, so a queue clears and measures
+// only the classes that were ever used, not all 337 (which was a tenth of a one-triangle call).
+constexpr std::size_t kKeptEntries = std::size_t(1) << 16;
+thread_local std::vector<std::vector<BadTriangle>> keptBuckets;
+thread_local int keptLow = 0, keptHigh = -1;
+
+}  // namespace
+
+BadTriangleQueue::BadTriangleQueue() {
+  if (keptBuckets.size() == std::size_t(kBuckets)) {
+    buckets_.swap(keptBuckets);
+    usedLow_ = keptLow, usedHigh_ = keptHigh;
+  } else {
+    buckets_.resize(kBuckets);
+  }
+}
+
+BadTriangleQueue::~BadTriangleQueue() {
+  if (buckets_.size() != std::size_t(kBuckets) || !keptBuckets.empty()) return;
+  std::size_t entries = 0;
+  for (int k = usedLow_; k <= usedHigh_; ++k) buckets_[k].clear(), entries += buckets_[k].capacity();
+  if (entries > kKeptEntries) return;
+  keptBuckets.swap(buckets_);
+  keptLow = usedLow_, keptHigh = usedHigh_;
+}
+
+int BadTriangleQueue::classOf(double shortest2) {
+  int e = 0;
+  const double mantissa = std::frexp(shortest2, &e);  // shortest2 = mantissa * 2^e, mantissa in [0.5, 1)
+  // Four classes per power of two (of the squared length): cuts at 2^-0.75, 2^-0.5, 2^-0.25.
+  const int quarter = (mantissa >= 0.5946035575013605) + (mantissa >= 0.7071067811865476) +
+                      (mantissa >= 0.8408964152537145);
+  return std::clamp(4 * (e - kLowestExponent) + quarter, 0, kBuckets - 1);
+}
+
+int BadTriangleQueue::sizeClassOf(double area) {
+  const double k = std::floor((std::log2(area) - kLowestAreaExponent) * kSizeClassesPerOctave);
+  return static_cast<int>(std::clamp(k, 0.0, double(kSizeBuckets - 1)));
+}
+
+void BadTriangleQueue::push(const Triangulation& t, std::uint32_t s, bool skinny, double key, double sin2MinAngle) {
+  const auto angleClass =
+      static_cast<std::uint8_t>(std::min<double>(kAngleClasses - 1, sin2MinAngle / 0.75 * (kAngleClasses - 1)));
+  const BadTriangle e{s, t.tv[3 * s], t.tv[3 * s + 1], t.tv[3 * s + 2], angleClass};
+  ++queuedByAngle_[angleClass];
+  if (skinny) {
+    const int k = classOf(key);
+    buckets_[k].push_back(e);
+    usedLow_ = std::min(usedLow_, k), usedHigh_ = std::max(usedHigh_, k);
+    lowestBucket_ = std::min(lowestBucket_, k);
+    highestSkinny_ = std::max(highestSkinny_, k);
+  } else {
+    if (sizeBuckets_.empty()) sizeBuckets_.resize(kSizeBuckets);
+    const int k = sizeClassOf(key);
+    sizeBuckets_[k].push_back(e);
+    highestSize_ = std::max(highestSize_, k);
+  }
+  if (++queued_ > compactAt_) dropStaleEntries(t);
+}
+
+// Where refinement runs away, each step can rebuild a fan of thousands of needles, and the entries
+// of the ones it replaced stay queued: 70 million entries for 4 million triangles (300 chords
+// crossing in a star at 30 degrees, before off-centers aimed past the bound). Dropping the stale
+// ones (pop would hand them out to be skipped anyway; the order of the rest is kept, so meshes do
+// not change) keeps memory proportional to the mesh.
+void BadTriangleQueue::dropStaleEntries(const Triangulation& t) {
+  queued_ = 0;
+  for (auto* classes : {&buckets_, &sizeBuckets_}) {
+    for (auto& b : *classes) {
+      b.erase(std::remove_if(b.begin(), b.end(),
+                             [&](const BadTriangle& e) {
+                               if (isCurrent(t, e)) return false;
+                               --queuedByAngle_[e.angleClass];
+                               return true;
+                             }),
+              b.end());
+      queued_ += b.size();
+    }
+  }
+  compactAt_ = 2 * std::max<std::uint64_t>(queued_, t.slotCount()) + (1u << 16);
+}
+
+bool BadTriangleQueue::take(std::vector<BadTriangle>& bucket, BadTriangle& out) {
+  if (bucket.empty()) return false;
+  out = bucket.back();
+  bucket.pop_back();
+  --queued_;
+  --queuedByAngle_[out.angleClass];
+  return true;
+}
+
+bool BadTriangleQueue::pop(BadTriangle& out) {
+  if (largestFirst_) {
+    for (; highestSkinny_ >= 0; --highestSkinny_)
+      if (take(buckets_[highestSkinny_], out)) return true;
+    lowestBucket_ = kBuckets;  // no skinny class holds an entry
+  }
+  for (; lowestBucket_ < kBuckets; ++lowestBucket_)
+    if (take(buckets_[lowestBucket_], out)) return true;
+  for (; highestSize_ >= 0; --highestSize_)
+    if (take(sizeBuckets_[highestSize_], out)) return true;
+  return false;
+}
+
+double BadTriangleQueue::worstQueuedAngle(double fallback) const {
+  for (int c = 0; c < kAngleClasses; ++c)
+    if (queuedByAngle_[c]) return std::asin(std::sqrt(0.75 * c / (kAngleClasses - 1))) * 180 / 3.14159265358979323846;
+  return fallback;
+}
+
+}  // namespace ruppert::detail

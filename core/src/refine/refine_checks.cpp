@@ -1,0 +1,197 @@
+// Refiner (refiner.h): what is bad. Encroached subsegments (§6.2, 6.3), skinny and large triangles
+// and their area bounds (§6.4), the Steiner budget, forbidden splits, and the exemptions of §6.6.
+#include "refine/refiner.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cdt/old_mesh.h"
+#include "mesh/predicates.h"
+#include "refine/refine_setup.h"
+#include "cold_code.h"
+
+namespace ruppert::detail {
+
+// ---- tests ---------------------------------------------------------------------------------
+// O(1) test of Exercise 1: the subsegment h is encroached iff an apex on either side sees it at
+// 90 degrees or more.
+bool Refiner::isEncroached(std::uint32_t h) const {
+  if (mesh_.encroachesEdge(t_.pt(t_.apex(h)), h)) return true;
+  const std::uint32_t g = t_.twin[h];
+  return g != kNone && mesh_.encroachesEdge(t_.pt(t_.apex(g)), h);
+}
+
+void Refiner::checkSubsegment(std::uint32_t h) {
+  if (t_.con[h] == kFree) return;
+  if (mesh_.encroachesEdge(t_.pt(t_.apex(h)), h)) encroached_.push_back({t_.origin(h), t_.dest(h), h});
+}
+
+// The half-edge for a queued edge: the remembered one if it still is that edge, else a search.
+// (The search alone is not enough: at a vertex where the domain touches itself, rotating around
+// the vertex cannot reach every triangle.)
+std::uint32_t Refiner::edgeOf(const EdgeRef& e) const {
+  const std::uint32_t t = e.hint / 3;
+  if (t_.alive(t))
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t h = 3 * t + i;
+      const std::uint32_t o = t_.origin(h), d = t_.dest(h);
+      if ((o == e.a && d == e.b) || (o == e.b && d == e.a)) return h;
+    }
+  return t_.findEdge(e.a, e.b);
+}
+
+TriangleQuality Refiner::qualityAt(std::uint32_t s) const {
+  return qualityOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
+}
+
+double Refiner::maxAreaFromEverySource(std::uint32_t s) const {
+  double bound = m_.maxAreaOf(s);
+  if (o_.sizeFunction) {
+    const double* p0 = t_.pt(t_.tv[3 * s]);
+    const double* p1 = t_.pt(t_.tv[3 * s + 1]);
+    const double* p2 = t_.pt(t_.tv[3 * s + 2]);
+    const double cx = m_.input.toUser((p0[0] + p1[0] + p2[0]) / 3);
+    const double cy = m_.input.toUser((p0[1] + p1[1] + p2[1]) / 3);
+    const double user = o_.sizeFunction(cx, cy);
+    if (std::isfinite(user) && user > 0) {
+      const double internal = m_.input.areaToInternal(user);
+      bound = bound > 0 ? std::min(bound, internal) : internal;
+    }
+  }
+  if (m_.oldMesh != nullptr) {
+    const double old = oldMeshBound(s);
+    if (old > 0) bound = bound > 0 ? std::min(bound, old) : old;
+  }
+  return bound;
+}
+
+// Refining a mesh: the old mesh's bound for slot s (old_mesh.h), remembered with the corner
+// coordinates it was computed for (vertex ids would not do: Placement::Optimal moves vertices).
+double Refiner::oldMeshBound(std::uint32_t s) const {
+  if (oldBound_.size() < t_.slotCount()) oldBound_.resize(t_.slotCount(), 0), oldBoundAt_.resize(6 * std::size_t(t_.slotCount()), NAN);
+  const double* p[3] = {t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2])};
+  double* at = &oldBoundAt_[6 * std::size_t(s)];
+  bool same = true;
+  for (int i = 0; i < 6; ++i) same = same && at[i] == p[i / 2][i % 2];
+  if (!same) {
+    oldBound_[s] = m_.oldMesh->boundFor(p[0], p[1], p[2]);
+    for (int i = 0; i < 6; ++i) at[i] = p[i / 2][i % 2];
+  }
+  return oldBound_[s];
+}
+
+void Refiner::checkTriangle(std::uint32_t s) {
+  const double* p0 = t_.pt(t_.tv[3 * s]);
+  const double* p1 = t_.pt(t_.tv[3 * s + 1]);
+  const double* p2 = t_.pt(t_.tv[3 * s + 2]);
+  const TriangleQuality q = qualityOf(p0, p1, p2);
+  const double bound = maxAreaAt(s);
+  const bool large = bound > 0 && q.area > bound;
+  const bool skinny = isSkinny(q);
+  if (!skinny && !large) return;
+  const double shortest2 = skinny ? std::min({sq(p1, p2), sq(p2, p0), sq(p0, p1)}) : q.area;
+  bad_.push(t_, s, skinny, shortest2, q.sin2MinAngle);
+}
+
+// Checked before every insertion, so that a budget of k inserts at most k vertices (0: none).
+// The loop also stops once k are in (outOfBudget), so any k > 0 gives the first k insertions of
+// the unbounded run.
+bool Refiner::mayInsert() {
+  if (inserted_ < budget_ || extendBudget()) return true;
+  budgetHit_ = true;
+  return false;
+}
+
+// Only at the automatic budget's checkpoints (a few per run that passes the first): compiled for
+// size (cold_code.h).
+RUPPERT_COLD_BEGIN
+bool Refiner::extendBudget() {
+  if (!guarded_ || guardStopped_) return false;
+  const std::uint64_t steps = plan_.used + inserted_;
+  const std::uint64_t next = nextGuardCheckpoint(m_, guardBase_, steps, guardIntegral_);
+  if (next == 0) {
+    guardStopped_ = true;
+    return false;
+  }
+  budget_ = next - plan_.used;
+  return true;
+}
+RUPPERT_COLD_END
+
+bool Refiner::outOfBudget() {
+  if (inserted_ >= budget_ && !extendBudget()) {
+    budgetHit_ = true;
+    return true;
+  }
+  if (o_.onProgress && (inserted_ & 4095) == 0 && inserted_ > 0) {
+    Progress p;
+    p.insertedVertices = inserted_;
+    p.triangles = t_.slotCount() - t_.freeSlots.size();
+    p.worstAngle = bad_.worstQueuedAngle(o_.minAngle);
+    if (!o_.onProgress(p)) {
+      cancelled_ = true;
+      return true;
+    }
+  }
+  return false;
+}
+
+// ---- forbidden splits (Options::noBoundarySteiner, noSegmentSteiner) ---------------------------
+// Such a subsegment is never split. A point that encroaches it, lies beyond it or on it is not
+// inserted; instead a triangle over its area bound gets a point pulled back towards its centroid
+// (halfway or a quarter of the way, if that encroaches no subsegment, else the centroid itself)
+// (placeAwayFromForbidden); a triangle that is only skinny stays as it is.
+// Only centroids of triangles over their area bound may lie in a forbidden subsegment's lens; what
+// stays bad is reported as SegmentSplitForbidden. The Steiner budget and the length floor bound
+// the work regardless.
+bool Refiner::onDomainBoundary(std::uint32_t h) const {
+  const std::uint32_t g = t_.twin[h];
+  if (m_.inDomain.empty()) return g == kNone;
+  // Bounding-box variant: the box's sides are not the domain's boundary.
+  return g != kNone && m_.inDomain[h / 3] != m_.inDomain[g / 3];
+}
+
+bool Refiner::splitForbidden(std::uint32_t h) const {
+  if (o_.noSegmentSteiner && (t_.con[h] >= 0 || onDomainBoundary(h))) return true;
+  return o_.noBoundarySteiner && onDomainBoundary(h);
+}
+
+// ---- exemptions (§6.6) -------------------------------------------------------------------------
+// The triangle's smallest angle is an input angle: both edges at that corner are subsegments.
+bool Refiner::nestledInInputAngle(std::uint32_t s, const TriangleShape& sh) const {
+  const std::uint32_t i = static_cast<std::uint32_t>(sh.shortestEdge);  // the smallest angle's corner
+  return t_.con[3 * s + (i + 1) % 3] != kFree && t_.con[3 * s + (i + 2) % 3] != kFree;
+}
+
+// Shortest edge u-w is seditious: u and w split two different segments that meet at a vertex z at
+// less than kSeditiousAngle, at the same distance from z (the same concentric shell). z is an
+// endpoint the segments share, or the point where they cross (an intersection vertex: shells are
+// measured from it too).
+bool Refiner::seditious(std::uint32_t s, const TriangleShape& sh) const {
+  const std::uint32_t h = 3 * s + static_cast<std::uint32_t>(sh.shortestEdge);
+  const std::uint32_t u = t_.origin(h), w = t_.dest(h);
+  if (m_.kind[u] != VertexKind::SegmentSplit || m_.kind[w] != VertexKind::SegmentSplit) return false;
+  const std::int32_t su = m_.onSegment[u], sw = m_.onSegment[w];
+  if (su == -1 || sw == -1 || su == sw) return false;
+  // An input segment's ends, or a hull edge's (which stands for a segment: --convex-hull).
+  auto end = [&](std::int32_t code, int e) {
+    return code >= 0 ? m_.segmentEnd(static_cast<std::size_t>(code), e) : m_.hullEdgeEnds[static_cast<std::size_t>(-2 - code)][e];
+  };
+  const std::uint32_t a0 = end(su, 0), a1 = end(su, 1);
+  const std::uint32_t b0 = end(sw, 0), b1 = end(sw, 1);
+  double z[2];
+  if (a0 == b0 || a0 == b1) {
+    z[0] = t_.xy[2 * a0], z[1] = t_.xy[2 * a0 + 1];
+  } else if (a1 == b0 || a1 == b1) {
+    z[0] = t_.xy[2 * a1], z[1] = t_.xy[2 * a1 + 1];
+  } else if (!segmentsMeet(t_.pt(a0), t_.pt(a1), t_.pt(b0), t_.pt(b1), z)) {
+    return false;
+  }
+  const double ux = t_.xy[2 * u] - z[0], uy = t_.xy[2 * u + 1] - z[1];
+  const double wx = t_.xy[2 * w] - z[0], wy = t_.xy[2 * w + 1] - z[1];
+  if (std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) >= kSeditiousAngle) return false;
+  const double du = length(ux, uy), dw = length(wx, wy);
+  return std::fabs(du - dw) <= 1e-6 * std::max(du, dw);
+}
+
+}  // namespace ruppert::detail
