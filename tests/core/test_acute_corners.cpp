@@ -50,10 +50,7 @@ ruppert_test::ValidateOptions boundHeld(const ruppert::Plc& plc, const ruppert::
   v.input = &plc;
   v.minAngle = 30;
   v.angleTolDeg = 1e-6;
-  const auto seditious = ruppert_test::seditiousTest(mesh, plc);
-  v.angleExempt = [seditious](const ruppert::Mesh& m, std::uint32_t t) {
-    return ruppert_test::nestledInInputAngle(m, t) || seditious(m, t);
-  };
+  v.angleExempt = ruppert_test::chapterExemptions(mesh, plc);
   return v;
 }
 

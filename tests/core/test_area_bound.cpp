@@ -42,10 +42,7 @@ ruppert_test::ValidateOptions bounded(const Plc& plc, const Mesh& mesh, double a
   v.minAngle = angle;
   v.angleTolDeg = 1e-6;
   v.maxArea = maxArea;
-  const auto seditious = ruppert_test::seditiousTest(mesh, plc);
-  v.angleExempt = [seditious](const Mesh& m, std::uint32_t t) {
-    return ruppert_test::nestledInInputAngle(m, t) || seditious(m, t);
-  };
+  v.angleExempt = ruppert_test::chapterExemptions(mesh, plc);
   return v;
 }
 

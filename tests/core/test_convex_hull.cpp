@@ -54,10 +54,7 @@ TEST_CASE("a segment under nearly collinear hull edges refines completely with -
       v.input = &plc;
       v.minAngle = angle;
       v.angleTolDeg = 1e-6;
-      const auto seditious = ruppert_test::seditiousTest(mesh, plc);
-      v.angleExempt = [seditious](const Mesh& m, std::uint32_t t) {
-        return ruppert_test::nestledInInputAngle(m, t) || seditious(m, t);
-      };
+      v.angleExempt = ruppert_test::chapterExemptions(mesh, plc);
       CHECK_VALID(mesh, v);
     }
   }

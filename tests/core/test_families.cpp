@@ -49,10 +49,7 @@ ruppert_test::ValidateOptions boundChecked(const Plc& plc, const Mesh& mesh, dou
   v.expectedArea = area;
   v.minAngle = angle;
   v.angleTolDeg = 1e-6;
-  const auto seditious = ruppert_test::seditiousTest(mesh, plc);
-  v.angleExempt = [seditious](const Mesh& m, std::uint32_t t) {
-    return ruppert_test::nestledInInputAngle(m, t) || seditious(m, t);
-  };
+  v.angleExempt = ruppert_test::chapterExemptions(mesh, plc);
   return v;
 }
 

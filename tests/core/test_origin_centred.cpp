@@ -47,8 +47,7 @@ ValidateOptions boundChecked(const Plc& plc, const Mesh& mesh, double area, doub
   v.expectedArea = area;
   v.minAngle = angle;
   v.angleTolDeg = 1e-6;
-  const auto seditious = seditiousTest(mesh, plc);
-  v.angleExempt = [seditious](const Mesh& m, std::uint32_t t) { return nestledInInputAngle(m, t) || seditious(m, t); };
+  v.angleExempt = ruppert_test::chapterExemptions(mesh, plc);
   return v;
 }
 

@@ -39,10 +39,7 @@ Mesh refineChecked(const Plc& plc, const Options& o, const std::string& name) {
     v.angleTolDeg = 1e-6;
     // Triangles in small input angles and those whose shortest edge is seditious are exempt, each
     // judged on its own from the mesh and the input.
-    const auto seditious = ruppert_test::seditiousTest(mesh, plc);
-    v.angleExempt = [seditious](const Mesh& m, std::uint32_t t) {
-      return ruppert_test::nestledInInputAngle(m, t) || seditious(m, t);
-    };
+    v.angleExempt = ruppert_test::chapterExemptions(mesh, plc);
   }
   RUPPERT_REQUIRE_VALID_2(mesh, v);
   return mesh;
@@ -245,10 +242,7 @@ void checkAboveReach(const Plc& plc, const std::string& name, int& unreachable,
     v.input = &plc;
     v.minAngle = mesh.stats.reachedAngle;
     v.angleTolDeg = 1e-6;
-    const auto seditious = ruppert_test::seditiousTest(mesh, plc);
-    v.angleExempt = [seditious](const Mesh& m, std::uint32_t t) {
-      return ruppert_test::nestledInInputAngle(m, t) || seditious(m, t);
-    };
+    v.angleExempt = ruppert_test::chapterExemptions(mesh, plc);
     RUPPERT_REQUIRE_VALID_2(mesh, v);
   }
 }

@@ -974,6 +974,11 @@ std::function<bool(const Mesh&, std::uint32_t)> seditiousTest(const Mesh& mesh, 
   };
 }
 
+std::function<bool(const Mesh&, std::uint32_t)> chapterExemptions(const Mesh& mesh, const ruppert::Plc& input) {
+  const auto seditious = seditiousTest(mesh, input);
+  return [seditious](const Mesh& m, std::uint32_t t) { return nestledInInputAngle(m, t) || seditious(m, t); };
+}
+
 std::string describeProblems(const std::vector<std::string>& problems, std::size_t max) {
   if (problems.empty()) return "mesh is valid";
   std::string text = std::to_string(problems.size()) + " problem(s):";

@@ -70,11 +70,16 @@ double triangleMinAngleDeg(const ruppert::Mesh& mesh, std::uint32_t t);  // smal
 // its vertex (an input angle or a crossing), so no Steiner point can improve it.
 bool nestledInInputAngle(const ruppert::Mesh& mesh, std::uint32_t t);
 // §6.6, judged from the output and the input: t's shortest edge joins vertices inserted on two
-// different input segments that meet (at a shared endpoint, or where they cross) at less than 45
-// degrees, at the same distance from where they meet (the same concentric shell). The returned test
-// is for `mesh` only (it indexes the mesh's vertices by input segment once).
+// different input segments (or convex-hull edges, which stand for segments) that meet (at a shared
+// endpoint, or where they cross) at less than 45 degrees, at the same distance from where they meet
+// (the same concentric shell). The returned test is for `mesh` only (it indexes the mesh's vertices
+// by input segment once).
 std::function<bool(const ruppert::Mesh&, std::uint32_t)> seditiousTest(const ruppert::Mesh& mesh,
                                                                        const ruppert::Plc& input);
+// The chapter's exemptions from the angle bound, for ValidateOptions::angleExempt: nestled in a
+// small input angle, or a seditious shortest edge (both above), each judged on its own.
+std::function<bool(const ruppert::Mesh&, std::uint32_t)> chapterExemptions(const ruppert::Mesh& mesh,
+                                                                           const ruppert::Plc& input);
 std::string describeProblems(const std::vector<std::string>& problems, std::size_t max = 12);
 // True when every interior non-subsegment edge is strictly Delaunay (incircle < 0), i.e. the CDT of
 // this vertex set and these subsegments is unique. Metamorphic tests compare topology only then.
