@@ -2,12 +2,11 @@
 // frame comes from the page's server, the host from a second server on another port.
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { createServer } from 'node:http';
 import { after, before, test } from 'node:test';
 import { init, parsePoly } from '../../wasm/index.js';
 import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/drawing.js';
 import { findPreset } from '../../web/presets.js';
-import { SCREENSHOTS, launch, openPage } from './harness.mjs';
+import { SCREENSHOTS, launch, openPage, startHostPage } from './harness.mjs';
 
 const VERSION = JSON.parse(readFileSync(new URL('../../package.json', import.meta.url), 'utf8')).version;
 const RECTANGLE = '4 2 0 0\n0 0 0\n1 6 0\n2 6 1\n3 0 1\n4 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n0\n';
@@ -16,37 +15,21 @@ const RECTANGLE_PLC = { points: [0, 0, 6, 0, 6, 1, 0, 1], segments: [0, 1, 1, 2,
 const MARKED = '4 2 0 1\n0 0 0 1\n1 4 0 2\n2 4 3 3\n3 0 3 4\n4 1\n0 0 1 1\n1 1 2 2\n2 2 3 3\n3 3 0 4\n0\n1\n0 2 1.5 7 0\n';
 
 let harness;
-let server;
+let host;
 let hostUrl;
-let frameOrigin;
 let mesher;
 
 before(async () => {
   harness = await launch();
-  frameOrigin = new URL(harness.baseUrl).origin;
-  // The host page: a frame of the page in embed mode, every message from it kept in window.replies.
-  server = createServer((request, response) => {
-    const frameUrl = `${harness.baseUrl}/web/index.html?embed=1`;
-    response.writeHead(200, { 'content-type': 'text/html; charset=utf-8' });
-    response.end(`<!doctype html><meta charset="utf-8"><title>course page</title>
-      <iframe id="f" src="${frameUrl}" width="640" height="480"></iframe>
-      <script>
-        window.replies = [];
-        const f = document.getElementById('f');
-        window.send = (message) => f.contentWindow.postMessage(message, ${JSON.stringify(frameOrigin)});
-        addEventListener('message', (e) => { if (e.source === f.contentWindow) window.replies.push(e.data); });
-      </script>`);
-  });
-  await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
-  hostUrl = `http://127.0.0.1:${server.address().port}/`;
-  assert.notEqual(new URL(hostUrl).origin, frameOrigin, 'the host is of another origin');
+  host = await startHostPage(harness.baseUrl);
+  hostUrl = host.url;
+  assert.notEqual(new URL(hostUrl).origin, host.frameOrigin, 'the host is of another origin');
   mesher = await init();
 });
 
 after(async () => {
   await harness?.close();
-  server?.closeAllConnections?.();
-  if (server) await new Promise((resolve) => server.close(resolve));
+  await host?.close();
 });
 
 /** A fresh host page whose frame has said it is ready and meshed its default drawing. */

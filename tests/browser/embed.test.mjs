@@ -1,12 +1,11 @@
 // Embedding: ?embed=1 and the postMessage protocol, through web/embed-example.html.
 import assert from 'node:assert/strict';
-import { createServer } from 'node:http';
 import { after, before, test } from 'node:test';
 import { init } from '../../wasm/index.js';
 import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/drawing.js';
 import { presetDrawing } from '../../web/presets.js';
 import { encodeDrawing } from '../../web/url-state.js';
-import { SCREENSHOTS, launch, openPage, settle } from './harness.mjs';
+import { SCREENSHOTS, launch, openPage, settle, startHostPage } from './harness.mjs';
 
 let harness;
 let page;
@@ -156,23 +155,9 @@ test('the link keeps the step, the colouring and the view', async () => {
 
 test('a host page on another origin loads a drawing with an id and steps through it', async () => {
   // The host is served by a second server (another port: another origin); the frame by the page's.
-  const frameUrl = `${harness.baseUrl}/web/index.html?embed=1`;
-  const frameOrigin = new URL(frameUrl).origin;
-  const host = `<!doctype html><meta charset="utf-8"><title>host</title>
-    <iframe id="f" src="${frameUrl}" width="640" height="480"></iframe>
-    <script>
-      window.replies = [];
-      const f = document.getElementById('f');
-      window.send = (message) => f.contentWindow.postMessage(message, ${JSON.stringify(frameOrigin)});
-      addEventListener('message', (e) => { if (e.source === f.contentWindow) window.replies.push(e.data); });
-    </script>`;
-  const server = createServer((request, response) => {
-    response.writeHead(200, { 'content-type': 'text/html; charset=utf-8' });
-    response.end(host);
-  });
-  await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
-  const hostUrl = `http://127.0.0.1:${server.address().port}/`;
-  assert.notEqual(new URL(hostUrl).origin, frameOrigin);
+  const host = await startHostPage(harness.baseUrl);
+  const hostUrl = host.url;
+  assert.notEqual(new URL(hostUrl).origin, host.frameOrigin);
   const { page: hostPage, errors: own } = await openPage(harness.context, hostUrl);
   try {
     await hostPage.waitForFunction(() => window.replies.some((r) => r.type === 'ruppert:meshed'), null, { timeout: 20_000 });
@@ -205,8 +190,7 @@ test('a host page on another origin loads a drawing with an id and steps through
     assert.deepEqual(own, []);
   } finally {
     await hostPage.close();
-    server.closeAllConnections?.();
-    await new Promise((resolve) => server.close(resolve));
+    await host.close();
   }
 });
 

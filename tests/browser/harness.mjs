@@ -1,6 +1,7 @@
 // Shared setup of the browser tests: the page's own static server on a free port, and Debian's
 // Chromium driven by playwright-core (which never downloads a browser) with a fresh profile.
 import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { createServer } from 'node:http';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -21,6 +22,37 @@ const ARGS = [
   // already; these keep it when a later Chromium stops falling back to it on its own.
   '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
 ];
+
+/**
+ * A course page of another origin (a second server, on another port) embedding the page served at
+ * baseUrl: a frame of it in embed mode, every message from the frame kept in window.replies, and
+ * window.send(message) posting to the frame. Returns { url, frameOrigin, close() }.
+ */
+export async function startHostPage(baseUrl) {
+  const frameUrl = `${baseUrl}/web/index.html?embed=1`;
+  const frameOrigin = new URL(frameUrl).origin;
+  const html = `<!doctype html><meta charset="utf-8"><title>course page</title>
+    <iframe id="f" src="${frameUrl}" width="640" height="480"></iframe>
+    <script>
+      window.replies = [];
+      const f = document.getElementById('f');
+      window.send = (message) => f.contentWindow.postMessage(message, ${JSON.stringify(frameOrigin)});
+      addEventListener('message', (e) => { if (e.source === f.contentWindow) window.replies.push(e.data); });
+    </script>`;
+  const server = createServer((request, response) => {
+    response.writeHead(200, { 'content-type': 'text/html; charset=utf-8' });
+    response.end(html);
+  });
+  await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
+  return {
+    url: `http://127.0.0.1:${server.address().port}/`,
+    frameOrigin,
+    async close() {
+      server.closeAllConnections?.();
+      await new Promise((resolve) => server.close(resolve));
+    },
+  };
+}
 
 /** Starts the server and the browser. Returns { baseUrl, context, close() }. */
 export async function launch() {
