@@ -134,20 +134,15 @@ void AngleStats::addExact(const double* const* p) {
   }
 }
 
-double AngleStats::minAngle() const {
-  if (!any_) return 0;
-  const double* p[3] = {smallest_, smallest_ + 2, smallest_ + 4};
+// The smallest or the largest angle, in degrees, of the triangle whose corners xy holds.
+static double extremeAngle(const double* xy, bool largest) {
+  const double* p[3] = {xy, xy + 2, xy + 4};
   double angle[3];
   triangleAngles(p, angle);
-  return degrees(std::min({angle[0], angle[1], angle[2]}));
+  return degrees(largest ? std::max({angle[0], angle[1], angle[2]}) : std::min({angle[0], angle[1], angle[2]}));
 }
 
-double AngleStats::maxAngle() const {
-  if (!any_) return 0;
-  const double* p[3] = {largest_, largest_ + 2, largest_ + 4};
-  double angle[3];
-  triangleAngles(p, angle);
-  return degrees(std::max({angle[0], angle[1], angle[2]}));
-}
+double AngleStats::minAngle() const { return any_ ? extremeAngle(smallest_, false) : 0; }
+double AngleStats::maxAngle() const { return any_ ? extremeAngle(largest_, true) : 0; }
 
 }  // namespace ruppert::detail

@@ -61,7 +61,7 @@ class BadTriangleQueue {
   // input's extent), four per power of two of the squared shortest edge.
   static constexpr int kLowestExponent = -80;
   static constexpr int kBuckets = 4 * (4 - kLowestExponent);
-  // The size classes, two per power of two of the area, from 2^-170 to 2^10; made on the first
+  // The size classes, sixteen per power of two of the area, from 2^-170 to 2^10; made on the first
   // too-large triangle (a call without an area bound never pays for them).
   static constexpr int kLowestAreaExponent = -170;
   static constexpr int kSizeClassesPerOctave = 16;

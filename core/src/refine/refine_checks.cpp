@@ -89,8 +89,9 @@ void Refiner::checkTriangle(std::uint32_t s) {
   const bool large = bound > 0 && q.area > bound;
   const bool skinny = isSkinny(q);
   if (!skinny && !large) return;
-  const double shortest2 = skinny ? std::min({sq(p1, p2), sq(p2, p0), sq(p0, p1)}) : q.area;
-  bad_.push(t_, s, skinny, shortest2, q.sin2MinAngle);
+  // The queue's key: the squared shortest edge of a skinny triangle, the area of a too-large one.
+  const double key = skinny ? std::min({sq(p1, p2), sq(p2, p0), sq(p0, p1)}) : q.area;
+  bad_.push(t_, s, skinny, key, q.sin2MinAngle);
 }
 
 // Checked before every insertion, so that a budget of k inserts at most k vertices (0: none).
