@@ -7,7 +7,9 @@
 #
 # ruppert: the CLI (build-native/core/ruppert, or RUPPERT_CLI), phases as the inclusive instruction
 # counts of prepareInput, buildDelaunay, insertSegments (+ insertHull), findDomain + classifyTriangles
-# + removeOutside, refine and assembleOutput; "core" is all of triangulate(). Triangle (1.6, -pzQq):
+# + removeOutside, refine and assembleOutput; "core" is all of triangulate(). RUPPERT_ARGS adds
+# options to ruppert's runs (e.g. RUPPERT_ARGS="--placement offcenter", the kind of point
+# Triangle places). Triangle (1.6, -pzQq):
 # delaunay, formskeleton, carveholes and enforcequality; "core" is their sum (reading and writing
 # files left out on both sides). Instruction counts do not depend on the machine's load.
 set -euo pipefail
@@ -47,7 +49,8 @@ declare -a total=(0 0 0 0 0 0 0 0 0 0 0 0 0 0)
 for plc in "$dir"/*-"$seed".poly; do
   name=$(basename "$plc" .poly)
   cp "$plc" "$work/in.poly"
-  valgrind --tool=callgrind --callgrind-out-file="$work/r.out" "$cli" --quiet --min-angle "$angle" -o "$work/r" "$plc" >/dev/null 2>&1
+  # shellcheck disable=SC2086  # RUPPERT_ARGS is a list of words
+  valgrind --tool=callgrind --callgrind-out-file="$work/r.out" "$cli" --quiet --min-angle "$angle" ${RUPPERT_ARGS:-} -o "$work/r" "$plc" >/dev/null 2>&1
   valgrind --tool=callgrind --callgrind-out-file="$work/t.out" "$triangle" "-pzQq$angle" "$work/in.poly" >/dev/null 2>&1
   rt=$(head -1 "$work/r.ele" | awk '{print $1}')
   tt=$(head -1 "$work/in.1.ele" | awk '{print $1}')
