@@ -46,6 +46,9 @@ inline constexpr std::uint64_t kDirectTriangleFactor = 16;
 inline constexpr std::uint64_t kSecondDirectTriangleFactor = 128;
 inline constexpr std::uint64_t kSecondDirectTriangleCeiling = std::uint64_t(1) << 19;
 inline constexpr std::uint64_t kLargestFirstLeast = 2;
+// A direct attempt that completes within this many times the 33-degree mesh's triangles ends the
+// search; a larger one is kept only until a later attempt, capped at its size, completes smaller.
+inline constexpr double kDirectEnoughFactor = 1.5;
 
 // How one run proceeds.
 struct RefinePlan {

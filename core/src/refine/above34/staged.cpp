@@ -44,6 +44,16 @@ struct StagedPath {
   std::uint64_t baseDomain = 0;  // ... inside the domain (the push's promise's unit)
 };
 
+// The best complete direct attempt so far (refineStaged).
+struct DirectBest {
+  bool found = false;
+  std::uint64_t triangles = 0;  // live triangles
+  int attempt = 0;
+  std::uint64_t steps = 0;
+  MeshState mesh;
+  RefineOutcome out;
+};
+
 // Direct attempt number `attempt` (0 to 3; bound_push.h): as without stages; then the largest skinny
 // triangles first with the best points below the bound, those that beat the off-center's smallest
 // new angle by kBelowBoundGain and then only those that beat it by kStrictBelowBoundGain (up to 128
@@ -99,24 +109,31 @@ RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path)
   path.reachSteps = reachRun.steps();
   path.base = liveTriangles(m);
   path.baseDomain = domainTriangles(m);
-  // True (and m the mesh) where a direct run from the unrefined mesh completes within the cap.
-  auto direct = [&](MeshState from, int number, const RefinePlan& plan, RefineOutcome& out) {
-    Refiner attempt(from, plan);
-    out = attempt.run();
-    if (attempt.capHit() || !completeOutcome(out)) return false;
-    m = std::move(from);
-    path.branch = StagedPath::Direct, path.attempt = number, path.steps = attempt.steps();
-    return true;
-  };
-  RefineOutcome out;
+  // The smallest mesh of the direct attempts that complete: each later attempt is capped at the
+  // best one's triangles, so it stops as soon as it cannot win; none runs after a mesh within
+  // kDirectEnoughFactor of the 33-degree one.
+  DirectBest best;
   for (int number = 0; number < directAttempts(*m.options); ++number) {
-    const RefinePlan plan = directPlan(requested, path.base, number, budget);
+    RefinePlan plan = directPlan(requested, path.base, number, budget);
     if (plan.largestFirst && plan.triangleCap < kLargestFirstLeast * path.base) continue;  // too large an input
-    if (direct(start, number, plan, out)) return out;
+    if (best.found) plan.triangleCap = std::min(plan.triangleCap, best.triangles);
+    MeshState from = start;
+    Refiner attempt(from, plan);
+    RefineOutcome out = attempt.run();
+    if (attempt.capHit() || !completeOutcome(out)) continue;
+    const std::uint64_t triangles = liveTriangles(from);
+    if (best.found && triangles >= best.triangles) continue;
+    best = {true, triangles, number, attempt.steps(), std::move(from), std::move(out)};
+    if (triangles <= kDirectEnoughFactor * static_cast<double>(path.base)) break;
+  }
+  if (best.found) {
+    m = std::move(best.mesh);
+    path.branch = StagedPath::Direct, path.attempt = best.attempt, path.steps = best.steps;
+    return std::move(best.out);
   }
   start = MeshState{};  // free it before the push
   Refiner push(m, pushPlan(requested, path, budget));
-  out = push.run();
+  RefineOutcome out = push.run();
   path.branch = StagedPath::Push, path.steps = push.steps();
   return afterReach(std::move(reach), std::move(out));
 }
