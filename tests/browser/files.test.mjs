@@ -190,7 +190,11 @@ test('exports .node, .ele, .msh, .vtu and .geojson downloads whose headers match
 
   const vtu = (await exportFile('#export-vtu')).bytes.toString('utf8');
   assert.ok(vtu.startsWith('<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid"'), vtu.slice(0, 80));
-  assert.match(vtu, new RegExp(`NumberOfCells="${triangles}"`));
+  // The triangles, then the boundary's subsegments as lines (as the .msh has them).
+  const types = /Name="types"[^>]*>([^<]*)</.exec(vtu)[1].trim().split(/\s+/).map(Number);
+  assert.equal(types.filter((t) => t === 5).length, triangles);
+  assert.ok(types.filter((t) => t === 3).length >= 8, 'the pentagon\'s and the hole\'s segments as lines');
+  assert.match(vtu, new RegExp(`NumberOfCells="${types.length}"`));
 
   const geojson = await exportFile('#export-geojson');
   assert.equal(geojson.name, 'ruppert-mesh.geojson');
