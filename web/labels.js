@@ -40,11 +40,17 @@ export const EXEMPTION_LABELS = {
 
 /** options.placement, the Steiner placement box's entries (in this order). */
 export const PLACEMENT_LABELS = {
-  optimal: 'optimal points (fewest triangles, up to 40°)',
+  optimal: 'optimal points (fewest triangles, bounds of 35-40°)',
   offcenter: 'off-center (faster)',
   circumcenter: 'circumcenter',
   petal: 'petal',
 };
+
+/**
+ * The largest min angle each placement usually reaches (README's option table: 35-40 degrees with
+ * the optimal points; off-centers about 34, circumcenters about 33): past it the page warns.
+ */
+export const PRACTICAL_ANGLE = { optimal: 40, offcenter: 34, circumcenter: 33, petal: 34 };
 
 /** options.variant, the Algorithm box's entries. */
 export const VARIANT_LABELS = {

@@ -49,18 +49,29 @@ test('each figure preset names its figure, applies its options and meshes comple
   await settle(page);
 });
 
-test('the slider warns past 34 degrees', async () => {
-  await page.fill('#min-angle', '33');
-  await page.press('#min-angle', 'Enter');
-  await settle(page);
-  assert.equal(await page.locator('#min-angle-warning').isHidden(), true);
-  await page.fill('#min-angle', '36');
-  await page.press('#min-angle', 'Enter');
-  await settle(page);
-  assert.equal(await page.locator('#min-angle-warning').isVisible(), true);
+test('the slider warns past what the placement reaches: 40 degrees with optimal points, 34 with off-centers', async () => {
+  const angle = async (value) => {
+    await page.fill('#min-angle', String(value));
+    await page.press('#min-angle', 'Enter');
+    await settle(page);
+  };
+  assert.equal(await page.inputValue('#placement'), 'optimal');
+  await angle(36);
+  assert.equal(await page.locator('#min-angle-warning').isHidden(), true, 'optimal points at 36°');
+  await angle(41);
+  assert.equal(await page.locator('#min-angle-warning').isVisible(), true, 'optimal points at 41°');
+  await page.selectOption('#placement', 'offcenter');
+  await angle(33);
+  assert.equal(await page.locator('#min-angle-warning').isHidden(), true, 'off-centers at 33°');
+  await angle(36);
+  assert.equal(await page.locator('#min-angle-warning').isVisible(), true, 'off-centers at 36°');
+  // The note and the placement box say the same of the default placement: 35-40 degrees.
+  assert.match(await page.locator('#min-angle-note').textContent(), /optimal points\) bounds of 35-40°/);
+  assert.match(await page.locator('#placement option[value="optimal"]').textContent(), /35-40°/);
+  await page.selectOption('#placement', 'optimal');
   assert.equal(await page.getAttribute('#min-angle-range', 'list'), 'angle-marks');
   const marks = await page.locator('#angle-marks option').evaluateAll((o) => o.map((x) => Number(x.value)));
-  assert.ok(marks.includes(20.7) && marks.includes(34), marks.join(', '));
+  assert.ok(marks.includes(20.7) && marks.includes(34) && marks.includes(40), marks.join(', '));
   await page.fill('#min-angle', '30');
   await page.press('#min-angle', 'Enter');
   await settle(page);
