@@ -50,6 +50,8 @@ if (bench) window.ruppertBench = { view, renderer, draw: () => draw(), exemption
 const embedded = isEmbedded();
 if (embedded) document.body.classList.add('embed');
 const readOnly = !isEditable();
+// `&edit=1`: the reader draws, so the embed shows the drawing tools and the edit buttons too.
+if (embedded && !readOnly) document.body.classList.add('editable');
 
 const app = {
   canvas,
@@ -123,10 +125,14 @@ function draw() {
 
 function resize() {
   const rect = $('canvas-wrap').getBoundingClientRect();
+  const before = { width: view.width };
   view.resize(rect.width, rect.height);
   renderer.resize(rect.width, rect.height, window.devicePixelRatio || 1);
-  // Until the user pans or zooms, keep the whole drawing in view as the layout settles.
+  // Until the user pans or zooms, keep the whole drawing in view as the layout settles; after, keep
+  // the width of the world that was in view (a phone turned, a window made narrow: the canvas's
+  // width changes). A change of height alone (the stepper shown, a status line) zooms nothing.
   if (!app.viewMoved) view.fit(drawingBounds(app.drawing));
+  else if (before.width > 1 && rect.width !== before.width) view.scale *= rect.width / before.width;
   draw();
 }
 new ResizeObserver(resize).observe($('canvas-wrap'));
@@ -192,7 +198,7 @@ const meshing = createMeshing({
 });
 const toolbar = createToolbar({
   app, editor, history, canvas, fitView, scheduleDraw, setDrawing,
-  syncRegion: parameters.syncRegion, stepShortcut: steps.shortcut,
+  syncRegion: parameters.syncRegion, stepShortcut: steps.shortcut, notPreset: () => presets.notPreset(),
 });
 const presets = createPresetBox({
   app, setDrawing, restartSteps: steps.restart, setStages: steps.setStages, shared: !embedded,
