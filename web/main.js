@@ -4,6 +4,7 @@
 // (MeshScheduler: debounced, in a worker) -> the renderer, the mesh panel, the display panel,
 // step mode, the status line, and a postMessage to a host.
 import { cloneDrawing, drawingBounds, emptyDrawing, fromPlc } from './drawing.js';
+import { createCompareView } from './compare-view.js';
 import { createDisplayPanel } from './display-panel.js';
 import { Editor } from './editor.js';
 import { isEditable, isEmbedded, listenToHost, postError, postMesh, postReady } from './embed.js';
@@ -125,6 +126,8 @@ function draw() {
 
 function resize() {
   const rect = $('canvas-wrap').getBoundingClientRect();
+  // Hidden (the side-by-side comparison shows instead): nothing to fit until it is back.
+  if (rect.width === 0 || rect.height === 0) return;
   const before = { width: view.width };
   view.resize(rect.width, rect.height);
   renderer.resize(rect.width, rect.height, window.devicePixelRatio || 1);
@@ -189,8 +192,9 @@ const meshPanel = createMeshPanel();
 const steps = createStepsPanel({
   app, renderer, meshPanel, scheduleDraw, writeLinkSoon: link.writeSoon, remeshNow: () => meshing.remesh(0, { quiet: true }),
 });
+const compare = createCompareView({ app });
 const meshing = createMeshing({
-  app, renderer, meshPanel, display, steps, scheduleDraw,
+  app, renderer, meshPanel, display, steps, scheduleDraw, onMeshed: () => compare.update(),
   onArrival: bench ? () => {
     meshArrivedAt = performance.now();
     document.body.dataset.meshArrivedAt = String(meshArrivedAt);
@@ -201,7 +205,7 @@ const toolbar = createToolbar({
   syncRegion: parameters.syncRegion, stepShortcut: steps.shortcut, notPreset: () => presets.notPreset(),
 });
 const presets = createPresetBox({
-  app, setDrawing, restartSteps: steps.restart, setStages: steps.setStages, shared: !embedded,
+  app, setDrawing, restartSteps: steps.restart, setStages: steps.setStages, compare, shared: !embedded,
 });
 createFilePanel({ app, setDrawing, notPreset: presets.notPreset });
 createExportMenu({ app, renderer, draw, writeLink: link.write });

@@ -53,6 +53,7 @@ export function createParametersPanel({ app, editor, changed }) {
     $('max-steiner').value = Number.isInteger(o.maxSteiner) ? String(o.maxSteiner) : '';
     $('variant').value = o.variant ?? DEFAULT_OPTIONS.variant;
     $('encroachment').value = o.encroachment ?? DEFAULT_OPTIONS.encroachment;
+    $('size-measure').checked = Boolean(o.sizeMeasure);
   }
 
   function setMinAngle(value, commit) {
@@ -94,10 +95,14 @@ export function createParametersPanel({ app, editor, changed }) {
   for (const name of ['placement', 'variant', 'encroachment']) {
     $(name).addEventListener('change', () => {
       app.drawing.options[name] = $(name).value;
-      changed(true);
       $('min-angle-warning').hidden = !pastPractical(app.drawing.options);
+      changed(true);
     });
   }
+  $('size-measure').addEventListener('change', () => {
+    app.drawing.options.sizeMeasure = $('size-measure').checked;
+    changed(true);
+  });
   $('max-steiner').addEventListener('change', () => {
     const value = readNumber($('max-steiner'));
     app.drawing.options.maxSteiner = value !== null && value >= 0 ? Math.floor(value) : null;
