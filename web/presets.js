@@ -163,6 +163,11 @@ function twoPolygons() {
 
 export const PRESETS = [
   {
+    id: 'lake', name: 'A lake with islands and a jetty (the first sight)', build: lake, options: { maxArea: 0.5 },
+    caption: 'A lake with two islands (holes) and a jetty, no angle under 30° and no triangle larger than 0.5: ' +
+      'the triangles shrink towards the small island and the jetty. Drag a vertex, change the angle, or pick a figure of the chapter.',
+  },
+  {
     id: 'skyline', name: 'Fig. 6.1: skyline at 28°', build: skyline, options: { minAngle: 28 },
     caption: 'Figure 6.1: a skyline and its Delaunay mesh with no angle under 28°.',
   },
@@ -237,8 +242,10 @@ export const PRESETS = [
   { id: 'two-sizes', name: 'Two polygons of very different sizes, with regions', build: twoSizes },
 ];
 
-// The first sight: two polygons of very different sizes, graded at the default 30 degrees.
-export const DEFAULT_PRESET = 'figure-6-9-30';
+// The first sight: a drawing whose mesh shows refinement (about 200 triangles, graded towards its
+// small features) at the default angle; Fig. 6.9 at 30 degrees with the default placement is ten
+// large triangles and a sliver.
+export const DEFAULT_PRESET = 'lake';
 
 const { SEGMENT_SPLIT, REJECTED } = EventKind;
 

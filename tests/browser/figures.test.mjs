@@ -2,7 +2,10 @@
 // promises: the slider's warning past 34 degrees, the preset box after a file is opened.
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
-import { PRESETS } from '../../web/presets.js';
+import { init } from '../../wasm/index.js';
+import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/drawing.js';
+import { triangleShape } from '../../web/mesh-geometry.js';
+import { DEFAULT_PRESET, PRESETS, findPreset } from '../../web/presets.js';
 import { SCREENSHOTS, launch, openPage, readStats, settle } from './harness.mjs';
 
 let harness;
@@ -19,10 +22,20 @@ after(async () => {
   await harness?.close();
 });
 
-test('the first sight is a figure of the chapter that refines visibly', async () => {
+test('the first sight is a drawing whose mesh shows refinement: many triangles, graded', async () => {
   const stats = await readStats(page);
-  assert.ok(stats.triangles >= 50, `${stats.triangles} triangles`);
-  assert.match(await page.locator('#preset-caption').textContent(), /^Figure 6\.9:/);
+  assert.ok(stats.triangles >= 150, `${stats.triangles} triangles`);
+  assert.equal(await page.inputValue('#preset'), DEFAULT_PRESET);
+  assert.ok((await page.locator('#preset-caption').textContent()).length > 40, 'a caption says what it shows');
+  // Graded: the largest triangle is many times the smallest (Fig. 6.9 at 30 degrees with the
+  // default placement, the old first sight, is ten large triangles and a sliver).
+  const preset = findPreset(DEFAULT_PRESET);
+  const drawing = { ...preset.build(), options: { ...DEFAULT_OPTIONS, ...preset.options } };
+  const mesh = (await init()).triangulate(toPlc(drawing), toMeshOptions(drawing));
+  assert.equal(mesh.stats.triangles, stats.triangles, 'the page shows the package\'s mesh');
+  const areas = Array.from({ length: mesh.triangles.length / 3 }, (_, t) => triangleShape(mesh, t).area);
+  assert.ok(Math.max(...areas) > 10 * Math.min(...areas), `areas ${Math.min(...areas)} to ${Math.max(...areas)}`);
+  await page.screenshot({ path: `${SCREENSHOTS}first-sight.png` });
 });
 
 test('each figure preset names its figure, applies its options and meshes completely', async () => {
