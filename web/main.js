@@ -20,6 +20,7 @@ import { createParametersPanel } from './parameters-panel.js';
 import { createPresetBox } from './preset-box.js';
 import { PRESETS, findPreset } from './presets.js';
 import { Renderer } from './render.js';
+import { createStartHere } from './start-here.js';
 import { setStatus } from './status-line.js';
 import { createStepsPanel } from './steps-panel.js';
 import { createToolbar } from './toolbar.js';
@@ -209,6 +210,7 @@ const presets = createPresetBox({
 });
 createFilePanel({ app, setDrawing, notPreset: presets.notPreset });
 createExportMenu({ app, renderer, draw, writeLink: link.write });
+createStartHere({ embedded });
 
 // ---------------------------------------------------------------- embedding (embed.js)
 const SETTLED = ['done', 'error', 'cancelled', 'empty'];

@@ -1,7 +1,7 @@
 // The page for courses, its smaller promises (issue 44): an editable embed shows its tools, the
 // canvas fills a small window, the histogram has a count axis and the bound and is in view, Clear
 // takes the caption away, the hover box hides off the mesh, a resize keeps the drawing in view,
-// notices read as words and short numbers.
+// notices read as words and short numbers, and a first visit gets a dismissible "Start here".
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { SCREENSHOTS, launch, openPage, settle } from './harness.mjs';
@@ -160,4 +160,34 @@ test('notices give coordinates to six digits and their codes in words', async ()
   assert.doesNotMatch(notice, /\d\.\d{7,}/, 'no coordinate past six digits');
   assert.deepEqual(errors, []);
   await page.close();
+});
+
+test('"Start here" shows on a first visit, stays away once dismissed, and shows in an embed only when asked', async () => {
+  const open = (query = '') => openPage(harness.context, `${harness.baseUrl}/web/${query}`, { startHere: true });
+  let { page, errors } = await open();
+  await page.evaluate(() => localStorage.clear());
+  await page.reload();
+  assert.equal(await settle(page), 'done');
+  const panel = page.locator('#start-here');
+  assert.equal(await panel.isVisible(), true, 'a first visit');
+  const steps = await panel.locator('li').allTextContents();
+  assert.ok(steps.length >= 4 && steps.length <= 6, `${steps.length} steps`);
+  for (const word of [/preset/i, /angle/i, /mesh/i, /step/i, /export/i]) assert.ok(steps.some((s) => word.test(s)), `${word} in the steps`);
+  await page.screenshot({ path: `${SCREENSHOTS}start-here.png` });
+  await page.click('#start-here-dismiss');
+  assert.equal(await panel.isHidden(), true, 'dismissed');
+  await page.reload();
+  assert.equal(await settle(page), 'done');
+  assert.equal(await panel.isHidden(), true, 'still dismissed after a reload');
+  await page.click('#start-here-show');
+  assert.equal(await panel.isVisible(), true, 'the toolbar button shows it again');
+  await page.close();
+  for (const [query, shown] of [['index.html?embed=1', false], ['index.html?embed=1&help=1', true]]) {
+    const framed = await open(query);
+    assert.equal(await settle(framed.page), 'done');
+    assert.equal(await framed.page.locator('#start-here').isVisible(), shown, query);
+    errors = errors.concat(framed.errors);
+    await framed.page.close();
+  }
+  assert.deepEqual(errors, []);
 });
