@@ -15,6 +15,8 @@ import { boundsOf, hasBounds, includePoint } from './bounds.js';
 
 export const DEFAULT_OPTIONS = Object.freeze({
   minAngle: 30, maxArea: null, placement: 'optimal', maxSteiner: null, variant: 'cdt', encroachment: 'lens',
+  // The chapter's size measure (stats.lfsIntegral, §6.5) costs a pass over the input per vertex: on demand.
+  sizeMeasure: false,
 });
 
 export function emptyDrawing(options = DEFAULT_OPTIONS) {
@@ -67,6 +69,7 @@ export function toMeshOptions(d, { trace = false } = {}) {
   };
   if (o.maxArea > 0) options.maxArea = o.maxArea;
   if (Number.isInteger(o.maxSteiner) && o.maxSteiner >= 0) options.maxSteiner = o.maxSteiner;
+  if (o.sizeMeasure) options.sizeMeasure = true;
   return options;
 }
 

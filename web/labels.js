@@ -40,11 +40,17 @@ export const EXEMPTION_LABELS = {
 
 /** options.placement, the Steiner placement box's entries (in this order). */
 export const PLACEMENT_LABELS = {
-  optimal: 'optimal points (fewest triangles, up to 40°)',
+  optimal: 'optimal points (fewest triangles, bounds of 35-40°)',
   offcenter: 'off-center (faster)',
   circumcenter: 'circumcenter',
   petal: 'petal',
 };
+
+/**
+ * The largest min angle each placement usually reaches (README's option table: 35-40 degrees with
+ * the optimal points; off-centers about 34, circumcenters about 33): past it the page warns.
+ */
+export const PRACTICAL_ANGLE = { optimal: 40, offcenter: 34, circumcenter: 33, petal: 34 };
 
 /** options.variant, the Algorithm box's entries. */
 export const VARIANT_LABELS = {
@@ -57,3 +63,31 @@ export const ENCROACHMENT_LABELS = {
   lens: 'Diametral lens',
   disk: 'Diametral disk',
 };
+
+/** mesh.notices' kinds (NoticeKind): what the mesher repaired in the input, in the list under the canvas. */
+export const NOTICE_LABELS = {
+  DUPLICATE_POINT: 'Duplicate point',
+  ZERO_LENGTH_SEGMENT: 'Segment of zero length',
+  DUPLICATE_SEGMENT: 'Duplicate segment',
+  VERTEX_ON_SEGMENT: 'Vertex on a segment',
+  SEGMENTS_CROSS: 'Segments cross',
+  SEGMENTS_OVERLAP: 'Segments overlap',
+  HOLE_OUTSIDE_DOMAIN: 'Hole seed outside the domain',
+  REGION_OUTSIDE_DOMAIN: 'Region seed outside the domain',
+  NOTHING_ENCLOSED: 'Nothing enclosed',
+};
+
+/** A code with no label of its own (an error's: DEGENERATE_INPUT) as words: 'Degenerate input'. */
+export function codeWords(code) {
+  const words = String(code).toLowerCase().replace(/_/g, ' ');
+  return words.charAt(0).toUpperCase() + words.slice(1);
+}
+
+/**
+ * A message's decimal numbers to six significant digits: the core prints coordinates in full
+ * (0.30000000000000004), which says nothing more to a reader. Whole numbers (indices) stay.
+ */
+export function roundNumbers(text) {
+  return String(text).replace(/-?(?:\d+\.\d+|\.\d+)(?:e[+-]?\d+)?|-?\d+e[+-]?\d+/gi,
+    (number) => String(Number(Number(number).toPrecision(6))));
+}

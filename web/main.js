@@ -4,6 +4,7 @@
 // (MeshScheduler: debounced, in a worker) -> the renderer, the mesh panel, the display panel,
 // step mode, the status line, and a postMessage to a host.
 import { cloneDrawing, drawingBounds, emptyDrawing, fromPlc } from './drawing.js';
+import { createCompareView } from './compare-view.js';
 import { createDisplayPanel } from './display-panel.js';
 import { Editor } from './editor.js';
 import { isEditable, isEmbedded, listenToHost, postError, postMesh, postReady } from './embed.js';
@@ -19,6 +20,7 @@ import { createParametersPanel } from './parameters-panel.js';
 import { createPresetBox } from './preset-box.js';
 import { PRESETS, findPreset } from './presets.js';
 import { Renderer } from './render.js';
+import { createStartHere } from './start-here.js';
 import { setStatus } from './status-line.js';
 import { createStepsPanel } from './steps-panel.js';
 import { createToolbar } from './toolbar.js';
@@ -50,6 +52,8 @@ if (bench) window.ruppertBench = { view, renderer, draw: () => draw(), exemption
 const embedded = isEmbedded();
 if (embedded) document.body.classList.add('embed');
 const readOnly = !isEditable();
+// `&edit=1`: the reader draws, so the embed shows the drawing tools and the edit buttons too.
+if (embedded && !readOnly) document.body.classList.add('editable');
 
 const app = {
   canvas,
@@ -123,10 +127,16 @@ function draw() {
 
 function resize() {
   const rect = $('canvas-wrap').getBoundingClientRect();
+  // Hidden (the side-by-side comparison shows instead): nothing to fit until it is back.
+  if (rect.width === 0 || rect.height === 0) return;
+  const before = { width: view.width };
   view.resize(rect.width, rect.height);
   renderer.resize(rect.width, rect.height, window.devicePixelRatio || 1);
-  // Until the user pans or zooms, keep the whole drawing in view as the layout settles.
+  // Until the user pans or zooms, keep the whole drawing in view as the layout settles; after, keep
+  // the width of the world that was in view (a phone turned, a window made narrow: the canvas's
+  // width changes). A change of height alone (the stepper shown, a status line) zooms nothing.
   if (!app.viewMoved) view.fit(drawingBounds(app.drawing));
+  else if (before.width > 1 && rect.width !== before.width) view.scale *= rect.width / before.width;
   draw();
 }
 new ResizeObserver(resize).observe($('canvas-wrap'));
@@ -183,8 +193,9 @@ const meshPanel = createMeshPanel();
 const steps = createStepsPanel({
   app, renderer, meshPanel, scheduleDraw, writeLinkSoon: link.writeSoon, remeshNow: () => meshing.remesh(0, { quiet: true }),
 });
+const compare = createCompareView({ app });
 const meshing = createMeshing({
-  app, renderer, meshPanel, display, steps, scheduleDraw,
+  app, renderer, meshPanel, display, steps, scheduleDraw, onMeshed: () => compare.update(),
   onArrival: bench ? () => {
     meshArrivedAt = performance.now();
     document.body.dataset.meshArrivedAt = String(meshArrivedAt);
@@ -192,13 +203,14 @@ const meshing = createMeshing({
 });
 const toolbar = createToolbar({
   app, editor, history, canvas, fitView, scheduleDraw, setDrawing,
-  syncRegion: parameters.syncRegion, stepShortcut: steps.shortcut,
+  syncRegion: parameters.syncRegion, stepShortcut: steps.shortcut, notPreset: () => presets.notPreset(),
 });
 const presets = createPresetBox({
-  app, setDrawing, restartSteps: steps.restart, setStages: steps.setStages, shared: !embedded,
+  app, setDrawing, restartSteps: steps.restart, setStages: steps.setStages, compare, shared: !embedded,
 });
 createFilePanel({ app, setDrawing, notPreset: presets.notPreset });
 createExportMenu({ app, renderer, draw, writeLink: link.write });
+createStartHere({ embedded });
 
 // ---------------------------------------------------------------- embedding (embed.js)
 const SETTLED = ['done', 'error', 'cancelled', 'empty'];

@@ -13,12 +13,12 @@ export const REFERENCE_ANGLES = [20.7, 26.45, 28.6, 34];
 
 const format = (value, digits = 2) => (Number.isFinite(value) ? value.toFixed(digits) : '–');
 
-export function showStats(elements, mesh) {
-  const { vertices, triangles, minAngle, maxAngle, complete, time, reasons } = elements;
+export function showStats(elements, mesh, bound = null) {
+  const { vertices, triangles, minAngle, maxAngle, complete, time, reasons, sizeMeasure } = elements;
   if (!mesh) {
-    for (const el of [vertices, triangles, minAngle, maxAngle, complete, time]) el.textContent = '–';
+    for (const el of [vertices, triangles, minAngle, maxAngle, complete, time, sizeMeasure]) el.textContent = '–';
     reasons.replaceChildren();
-    drawHistogram(elements.histogram, null);
+    drawHistogram(elements.histogram, null, bound);
     return;
   }
   const s = mesh.stats;
@@ -29,16 +29,44 @@ export function showStats(elements, mesh) {
   complete.textContent = mesh.complete ? 'yes' : 'no';
   complete.className = mesh.complete ? 'good' : 'bad';
   time.textContent = `${format(s.milliseconds, 1)} ms`;
+  sizeMeasure.textContent = sizeMeasureText(s);
   reasons.replaceChildren(...mesh.reasons.map((r) => {
     const li = document.createElement('li');
     li.textContent = `${r.kind} ×${r.count}: ${r.message}`;
     return li;
   }));
-  drawHistogram(elements.histogram, s.angleHistogram);
+  drawHistogram(elements.histogram, s.angleHistogram, bound);
 }
 
-/** Bars of the 180 one-degree bins, with the reference angles as vertical lines. */
-export function drawHistogram(canvas, histogram) {
+/**
+ * The size measure row: the integral of 1/lfs² (stats.lfsIntegral, present when the mesh was made
+ * with sizeMeasure) and the triangles per unit of it, the ratio a size-optimal mesh keeps bounded.
+ */
+export function sizeMeasureText(stats) {
+  const integral = stats.lfsIntegral;
+  if (!(integral > 0)) return 'off (Parameters: Size measure)';
+  return `∫1/lfs² = ${integral.toPrecision(4)}; ${(stats.triangles / integral).toPrecision(3)} triangles per unit`;
+}
+
+/** A round number at or above `value` (1, 2 or 5 times a power of ten), for the count axis. */
+export function niceCeiling(value) {
+  if (!(value > 0)) return 1;
+  const power = 10 ** Math.floor(Math.log10(value));
+  for (const m of [1, 2, 5, 10]) if (m * power >= value) return m * power;
+  return 10 * power;
+}
+
+// The histogram's colours: bars, the reference angles (dashed), the bound in force (solid, the
+// teal no bar has), the axes and their labels.
+const HISTOGRAM_COLOURS = { bar: '#3b5bdb', reference: '#c92a2a', bound: '#0b7285', axis: '#343a40' };
+
+/**
+ * Bars of the 180 one-degree bins over a count axis (0 to a round number at or above the fullest
+ * bin), the reference angles as dashed lines and the min-angle bound in force as a solid one, so
+ * that the bars left of it are the angles below the bound. canvas.dataset keeps what was drawn
+ * (countMax, bound, boundX in CSS pixels) for tests and readers of the page.
+ */
+export function drawHistogram(canvas, histogram, bound = null) {
   const dpr = window.devicePixelRatio || 1;
   const cssWidth = canvas.clientWidth || 320;
   const cssHeight = canvas.clientHeight || 140;
@@ -49,38 +77,78 @@ export function drawHistogram(canvas, histogram) {
   const ctx = canvas.getContext('2d');
   ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
   ctx.clearRect(0, 0, cssWidth, cssHeight);
-  const left = 4;
+  const left = 34;      // room for the count labels
+  const top = 12;       // room for the bound's label
   const bottom = cssHeight - 16;
-  const width = cssWidth - 8;
+  const width = cssWidth - left - 6;
   const x = (angle) => left + (angle / 180) * width;
 
   ctx.fillStyle = '#f7f8fa';
-  ctx.fillRect(left, 0, width, bottom);
+  ctx.fillRect(left, top, width, bottom - top);
+  let countMax = 0;
   if (histogram && histogram.length) {
-    let max = 0;
-    for (const count of histogram) max = Math.max(max, count);
-    ctx.fillStyle = '#3b5bdb';
+    for (const count of histogram) countMax = Math.max(countMax, count);
+    countMax = niceCeiling(countMax);
+    ctx.fillStyle = HISTOGRAM_COLOURS.bar;
     for (let bin = 0; bin < histogram.length; bin++) {
       if (!histogram[bin]) continue;
-      const h = Math.max(1, (histogram[bin] / max) * (bottom - 4));
+      const h = Math.max(1, (histogram[bin] / countMax) * (bottom - top));
       ctx.fillRect(x(bin), bottom - h, Math.max(1, width / 180), h);
     }
   }
-  ctx.strokeStyle = '#c92a2a';
+  ctx.strokeStyle = HISTOGRAM_COLOURS.reference;
   ctx.lineWidth = 1;
   ctx.setLineDash([3, 2]);
   for (const angle of REFERENCE_ANGLES) {
     ctx.beginPath();
-    ctx.moveTo(Math.round(x(angle)) + 0.5, 0);
+    ctx.moveTo(Math.round(x(angle)) + 0.5, top);
     ctx.lineTo(Math.round(x(angle)) + 0.5, bottom);
     ctx.stroke();
   }
   ctx.setLineDash([]);
-  ctx.fillStyle = '#343a40';
   ctx.font = '10px system-ui, sans-serif';
+  ctx.textBaseline = 'alphabetic';
+  if (bound > 0) {
+    const bx = Math.round(x(bound));  // 2 pixels wide: the pixels either side of bx, both solid
+    ctx.strokeStyle = HISTOGRAM_COLOURS.bound;
+    ctx.lineWidth = 2;
+    ctx.beginPath();
+    ctx.moveTo(bx, top - 2);
+    ctx.lineTo(bx, bottom);
+    ctx.stroke();
+    ctx.fillStyle = HISTOGRAM_COLOURS.bound;
+    ctx.textAlign = 'left';
+    ctx.fillText(`bound ${Number(bound.toFixed(2))}°`, bx + 3, top - 2);
+    canvas.dataset.bound = String(bound);
+    canvas.dataset.boundX = String(bx);
+  } else {
+    delete canvas.dataset.bound;
+    delete canvas.dataset.boundX;
+  }
+  // The axes: counts up the left, angles along the bottom.
+  ctx.strokeStyle = HISTOGRAM_COLOURS.axis;
+  ctx.lineWidth = 1;
+  ctx.beginPath();
+  ctx.moveTo(left - 0.5, top);
+  ctx.lineTo(left - 0.5, bottom + 0.5);
+  ctx.lineTo(left + width, bottom + 0.5);
+  ctx.stroke();
+  ctx.fillStyle = HISTOGRAM_COLOURS.axis;
+  ctx.textAlign = 'right';
+  if (countMax > 0) {
+    for (const count of [0, countMax / 2, countMax]) {
+      const y = bottom - (count / countMax) * (bottom - top);
+      ctx.fillText(count.toLocaleString('en-US'), left - 4, Math.max(y + 3, top + 6));
+      ctx.beginPath();
+      ctx.moveTo(left - 3, Math.round(y) + 0.5);
+      ctx.lineTo(left, Math.round(y) + 0.5);
+      ctx.stroke();
+    }
+  }
+  canvas.dataset.countMax = String(countMax);
   ctx.textAlign = 'center';
   for (const angle of [0, 30, 60, 90, 120, 150, 180]) {
-    ctx.fillText(`${angle}°`, Math.min(Math.max(x(angle), 10), cssWidth - 12), cssHeight - 4);
+    ctx.fillText(`${angle}°`, Math.min(Math.max(x(angle), left + 8), cssWidth - 12), cssHeight - 4);
   }
 }
 
@@ -144,7 +212,7 @@ export function createMeshPanel() {
   const elements = {
     vertices: $('stat-vertices'), triangles: $('stat-triangles'), minAngle: $('stat-min-angle'),
     maxAngle: $('stat-max-angle'), complete: $('stat-complete'), time: $('stat-time'),
-    reasons: $('reasons'), histogram: $('histogram'),
+    reasons: $('reasons'), histogram: $('histogram'), sizeMeasure: $('stat-size-measure'),
   };
 
   /** The triangles left skinny on purpose in the mesh, marked in the panel: the exemptions or null. */
@@ -159,6 +227,7 @@ export function createMeshPanel() {
   }
 
   let final = null;  // the mesh of the drawing (step mode: its last step)
+  let bound = null;  // the min angle it was made for: the histogram's solid line
   /** The title says which mesh the rows describe. */
   const title = (text) => { $('stats-title').textContent = text; };
 
@@ -166,8 +235,9 @@ export function createMeshPanel() {
     /** A new mesh of request.plc: every row; returns its exemptions (or null) for the canvas. */
     show(mesh, request) {
       final = mesh;
+      bound = request.options.minAngle;
       title('Mesh');
-      showStats(elements, mesh);
+      showStats(elements, mesh, bound);
       showEventCounts($('stat-events'), mesh);
       return markExemptions(mesh, request);
     },
@@ -178,14 +248,15 @@ export function createMeshPanel() {
     showStep(mesh, k = 0, count = 0) {
       if (mesh === null || mesh === final) {
         title(mesh === null ? 'Mesh' : `Mesh at step ${k} of ${count} (the final mesh)`);
-        showStats(elements, final);
+        showStats(elements, final, bound);
         return;
       }
       title(`Mesh at step ${k} of ${count}`);
-      showStats(elements, mesh);
+      showStats(elements, mesh, bound);
     },
     clear() {
       final = null;
+      bound = null;
       title('Mesh');
       showStats(elements, null);
       showExemptions($('stat-exempt'), null);

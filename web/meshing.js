@@ -23,8 +23,9 @@ export function loading() {
  * @param {object} meshPanel, display, steps the panels a mesh changes
  * @param {() => void} scheduleDraw
  * @param {(() => void) | null} onArrival called first when a mesh arrives (`?bench=1`)
+ * @param {() => void} onMeshed called after a mesh of a changed drawing or options is shown
  */
-export function createMeshing({ app, renderer, meshPanel, display, steps, scheduleDraw, onArrival = null }) {
+export function createMeshing({ app, renderer, meshPanel, display, steps, scheduleDraw, onArrival = null, onMeshed = () => {} }) {
   const scheduler = new MeshScheduler({
     onStart() {
       document.body.dataset.meshState = 'meshing';
@@ -57,6 +58,7 @@ export function createMeshing({ app, renderer, meshPanel, display, steps, schedu
       // The host hears of a new mesh: one per load or preset it sent (with its id), and one per
       // change of the reader's; a mesh that only adds or drops the trace (step mode) is the same.
       if (request.id !== null || !request.quiet) postMeshed(mesh, request.id);
+      if (!request.quiet) onMeshed();
       steps.showPending();
       scheduleDraw();
     },

@@ -3,7 +3,7 @@
 // selected segment's marker.
 // Each field writes app.drawing.options and reports the change; sync() shows a drawing's options.
 import { DEFAULT_OPTIONS, Item, segmentMarkers } from './drawing.js';
-import { ENCROACHMENT_LABELS, PLACEMENT_LABELS, VARIANT_LABELS } from './labels.js';
+import { ENCROACHMENT_LABELS, PLACEMENT_LABELS, PRACTICAL_ANGLE, VARIANT_LABELS } from './labels.js';
 import { setStatus } from './status-line.js';
 
 const $ = (id) => document.getElementById(id);
@@ -13,6 +13,11 @@ function readNumber(input) {
   if (input.value.trim() === '') return null;
   const value = Number(input.value);
   return Number.isFinite(value) ? value : null;
+}
+
+/** Whether the min angle is past what the placement usually reaches (the warning under the slider). */
+export function pastPractical(options) {
+  return options.minAngle > (PRACTICAL_ANGLE[options.placement] ?? PRACTICAL_ANGLE.offcenter);
 }
 
 /** A select's entries from a table of labels keyed by the option's values (labels.js). */
@@ -42,12 +47,13 @@ export function createParametersPanel({ app, editor, changed }) {
     const o = app.drawing.options;
     minAngleRange.value = String(o.minAngle);
     minAngleNumber.value = String(o.minAngle);
-    $('min-angle-warning').hidden = !(o.minAngle > 34);
+    $('min-angle-warning').hidden = !pastPractical(o);
     $('max-area').value = o.maxArea > 0 ? String(o.maxArea) : '';
     $('placement').value = o.placement;
     $('max-steiner').value = Number.isInteger(o.maxSteiner) ? String(o.maxSteiner) : '';
     $('variant').value = o.variant ?? DEFAULT_OPTIONS.variant;
     $('encroachment').value = o.encroachment ?? DEFAULT_OPTIONS.encroachment;
+    $('size-measure').checked = Boolean(o.sizeMeasure);
   }
 
   function setMinAngle(value, commit) {
@@ -58,7 +64,7 @@ export function createParametersPanel({ app, editor, changed }) {
     }
     minAngleNumber.removeAttribute('aria-invalid');
     app.drawing.options.minAngle = value;
-    $('min-angle-warning').hidden = !(value > 34);
+    $('min-angle-warning').hidden = !pastPractical(app.drawing.options);
     changed(commit);
   }
   // The slider re-meshes while it moves and records an undo step once it rests (browsers differ
@@ -89,9 +95,14 @@ export function createParametersPanel({ app, editor, changed }) {
   for (const name of ['placement', 'variant', 'encroachment']) {
     $(name).addEventListener('change', () => {
       app.drawing.options[name] = $(name).value;
+      $('min-angle-warning').hidden = !pastPractical(app.drawing.options);
       changed(true);
     });
   }
+  $('size-measure').addEventListener('change', () => {
+    app.drawing.options.sizeMeasure = $('size-measure').checked;
+    changed(true);
+  });
   $('max-steiner').addEventListener('change', () => {
     const value = readNumber($('max-steiner'));
     app.drawing.options.maxSteiner = value !== null && value >= 0 ? Math.floor(value) : null;

@@ -19,9 +19,10 @@ function showCaption(text) {
  * @param {(drawing, how) => void} setDrawing
  * @param {(on: boolean) => void} restartSteps step mode on or off as a preset asks, from step 0
  * @param {(stages: Function|null) => void} setStages the preset's figure stages (presets.js), or none
+ * @param {object} compare the side-by-side view (compare-view.js): a preset with `compare` shows it
  * @param {boolean} shared whether to look for the corpus (not in an embed)
  */
-export function createPresetBox({ app, setDrawing, restartSteps, setStages, shared }) {
+export function createPresetBox({ app, setDrawing, restartSteps, setStages, compare, shared }) {
   for (const preset of PRESETS) {
     const option = document.createElement('option');
     option.value = preset.id;
@@ -52,6 +53,8 @@ export function createPresetBox({ app, setDrawing, restartSteps, setStages, shar
     showCaption(preset.caption ?? '');
     if (steps) restartSteps(Boolean(preset.steps));
     setStages(preset.stages ?? null);
+    if (preset.compare) compare.show(preset.compare);
+    else compare.hide();
     setDrawing({ ...preset.build(), options: { ...DEFAULT_OPTIONS, ...(preset.options ?? {}) } }, { commit });
     return true;
   }
@@ -61,6 +64,7 @@ export function createPresetBox({ app, setDrawing, restartSteps, setStages, shar
     $('preset').value = '';
     showCaption('');
     setStages(null);
+    compare.hide();
   }
 
   // The corpus of real PLCs beside the repository (../shared/data), when the server offers it:
@@ -97,6 +101,7 @@ export function createPresetBox({ app, setDrawing, restartSteps, setStages, shar
       const plc = await parseInput(await response.text(), name);
       showCaption('');
       setStages(null);
+      compare.hide();
       setDrawing(fromPlc(plc, app.drawing.options));
       $('preset').value = SHARED_PRESET + name;
       setStatus(`Loaded ${name}: ${plc.points.length / 2} points, ${plc.segments.length / 2} segments.`, 'ok');

@@ -81,6 +81,35 @@ function twoSizes() {
   return d;
 }
 
+/**
+ * A square 100 wide with a triangle 0.5 wide near one corner: the local feature size runs from
+ * about 0.5 there to about 50 at the far side, so the mesh grades over two orders of magnitude.
+ */
+function smallFeature() {
+  const d = blank();
+  ring(d, [0, 0, 100, 0, 100, 100, 0, 100]);
+  ring(d, [12, 12, 12.5, 12, 12.25, 12.45]);
+  d.holes.push(12.25, 12.15);
+  return d;
+}
+
+/**
+ * The first sight: the README's lake (an octagon with an island that is a hole) with a second,
+ * small island and a jetty, so that the mesh grades visibly towards the small features.
+ */
+function lake() {
+  const d = blank();
+  ring(d, [0, 0, 4, -1, 8, 0, 10, 3, 8, 7, 4, 8, 1, 6, -1, 3]);
+  ring(d, [4, 3, 6, 3, 6, 5, 4, 4.5]);
+  d.holes.push(5, 3.8);
+  ring(d, [7.6, 1.2, 7.75, 1.25, 7.675, 1.3725]);  // 0.15 wide: about 25 times the smallest triangles' size
+  d.holes.push(7.675, 1.275);
+  const jetty = d.points.length / 2;
+  d.points.push(1, 1.5, 2.2, 2.6);
+  d.segments.push(jetty, jetty + 1);
+  return d;
+}
+
 /** Segments 5 degrees apart meeting at one vertex, inside a rectangle: small input angles (chapter 6.6). */
 function smallAngleFan() {
   const d = blank();
@@ -134,6 +163,11 @@ function twoPolygons() {
 
 export const PRESETS = [
   {
+    id: 'lake', name: 'A lake with islands and a jetty (the first sight)', build: lake, options: { maxArea: 0.5 },
+    caption: 'A lake with two islands (holes) and a jetty, no angle under 30° and no triangle larger than 0.5: ' +
+      'the triangles shrink towards the small island and the jetty. Drag a vertex, change the angle, or pick a figure of the chapter.',
+  },
+  {
     id: 'skyline', name: 'Fig. 6.1: skyline at 28°', build: skyline, options: { minAngle: 28 },
     caption: 'Figure 6.1: a skyline and its Delaunay mesh with no angle under 28°.',
   },
@@ -168,6 +202,20 @@ export const PRESETS = [
     options: { minAngle: 33, placement: 'offcenter' },
     caption: 'Off-centers at 33°: about 200 triangles, five times fewer than circumcenters on the same input (§6.8).',
   },
+  {
+    id: 'placement-compare', name: 'Off-centers against circumcenters, side by side (33°)', build: twoSizes,
+    // Both meshes are made by compare-view.js; the main mesh (the Mesh panel's) is the off-centers'.
+    options: { minAngle: 33, placement: 'offcenter' }, compare: ['circumcenter', 'offcenter'],
+    caption: 'Off-centers against circumcenters (§6.8): the same input at the same angle, one mesh per placement; ' +
+      'compare the triangle counts under the two pictures. Change the min angle: both are meshed again.',
+  },
+  {
+    id: 'size-measure', name: 'The size measure: a small feature far from a large one', build: smallFeature,
+    options: { sizeMeasure: true },
+    caption: 'The size measure (§6.5): the local feature size is tiny near the small triangle and large far from it, ' +
+      'and the triangles grow with it. Look at the grading, and at the Mesh panel\'s Size measure row: ' +
+      'the integral of 1/lfs², to which a good mesh\'s triangle count is proportional.',
+  },
   ...[5, 20, 30, 34.2].map((angle) => ({
     id: `figure-6-9-${String(angle).replace('.', '-')}`,
     name: `Fig. 6.9: two polygons at ${angle}°`,
@@ -194,8 +242,10 @@ export const PRESETS = [
   { id: 'two-sizes', name: 'Two polygons of very different sizes, with regions', build: twoSizes },
 ];
 
-// The first sight: two polygons of very different sizes, graded at the default 30 degrees.
-export const DEFAULT_PRESET = 'figure-6-9-30';
+// The first sight: a drawing whose mesh shows refinement (about 200 triangles, graded towards its
+// small features) at the default angle; Fig. 6.9 at 30 degrees with the default placement is ten
+// large triangles and a sliver.
+export const DEFAULT_PRESET = 'lake';
 
 const { SEGMENT_SPLIT, REJECTED } = EventKind;
 

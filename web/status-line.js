@@ -1,5 +1,6 @@
 // The lines under the canvas: the status line, the list of the mesher's notices and errors, and
 // the progress indicator (its Cancel button is wired by meshing.js).
+import { NOTICE_LABELS, codeWords, roundNumbers } from './labels.js';
 const $ = (id) => document.getElementById(id);
 // Progress shows only for work that takes a noticeable time.
 const PROGRESS_DELAY_MS = 200;
@@ -11,19 +12,27 @@ export function setStatus(text, kind = 'info') {
   status.dataset.kind = kind;
 }
 
+/**
+ * One notice or error as the reader sees it: the code's words, the message with its coordinates
+ * to six digits, and the code itself last (to look it up in the package's documentation).
+ */
+export function noticeText(code, message) {
+  return `${NOTICE_LABELS[code] ?? codeWords(code)}: ${roundNumbers(message)} (${code})`;
+}
+
 /** The notices of the mesh (its repairs of the input) and, first, an error if there is one. */
 export function showNotices(notices, error = null) {
   const list = $('notices');
   const items = notices.map((n) => {
     const li = document.createElement('li');
     li.className = 'notice';
-    li.textContent = `${n.kind}: ${n.message}`;
+    li.textContent = noticeText(n.kind, n.message);
     return li;
   });
   if (error) {
     const li = document.createElement('li');
     li.className = 'error';
-    li.textContent = `${error.code ?? error.name}: ${error.message}`;
+    li.textContent = noticeText(error.code ?? error.name, error.message);
     items.unshift(li);
   }
   list.replaceChildren(...items);

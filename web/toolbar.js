@@ -13,8 +13,9 @@ const $ = (id) => document.getElementById(id);
  * @param {(drawing, how) => void} setDrawing for Clear
  * @param {() => void} syncRegion shows the selected region seed's values (parameters panel)
  * @param {(key) => boolean} stepShortcut the step mode keys (steps panel)
+ * @param {() => void} notPreset the drawing is no longer a preset (its caption goes with it)
  */
-export function createToolbar({ app, editor, history, canvas, fitView, scheduleDraw, setDrawing, syncRegion, stepShortcut }) {
+export function createToolbar({ app, editor, history, canvas, fitView, scheduleDraw, setDrawing, syncRegion, stepShortcut, notPreset }) {
   function setTool(tool) {
     editor.setTool(tool);
     for (const button of document.querySelectorAll('[data-tool]')) {
@@ -49,7 +50,10 @@ export function createToolbar({ app, editor, history, canvas, fitView, scheduleD
   $('undo').addEventListener('click', () => app.undo());
   $('redo').addEventListener('click', () => app.redo());
   $('delete-selected').addEventListener('click', () => editor.deleteSelection());
-  $('clear').addEventListener('click', () => setDrawing(emptyDrawing(app.drawing.options), { fit: false }));
+  $('clear').addEventListener('click', () => {
+    notPreset();
+    setDrawing(emptyDrawing(app.drawing.options), { fit: false });
+  });
   $('fit').addEventListener('click', fitView);
   $('snap').addEventListener('change', setSnap);
   // The editor changes the selection on clicks; keep the Delete button's state in step.

@@ -3,11 +3,12 @@
 //   #d=<base64url of compact JSON>
 //   { "v": 1, "p": [x0, y0, ...], "s": [a0, b0, ...], "m": [marker per segment] (only if any), "h": [hx0, hy0, ...],
 //     "r": [[x, y, attribute, maxArea], ...],
-//     "o": [minAngle, maxArea, "o" | "c", maxSteiner, "c" | "b", "l" | "d"] }
+//     "o": [minAngle, maxArea, "o" | "c", maxSteiner, "c" | "b", "l" | "d", 1 (size measure, only if on)] }
 //
 // maxArea 0 = none, maxSteiner -1 = automatic, "o"/"c"/"p"/"t" = off-center / circumcenter / petal / optimal placement,
 // "c"/"b" = CDT / bounding-box variant, "l"/"d" = diametral lens / disk encroachment. The last two
-// were appended later: links without them (or with unknown values) get the defaults, CDT and lens.
+// were appended later: links without them (or with unknown values) get the defaults, CDT and lens;
+// so was the seventh, present only when the size measure is asked for.
 import { DEFAULT_OPTIONS } from './drawing.js';
 
 /** Links longer than this are not written (browsers and chat apps truncate them). */
@@ -41,7 +42,9 @@ export function encodeDrawing(d) {
     r: d.regions.map((r) => [r.x, r.y, r.attribute ?? 0, r.maxArea > 0 ? r.maxArea : 0]),
     o: [o.minAngle, o.maxArea > 0 ? o.maxArea : 0, PLACEMENT_CODES.get(o.placement) ?? 't',
       Number.isInteger(o.maxSteiner) ? o.maxSteiner : -1,
-      o.variant === 'box' ? 'b' : 'c', o.encroachment === 'disk' ? 'd' : 'l'],
+      o.variant === 'box' ? 'b' : 'c', o.encroachment === 'disk' ? 'd' : 'l',
+      // The size measure only when asked for (older links have no 7th entry: off).
+      ...(o.sizeMeasure ? [1] : [])],
   };
   return `d=${toBase64Url(JSON.stringify(compact))}`;
 }
@@ -71,7 +74,7 @@ export function decodeDrawing(hash) {
     finiteArray(r, 'a region');
     return { x: r[0], y: r[1], attribute: r[2] ?? 0, maxArea: r[3] > 0 ? r[3] : null };
   });
-  const [minAngle, maxArea, placement, maxSteiner, variant, encroachment] = Array.isArray(data.o) ? data.o : [];
+  const [minAngle, maxArea, placement, maxSteiner, variant, encroachment, sizeMeasure] = Array.isArray(data.o) ? data.o : [];
   const options = {
     minAngle: Number.isFinite(minAngle) ? Math.min(60, Math.max(0, minAngle)) : DEFAULT_OPTIONS.minAngle,
     maxArea: maxArea > 0 ? maxArea : null,
@@ -79,6 +82,7 @@ export function decodeDrawing(hash) {
     maxSteiner: Number.isInteger(maxSteiner) && maxSteiner >= 0 ? maxSteiner : null,
     variant: variant === 'b' ? 'box' : 'cdt',
     encroachment: encroachment === 'd' ? 'disk' : 'lens',
+    sizeMeasure: sizeMeasure === 1,
   };
   return { points, segments, segmentMarkers, holes, regions, options };
 }

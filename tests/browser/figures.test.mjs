@@ -2,7 +2,10 @@
 // promises: the slider's warning past 34 degrees, the preset box after a file is opened.
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
-import { PRESETS } from '../../web/presets.js';
+import { init } from '../../wasm/index.js';
+import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/drawing.js';
+import { triangleShape } from '../../web/mesh-geometry.js';
+import { DEFAULT_PRESET, PRESETS, findPreset } from '../../web/presets.js';
 import { SCREENSHOTS, launch, openPage, readStats, settle } from './harness.mjs';
 
 let harness;
@@ -19,10 +22,20 @@ after(async () => {
   await harness?.close();
 });
 
-test('the first sight is a figure of the chapter that refines visibly', async () => {
+test('the first sight is a drawing whose mesh shows refinement: many triangles, graded', async () => {
   const stats = await readStats(page);
-  assert.ok(stats.triangles >= 50, `${stats.triangles} triangles`);
-  assert.match(await page.locator('#preset-caption').textContent(), /^Figure 6\.9:/);
+  assert.ok(stats.triangles >= 150, `${stats.triangles} triangles`);
+  assert.equal(await page.inputValue('#preset'), DEFAULT_PRESET);
+  assert.ok((await page.locator('#preset-caption').textContent()).length > 40, 'a caption says what it shows');
+  // Graded: the largest triangle is many times the smallest (Fig. 6.9 at 30 degrees with the
+  // default placement, the old first sight, is ten large triangles and a sliver).
+  const preset = findPreset(DEFAULT_PRESET);
+  const drawing = { ...preset.build(), options: { ...DEFAULT_OPTIONS, ...preset.options } };
+  const mesh = (await init()).triangulate(toPlc(drawing), toMeshOptions(drawing));
+  assert.equal(mesh.stats.triangles, stats.triangles, 'the page shows the package\'s mesh');
+  const areas = Array.from({ length: mesh.triangles.length / 3 }, (_, t) => triangleShape(mesh, t).area);
+  assert.ok(Math.max(...areas) > 10 * Math.min(...areas), `areas ${Math.min(...areas)} to ${Math.max(...areas)}`);
+  await page.screenshot({ path: `${SCREENSHOTS}first-sight.png` });
 });
 
 test('each figure preset names its figure, applies its options and meshes completely', async () => {
@@ -49,18 +62,29 @@ test('each figure preset names its figure, applies its options and meshes comple
   await settle(page);
 });
 
-test('the slider warns past 34 degrees', async () => {
-  await page.fill('#min-angle', '33');
-  await page.press('#min-angle', 'Enter');
-  await settle(page);
-  assert.equal(await page.locator('#min-angle-warning').isHidden(), true);
-  await page.fill('#min-angle', '36');
-  await page.press('#min-angle', 'Enter');
-  await settle(page);
-  assert.equal(await page.locator('#min-angle-warning').isVisible(), true);
+test('the slider warns past what the placement reaches: 40 degrees with optimal points, 34 with off-centers', async () => {
+  const angle = async (value) => {
+    await page.fill('#min-angle', String(value));
+    await page.press('#min-angle', 'Enter');
+    await settle(page);
+  };
+  assert.equal(await page.inputValue('#placement'), 'optimal');
+  await angle(36);
+  assert.equal(await page.locator('#min-angle-warning').isHidden(), true, 'optimal points at 36°');
+  await angle(41);
+  assert.equal(await page.locator('#min-angle-warning').isVisible(), true, 'optimal points at 41°');
+  await page.selectOption('#placement', 'offcenter');
+  await angle(33);
+  assert.equal(await page.locator('#min-angle-warning').isHidden(), true, 'off-centers at 33°');
+  await angle(36);
+  assert.equal(await page.locator('#min-angle-warning').isVisible(), true, 'off-centers at 36°');
+  // The note and the placement box say the same of the default placement: 35-40 degrees.
+  assert.match(await page.locator('#min-angle-note').textContent(), /optimal points\) bounds of 35-40°/);
+  assert.match(await page.locator('#placement option[value="optimal"]').textContent(), /35-40°/);
+  await page.selectOption('#placement', 'optimal');
   assert.equal(await page.getAttribute('#min-angle-range', 'list'), 'angle-marks');
   const marks = await page.locator('#angle-marks option').evaluateAll((o) => o.map((x) => Number(x.value)));
-  assert.ok(marks.includes(20.7) && marks.includes(34), marks.join(', '));
+  assert.ok(marks.includes(20.7) && marks.includes(34) && marks.includes(40), marks.join(', '));
   await page.fill('#min-angle', '30');
   await page.press('#min-angle', 'Enter');
   await settle(page);

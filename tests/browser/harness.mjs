@@ -80,10 +80,19 @@ export async function launch() {
   };
 }
 
-/** Opens a page and collects console errors and uncaught exceptions in `errors`. */
-export async function openPage(context, url, { width = 1280, height = 800 } = {}) {
+/**
+ * Opens a page and collects console errors and uncaught exceptions in `errors`. The "Start here"
+ * panel (web/start-here.js) is dismissed beforehand, as a returning reader has it, so that it
+ * covers no part of the canvas a test clicks; `startHere: true` leaves the page's storage alone.
+ */
+export async function openPage(context, url, { width = 1280, height = 800, startHere = false } = {}) {
   const page = await context.newPage();
   await page.setViewportSize({ width, height });
+  if (!startHere) {
+    await page.addInitScript(() => {
+      try { localStorage.setItem('ruppert:start-here-dismissed', '1'); } catch { /* a sandboxed frame */ }
+    });
+  }
   const errors = [];
   page.on('console', (message) => {
     if (message.type() === 'error') errors.push(`console: ${message.text()}`);

@@ -65,10 +65,19 @@ test('markers 1-4 of a loaded .poly are shown and written by every export', asyn
   assert.ok(header, 'a segment header with a marker column');
   const polyMarkers = new Set(poly.split('\n').filter((l) => /^\d+ \d+ \d+ \d+$/.test(l)).map((l) => Number(l.split(' ')[3])));
   for (const m of [1, 2, 3, 4]) assert.ok(polyMarkers.has(m), `marker ${m} in the .poly`);
-  // .vtu: the point markers carry them.
+  // .vtu: the point markers carry them, and the boundary's line cells their segment markers.
   const vtu = await exportFile('#export-vtu');
-  const pointMarkers = /Name="pointMarker"[^>]*>([^<]*)</.exec(vtu)[1].trim().split(/\s+/).map(Number);
-  for (const m of [1, 2, 3, 4]) assert.ok(pointMarkers.includes(m), `marker ${m} in the .vtu`);
+  const array = (name) => new RegExp(`Name="${name}"[^>]*>([^<]*)<`).exec(vtu)?.[1].trim().split(/\s+/).map(Number) ?? [];
+  const pointMarkers = array('pointMarker');
+  for (const m of [1, 2, 3, 4]) assert.ok(pointMarkers.includes(m), `marker ${m} in the .vtu's points`);
+  const types = array('types');
+  const cellMarkers = array('segmentMarker');
+  assert.equal(cellMarkers.length, types.length, 'one segment marker a cell');
+  assert.equal(Number(/NumberOfCells="(\d+)"/.exec(vtu)[1]), types.length);
+  const lineMarkers = new Set(cellMarkers.filter((_, c) => types[c] === 3));
+  assert.deepEqual([...lineMarkers].sort(), [1, 2, 3, 4], 'the lines carry markers 1-4');
+  assert.ok(cellMarkers.every((m, c) => types[c] === 3 || m === 0), 'the triangles have none');
+  for (const name of ['regionAttribute', 'minAngle']) assert.equal(array(name).length, types.length, `${name}: one value a cell`);
   // .geojson: each triangle's edge markers.
   const geojson = JSON.parse(await exportFile('#export-geojson'));
   const edgeMarkers = new Set(geojson.features.flatMap((f) => f.properties.edgeMarkers));

@@ -14,6 +14,10 @@ after(async () => {
   await harness?.close();
 });
 
+// A figure that steps, one that does not, one with another algorithm, and the two ideas whose
+// presets carry their own views (the side-by-side comparison, the size measure).
+const IDS = ['figure-6-4', 'skyline', 'comb-box', 'placement-compare', 'size-measure'];
+
 /** What the page shows of a preset once it is meshed. */
 async function presetState(page, id) {
   await page.selectOption('#preset', id);
@@ -28,7 +32,9 @@ async function presetState(page, id) {
     stepMode: await page.isChecked('#step-mode'),
     stepInfo: await page.locator('#stepper').isVisible() ? await page.locator('#step-info').textContent() : null,
     options: await page.evaluate(() => ['min-angle', 'max-area', 'placement', 'variant', 'encroachment', 'max-steiner']
-      .map((id) => document.getElementById(id).value)),
+      .map((id) => document.getElementById(id).value).concat(document.getElementById('size-measure').checked)),
+    comparing: await page.locator('#compare').isVisible(),
+    sizeMeasure: await page.locator('#stat-size-measure').textContent(),
     caption: await page.locator('#preset-caption').textContent(),
   };
 }
@@ -37,14 +43,14 @@ test('a preset opens the same after other options and a replay step as on a fres
   const { page: fresh, errors: freshErrors } = await openPage(harness.context, `${harness.baseUrl}/web/`);
   assert.equal(await settle(fresh), 'done');
   const expected = {};
-  for (const id of ['figure-6-4', 'skyline', 'comb-box']) expected[id] = await presetState(await reopen(fresh), id);
+  for (const id of IDS) expected[id] = await presetState(await reopen(fresh), id);
   assert.match(expected['figure-6-4'].stepInfo, /^Step 0 of \d+/);
   assert.equal(expected.skyline.stepMode, false);
   assert.equal(expected['figure-6-4'].stepMode, true);
 
   const { page, errors } = await openPage(harness.context, `${harness.baseUrl}/web/`);
   assert.equal(await settle(page), 'done');
-  for (const id of ['figure-6-4', 'skyline', 'comb-box']) {
+  for (const id of IDS) {
     // Another state first: max area 0.5, another placement, step mode at some step.
     await page.fill('#max-area', '0.5');
     await page.locator('#max-area').dispatchEvent('change');

@@ -5,6 +5,7 @@ import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { init } from '../../wasm/index.js';
 import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/drawing.js';
+import { triangleShape } from '../../web/mesh-geometry.js';
 import { findPreset } from '../../web/presets.js';
 import { SCREENSHOTS, canvasFingerprint, launch, openPage, readStats, settle } from './harness.mjs';
 
@@ -189,5 +190,86 @@ test('one preset per idea, each with a caption, screenshot and its options', asy
     }
   }
   assert.ok(shell, 'a shell split in the shells preset');
+  assert.deepEqual(errors, []);
+});
+
+test('the presets of one idea each exist: encroachment, shells, small input angles, placements, size measure', async () => {
+  for (const id of ['encroachment', 'shells', 'fan', 'placement-compare', 'size-measure']) assert.ok(findPreset(id), id);
+});
+
+test('off-centers against circumcenters: both meshes side by side, each with its count and smallest angle', async () => {
+  const done = () => page.waitForFunction(() => document.getElementById('compare').dataset.state === 'done', null, { timeout: 20_000 });
+  await page.selectOption('#preset', 'placement-compare');
+  assert.equal(await settle(page), 'done');
+  await done();
+  assert.equal(await page.locator('#canvas-wrap').isHidden(), true, 'the comparison takes the canvas\'s place');
+  const sides = page.locator('#compare .compare-side');
+  assert.equal(await sides.count(), 2);
+  const [left, right] = [await sides.nth(0).locator('canvas').boundingBox(), await sides.nth(1).locator('canvas').boundingBox()];
+  assert.ok(Math.abs(left.y - right.y) < 1 && right.x >= left.x + left.width, 'side by side');
+  assert.ok(left.width > 200 && left.height > 150, `each picture ${left.width} x ${left.height}`);
+  const read = async () => (await sides.locator('figcaption').allTextContents()).map((caption) => {
+    const match = /^(.+): ([\d,]+) triangles, smallest angle ([\d.]+)°$/.exec(caption);
+    assert.ok(match, caption);
+    return { name: match[1], triangles: Number(match[2].replace(/,/g, '')), minAngle: Number(match[3]) };
+  });
+  const [circum, off] = await read();
+  assert.match(circum.name, /circumcenter/);
+  assert.match(off.name, /off-center/);
+  // The package's meshes of the same input and angle, one per placement.
+  const preset = findPreset('placement-compare');
+  const drawing = { ...preset.build(), options: { ...DEFAULT_OPTIONS, ...preset.options } };
+  const mesher = await init();
+  const mesh = (placement) => mesher.triangulate(toPlc(drawing), { ...toMeshOptions(drawing), placement });
+  assert.equal(circum.triangles, mesh('circumcenter').stats.triangles);
+  assert.equal(off.triangles, mesh('offcenter').stats.triangles);
+  assert.ok(circum.triangles > 3 * off.triangles, `${circum.triangles} vs ${off.triangles}`);
+  for (const side of [circum, off]) assert.ok(side.minAngle >= 33 - 0.005, `${side.name} ${side.minAngle}`);
+  assert.match(await text('preset-caption'), /compare the triangle counts/);
+  await page.screenshot({ path: `${SCREENSHOTS}preset-placement-compare.png` });
+  // Another angle: both sides are meshed again at it.
+  await page.fill('#min-angle', '25');
+  await page.press('#min-angle', 'Enter');
+  assert.equal(await settle(page), 'done');
+  await page.waitForFunction(() => document.getElementById('compare').dataset.state === 'done' &&
+    / 2\d\.\d\d°/.test(document.querySelector('#compare figcaption').textContent), null, { timeout: 20_000 });
+  const [circum25, off25] = await read();
+  assert.ok(circum25.triangles < circum.triangles && off25.triangles <= off.triangles, 'fewer triangles at 25°');
+  // Closing brings the canvas back; another preset too.
+  await page.click('#compare-close');
+  assert.equal(await page.locator('#canvas-wrap').isVisible(), true);
+  assert.equal(await page.locator('#compare').isHidden(), true);
+  await page.selectOption('#preset', 'placement-compare');
+  await settle(page);
+  await done();
+  await page.selectOption('#preset', 'skyline');
+  await settle(page);
+  assert.equal(await page.locator('#compare').isHidden(), true);
+  assert.equal(await page.locator('#canvas-wrap').isVisible(), true);
+  assert.deepEqual(errors, []);
+});
+
+test('the size measure: a small feature far from a large one, graded, with the integral in the Mesh panel', async () => {
+  await page.selectOption('#preset', 'size-measure');
+  assert.equal(await settle(page), 'done');
+  assert.equal(await page.isChecked('#size-measure'), true);
+  assert.match(await text('preset-caption'), /size measure.*Look at/i);
+  const row = await text('stat-size-measure');
+  const match = /^∫1\/lfs² = ([\d.]+); ([\d.]+) triangles per unit$/.exec(row);
+  assert.ok(match, row);
+  const preset = findPreset('size-measure');
+  const drawing = { ...preset.build(), options: { ...DEFAULT_OPTIONS, ...preset.options } };
+  const mesh = (await init()).triangulate(toPlc(drawing), toMeshOptions(drawing));
+  assert.ok(Math.abs(Number(match[1]) - mesh.stats.lfsIntegral) <= 0.001 * mesh.stats.lfsIntegral, `${match[1]} vs ${mesh.stats.lfsIntegral}`);
+  // Graded: the triangles near the small feature are far smaller than those far from it.
+  const areas = Array.from({ length: mesh.triangles.length / 3 }, (_, t) => triangleShape(mesh, t).area);
+  assert.ok(Math.max(...areas) > 100 * Math.min(...areas), `areas ${Math.min(...areas)} to ${Math.max(...areas)}`);
+  await page.screenshot({ path: `${SCREENSHOTS}preset-size-measure.png` });
+  // The link keeps the option; without it the row says how to turn it on.
+  const { decodeDrawing } = await import('../../web/url-state.js');
+  assert.equal(decodeDrawing(await page.evaluate(() => location.hash)).options.sizeMeasure, true);
+  await page.uncheck('#size-measure');
+  assert.equal(await settle(page), 'done');
+  assert.match(await text('stat-size-measure'), /^off/);
   assert.deepEqual(errors, []);
 });

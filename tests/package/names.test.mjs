@@ -111,6 +111,7 @@ test("the page's words (web/labels.js) are keyed by the core's names", async () 
   assert.deepEqual(sorted(keys(labels.PLACEMENT_LABELS)), sorted(names.placements));
   assert.deepEqual(sorted(keys(labels.VARIANT_LABELS)), sorted(names.variants));
   assert.deepEqual(sorted(keys(labels.ENCROACHMENT_LABELS)), sorted(names.encroachments));
+  assert.deepEqual(sorted(keys(labels.NOTICE_LABELS)), sorted(names.notices));
   // The page draws only the exemptions among the reasons: those must be reasons.
   for (const reason of keys(labels.EXEMPTION_LABELS)) assert.ok(names.reasons.includes(reason), reason);
 });
