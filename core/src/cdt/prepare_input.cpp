@@ -31,8 +31,10 @@ namespace {
 [[noreturn]] void fail(ErrorCode code, const std::string& message) { throw Error(code, message); }
 
 void checkOptions(const Options& o) {
-  if (!(o.minAngle >= 0 && o.minAngle <= 60))
-    fail(ErrorCode::InvalidOption, "minAngle = " + formatNumber(o.minAngle) + " is outside [0, 60] degrees");
+  using Angle = option::minAngle;  // the range is the option table's
+  if (!(o.minAngle >= Angle::low && o.minAngle <= Angle::high))
+    fail(ErrorCode::InvalidOption, std::string(Angle::key) + " = " + formatNumber(o.minAngle) + " is outside [" +
+                                       formatNumber(Angle::low) + ", " + formatNumber(Angle::high) + "] " + Angle::unit);
   if (std::isnan(o.maxArea) || o.maxArea < 0)
     fail(ErrorCode::InvalidOption,
          "maxArea = " + formatNumber(o.maxArea) + " must be a positive area (or 0 for no bound)");
