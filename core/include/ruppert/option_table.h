@@ -28,7 +28,7 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
   X(maxArea, "--max-area A", 0.0, 0, kUnbounded, "area",                                                 \
     "largest triangle area (default: no bound); --min-angle 0 without --max-area gives the plain "        \
     "constrained Delaunay triangulation")                                                                \
-  X(maxSteiner, "--max-steiner N", kAutoSteinerBudget, 0, kUnbounded, "",                                \
+  X(maxSteiner, "--max-steiner N", kAutoSteinerBudget, 0, kUnbounded, "vertices",                              \
     "at most N new vertices (default: automatic)")                                                       \
   X(placement, "--placement P", Placement::Optimal, 0, 0, "",                                            \
     "optimal (default: off-centers, but where one would make a skinny triangle the point maximising "     \
