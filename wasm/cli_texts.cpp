@@ -4,7 +4,9 @@
 
 #include <emscripten/bind.h>
 
+#include <cstdint>
 #include <string>
+#include <type_traits>
 
 #include "cli_args.h"    // core/cli: the native CLI's parser
 #include "cli_report.h"  // core/cli: its summary, --stats and --trace printers
@@ -25,6 +27,18 @@ val reportToJs(const ruppert::Mesh& mesh, const val& report) {
 }
 
 namespace {
+
+// One parsed option as checkOptions() takes it.
+template <class T>
+void setOption(val& options, const char* key, const T& value) {
+  if constexpr (std::is_enum_v<T>) {
+    options.set(key, std::string(ruppert::enumName(value)));
+  } else if constexpr (std::is_same_v<T, std::uint64_t>) {
+    if (value != ruppert::kAutoSteinerBudget) options.set(key, static_cast<double>(value));
+  } else {
+    options.set(key, value);
+  }
+}
 
 // The native CLI's argument parser. Returns { usageLine, helpText, usageError? } plus, on success,
 // the parsed fields with options in the vocabulary of wasm/input-checks.js's checkOptions().
@@ -55,25 +69,16 @@ val parseCliArgs(val argsJs) {
     out.set("stats", args.stats);
     out.set("help", args.help);
     out.set("version", args.version);
+    // Every option of the table by its key, in the vocabulary of checkOptions(): the enums by the
+    // core's names, maxSteiner absent for automatic.
     const ruppert::Options& o = args.options;
     val options = val::object();
-    options.set("minAngle", o.minAngle);
-    options.set("maxArea", o.maxArea);
-    if (o.maxSteiner != ruppert::kAutoSteinerBudget) options.set("maxSteiner", static_cast<double>(o.maxSteiner));
-    // The names are the core's (ruppert.h), which wasm/input-checks.js accepts.
-    options.set("placement", std::string(ruppert::enumName(o.placement)));
-    options.set("encroachment", std::string(ruppert::enumName(o.encroachment)));
-    options.set("variant", std::string(ruppert::enumName(o.variant)));
-    options.set("convexHull", o.convexHull);
-    options.set("autoHoles", o.autoHoles);
-    options.set("trace", !args.tracePath.empty());
-    options.set("sizeMeasure", o.sizeMeasure);
-    options.set("order", args.order);      // issue 16, derived
-    options.set("voronoi", args.voronoi);
-    options.set("edges", o.edges);
-    options.set("noBoundarySteiner", o.noBoundarySteiner);
-    options.set("noSegmentSteiner", o.noSegmentSteiner);
-    options.set("jettison", o.jettison);
+#define RUPPERT_WASM_CLI_OPTION_(KEY, ...) setOption(options, #KEY, o.KEY);
+    RUPPERT_MESH_OPTIONS(RUPPERT_WASM_CLI_OPTION_)
+#undef RUPPERT_WASM_CLI_OPTION_
+#define RUPPERT_WASM_CLI_OPTION_(KEY, ...) setOption(options, #KEY, args.KEY);
+    RUPPERT_DERIVED_OPTIONS(RUPPERT_WASM_CLI_OPTION_)
+#undef RUPPERT_WASM_CLI_OPTION_
     out.set("options", options);
     return out;
   });

@@ -9,14 +9,18 @@
 
 #include <cstddef>
 
+#include "ruppert/ruppert.h"
+
 namespace ruppert_wasm {
 
-// rp_stage_input's arrays (it takes their lengths in this order), then the options (optionsFromTable).
+// An option's field: its key (ruppert/option_table.h), a number.
+#define RUPPERT_WASM_FIELD_(KEY, ...) #KEY,
+
+// rp_stage_input's arrays (it takes their lengths in this order), then the options of the option
+// table's RUPPERT_MESH_OPTIONS, in its order (optionsFromTable reads them through the same list).
 inline constexpr const char* kInputFields[] = {
     "points:f64", "segments:u32", "holes:f64", "regions:f64", "pointMarkers:i32", "segmentMarkers:i32",
-    "pointAttributes:f64",
-    "minAngle", "maxArea", "maxSteiner", "placement", "encroachment", "variant", "convexHull", "autoHoles",
-    "trace", "sizeMeasure", "edges", "noBoundarySteiner", "noSegmentSteiner", "jettison"};
+    "pointAttributes:f64", RUPPERT_MESH_OPTIONS(RUPPERT_WASM_FIELD_)};
 
 // writeOutputTable()'s order. Reasons and notices come as numbers per item (the kind's number first)
 // and a UTF-8 text of "message\0" per item.
@@ -32,7 +36,9 @@ inline constexpr const char* kOutputFields[] = {
 
 // Issue 16, derived: rp_stage_derived's table (the old mesh to refine, then order and voronoi) and
 // rp_derived_table's.
-inline constexpr const char* kDerivedInputFields[] = {"triangles:u32", "triangleMaxArea:f64", "order", "voronoi"};
+inline constexpr const char* kDerivedInputFields[] = {"triangles:u32", "triangleMaxArea:f64",
+                                                      RUPPERT_DERIVED_OPTIONS(RUPPERT_WASM_FIELD_)};
+#undef RUPPERT_WASM_FIELD_
 inline constexpr const char* kDerivedOutputFields[] = {"triangles6:u32", "voronoi.points:f64", "voronoi.edges:i32",
                                                        "voronoi.rayDirections:f64", "voronoi.meshEdges:u32"};
 
@@ -53,6 +59,18 @@ constexpr std::size_t arrayCount(const char* const (&fields)[N]) {
 template <std::size_t N>
 constexpr std::size_t tableSize(const char* const (&fields)[N], std::size_t slotsPerArray) {
   return N + arrayCount(fields) * (slotsPerArray - 1);
+}
+
+// The slot of the field `name` in an input table (where every field takes one), by name, so that no
+// code counts positions; fieldCount(fields) when there is none.
+template <std::size_t N>
+constexpr std::size_t slotOf(const char* const (&fields)[N], const char* name) {
+  for (std::size_t i = 0; i < N; ++i) {
+    const char *a = fields[i], *b = name;
+    while (*a != '\0' && *a == *b) ++a, ++b;
+    if (*a == *b) return i;
+  }
+  return N;
 }
 
 inline constexpr std::size_t kInputArrays = arrayCount(kInputFields);  // they come first

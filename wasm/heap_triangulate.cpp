@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <new>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -23,28 +24,28 @@
 namespace ruppert_wasm {
 namespace {
 
-// The options as heap-call.js writes them after the input arrays' addresses (kInputFields), one
-// double each: reading them as embind properties cost a JavaScript round trip per field and per call.
+// One option from its double in the table, as heap-call.js wrote it: a number as itself, a flag as
+// 0 or 1, an enum as the core's value, and maxSteiner -1 for "automatic" (else a checked count).
+void fromTable(double v, double& option) { option = v; }
+void fromTable(double v, bool& option) { option = v != 0; }
+void fromTable(double v, std::uint64_t& option) {
+  option = v < 0 ? ruppert::kAutoSteinerBudget : static_cast<std::uint64_t>(v);
+}
+template <class Enum, class = std::enable_if_t<std::is_enum_v<Enum>>>
+void fromTable(double v, Enum& option) {
+  option = static_cast<Enum>(static_cast<int>(v));
+}
+
+// The options as heap-call.js writes them after the input arrays' addresses, one double each, in
+// the option table's order, which kInputFields lists by the same macro: reading them as embind
+// properties cost a JavaScript round trip per field and per call.
 ruppert::Options optionsFromTable(const double* v) {
   ruppert::Options o;
-  o.minAngle = v[0];
-  o.maxArea = v[1];
-  // heap-call.js sends -1 for "automatic"; anything else is a checked non-negative integer.
-  o.maxSteiner = v[2] < 0 ? ruppert::kAutoSteinerBudget : static_cast<std::uint64_t>(v[2]);
-  o.placement = static_cast<ruppert::Placement>(static_cast<int>(v[3]));
-  o.encroachment = static_cast<ruppert::Encroachment>(static_cast<int>(v[4]));
-  o.variant = static_cast<ruppert::Variant>(static_cast<int>(v[5]));
-  o.convexHull = v[6] != 0;
-  o.autoHoles = v[7] != 0;
-  o.trace = v[8] != 0;
-  o.sizeMeasure = v[9] != 0;
-  o.edges = v[10] != 0;
-  o.noBoundarySteiner = v[11] != 0;
-  o.noSegmentSteiner = v[12] != 0;
-  o.jettison = v[13] != 0;
+#define RUPPERT_WASM_READ_OPTION_(KEY, ...) fromTable(*v++, o.KEY);
+  RUPPERT_MESH_OPTIONS(RUPPERT_WASM_READ_OPTION_)
+#undef RUPPERT_WASM_READ_OPTION_
   return o;
 }
-static_assert(fieldCount(kInputFields) - kInputArrays == 14, "optionsFromTable reads 14 options");
 
 // The JavaScript wrappers never throw: they return NaN (size) or -1 (progress) after storing
 // the user's error, and we unwind with CallbackFailed.
@@ -124,6 +125,11 @@ struct TableWriter {
 // Issue 16, derived: refining a mesh (Plc::triangles, triangleMaxArea), quadratic nodes (order 2) and
 // the Voronoi dual (voronoi), staged in tables of their own (kDerivedInputFields, kDerivedOutputFields).
 // ---------------------------------------------------------------------------------------------
+// Where the derived table holds order and voronoi, found by their keys.
+constexpr std::size_t kOrderSlot = slotOf(kDerivedInputFields, ruppert::option::order::key);
+constexpr std::size_t kVoronoiSlot = slotOf(kDerivedInputFields, ruppert::option::voronoi::key);
+static_assert(kOrderSlot < fieldCount(kDerivedInputFields) && kVoronoiSlot < fieldCount(kDerivedInputFields));
+
 struct DerivedStaged {
   std::vector<std::uint32_t> triangles;
   std::vector<double> triangleMaxArea;
@@ -148,8 +154,8 @@ void takeDerivedInput(ruppert::Plc& plc) {
 // them) and the dual, then the table of the derived arrays.
 void deriveOutputs(ruppert::Mesh& mesh) {
   DerivedStaged& d = derivedStaged();
-  d.voronoi = d.inputTable[3] != 0 ? ruppert::voronoiDiagram(mesh) : ruppert::Voronoi{};
-  if (d.inputTable[2] == 2) ruppert::addQuadraticNodes(mesh);
+  d.voronoi = d.inputTable[kVoronoiSlot] != 0 ? ruppert::voronoiDiagram(mesh) : ruppert::Voronoi{};
+  if (d.inputTable[kOrderSlot] == 2) ruppert::addQuadraticNodes(mesh);
   TableWriter w{d.outputTable};
   w.array(mesh.triangles6).array(d.voronoi.points).array(d.voronoi.edges).array(d.voronoi.rayDirections);
   w.array(d.voronoi.meshEdges).end(d.outputTable, kDerivedOutputTableSize);
@@ -319,7 +325,7 @@ EMSCRIPTEN_KEEPALIVE std::uintptr_t rp_stage_derived(double triangles, double tr
     releaseDerived();
     return 0;
   }
-  d.inputTable[2] = order, d.inputTable[3] = voronoi;
+  d.inputTable[kOrderSlot] = order, d.inputTable[kVoronoiSlot] = voronoi;
   return reinterpret_cast<std::uintptr_t>(d.inputTable);
 }
 

@@ -7,7 +7,7 @@
 // vertex. Every message names the item and its value, e.g. "segments[7] = 2.5 is not an integer".
 // Value checks that need geometry (non-finite coordinates, duplicate points, hole placement) stay
 // in the core, which reports them with the same codes.
-import { NAMES } from './dist/names.js';
+import { OPTIONS } from './dist/names.js';
 import { MeshError } from './errors.js';
 import { nearestKey, rejectUnknownKeys } from './known-keys.js';
 
@@ -215,59 +215,86 @@ function checkAttributes(plc, pointCount) {
   return { pointAttributes, attributesPerPoint: pointAttributes.length === 0 ? 0 : attributesPerPoint };
 }
 
-// The core's names of its enums' values (ruppert.h), in enum order: a name's index is its value.
-const PLACEMENTS = NAMES.placements;
-const ENCROACHMENTS = NAMES.encroachments;
-const VARIANTS = NAMES.variants;
-const OPTION_KEYS = ['minAngle', 'maxArea', 'maxSteiner', 'sizeFunction', 'onProgress', 'trace',
-  'placement', 'encroachment', 'variant', 'convexHull', 'autoHoles', 'sizeMeasure',
-  'order', 'voronoi', 'edges', 'noBoundarySteiner', 'noSegmentSteiner', 'jettison'];
+// Every option, as the binding describes it (core/include/ruppert/option_table.h, through
+// wasm/describe.cpp): { name, type, default, and min, max, unit or values }. The checks below go by
+// type, so that no option's name, default or range is written here.
+const OPTION_KEYS = OPTIONS.map((option) => option.name);
 
 function badOption(message) {
   return new MeshError('INVALID_OPTION', message);
 }
 
 // A number-valued option: the wrong type (or NaN) is named as such before any range check.
-function numberOption(options, key, fallback, meaning) {
-  const v = options[key] ?? fallback;
+function numberOf(options, name, fallback, meaning) {
+  const v = options[name] ?? fallback;
   if (typeof v !== 'number' || Number.isNaN(v)) {
-    throw badOption(`${key} = ${describe(v)} is not a number (${meaning})`);
+    throw badOption(`${name} = ${describe(v)} is not a number (${meaning})`);
   }
   return v;
 }
 
-function booleanOption(options, key) {
-  const v = options[key];
-  if (v === undefined) return false;
-  if (typeof v !== 'boolean') throw badOption(`${key} = ${describe(v)} must be true or false`);
+// A number in [min, max]; with no upper end (max null), Infinity is the default, "no bound".
+function numberOption(options, { name, default: fallback, min, max, unit }) {
+  if (max !== null) {
+    const v = numberOf(options, name, fallback, `${unit} in [${min}, ${max}]`);
+    if (!(v >= min && v <= max)) throw badOption(`${name} = ${describe(v)} is outside [${min}, ${max}] ${unit}`);
+    return v;
+  }
+  const v = numberOf(options, name, fallback, `an ${unit} >= ${min}; ${fallback}: no bound`);
+  if (!(v >= min)) throw badOption(`${name} = ${describe(v)} must be >= ${min} (${fallback}: no bound)`);
+  return v === Infinity ? fallback : v;
+}
+
+// A count, or Infinity (the default, null in the table) for automatic: -1 for the binding.
+function countOption(options, { name, unit }) {
+  const v = numberOf(options, name, Infinity, `a count of ${unit}, or Infinity`);
+  if (!(v >= 0) || (v !== Infinity && (!Number.isInteger(v) || v > Number.MAX_SAFE_INTEGER))) {
+    throw badOption(`${name} = ${describe(v)} must be a non-negative integer or Infinity`);
+  }
+  return v === Infinity ? -1 : v;
+}
+
+// One of the integers min..max ("1 or 2").
+function integerOption(options, { name, default: fallback, min, max }) {
+  const v = options[name] ?? fallback;
+  if (!Number.isInteger(v) || v < min || v > max) {
+    const values = Array.from({ length: max - min + 1 }, (_, i) => min + i);
+    throw badOption(`${name} = ${describe(v)} must be ${values.slice(0, -1).join(', ')} or ${values.at(-1)}`);
+  }
   return v;
 }
 
-function enumOption(options, key, names, fallback) {
-  const v = options[key];
-  if (v === undefined) return names.indexOf(fallback);
-  const value = typeof v === 'string' ? names.indexOf(v) : -1;
-  if (value < 0) throw badOption(`${key} = ${describe(v)} must be one of ${names.map((k) => `'${k}'`).join(', ')}`);
+function booleanOption(options, { name, default: fallback }) {
+  const v = options[name];
+  if (v === undefined) return fallback;
+  if (typeof v !== 'boolean') throw badOption(`${name} = ${describe(v)} must be true or false`);
+  return v;
+}
+
+// One of the enum's names (in enum order: a name's index is its value), as the core's number.
+function choiceOption(options, { name, default: fallback, values }) {
+  const v = options[name];
+  if (v === undefined) return values.indexOf(fallback);
+  const value = typeof v === 'string' ? values.indexOf(v) : -1;
+  if (value < 0) throw badOption(`${name} = ${describe(v)} must be one of ${values.map((k) => `'${k}'`).join(', ')}`);
   return value;
 }
 
-function functionOption(options, key) {
-  const v = options[key];
+function functionOption(options, { name }) {
+  const v = options[name];
   if (v === undefined || v === null) return undefined;
-  if (typeof v !== 'function') throw badOption(`${key} = ${describe(v)} must be a function`);
+  if (typeof v !== 'function') throw badOption(`${name} = ${describe(v)} must be a function`);
   return v;
 }
 
-// Issue 16: order 1 (3-node triangles) or 2 (also triangles6, midpoint nodes appended to points).
-function orderOption(options) {
-  const v = options.order ?? 1;
-  if (v !== 1 && v !== 2) throw badOption(`order = ${describe(v)} must be 1 or 2`);
-  return v;
-}
+const CHECK_BY_TYPE = {
+  number: numberOption, count: countOption, integer: integerOption, boolean: booleanOption,
+  choice: choiceOption, function: functionOption,
+};
 
 /**
- * @returns { minAngle, maxArea, maxSteiner (-1: automatic), placement, encroachment, variant, convexHull,
- *            autoHoles, trace, sizeFunction?, onProgress? } with enums as the core's integers.
+ * @returns every option by name, checked and defaulted: enums as the core's integers, maxSteiner -1
+ *          for automatic, sizeFunction and onProgress undefined when absent.
  */
 export function checkOptions(options) {
   if (options === undefined || options === null) options = {};
@@ -280,41 +307,9 @@ export function checkOptions(options) {
       throw badOption(`unknown option '${key}'${near ? ` (did you mean '${near}'?)` : ''}`);
     }
   }
-
-  const minAngle = numberOption(options, 'minAngle', 30, 'degrees in [0, 60]');
-  if (!(minAngle >= 0 && minAngle <= 60)) {
-    throw badOption(`minAngle = ${describe(minAngle)} is outside [0, 60] degrees`);
-  }
-  let maxArea = numberOption(options, 'maxArea', 0, 'an area >= 0; 0: no bound');
-  if (maxArea < 0) throw badOption(`maxArea = ${describe(maxArea)} must be >= 0 (0: no bound)`);
-  if (maxArea === Infinity) maxArea = 0;
-  let maxSteiner = numberOption(options, 'maxSteiner', Infinity, 'a count of vertices, or Infinity');
-  if (!(maxSteiner >= 0) ||
-      (maxSteiner !== Infinity && (!Number.isInteger(maxSteiner) || maxSteiner > Number.MAX_SAFE_INTEGER))) {
-    throw badOption(`maxSteiner = ${describe(maxSteiner)} must be a non-negative integer or Infinity`);
-  }
-  if (maxSteiner === Infinity) maxSteiner = -1;
-
-  return {
-    minAngle,
-    maxArea,
-    maxSteiner,
-    placement: enumOption(options, 'placement', PLACEMENTS, 'optimal'),
-    encroachment: enumOption(options, 'encroachment', ENCROACHMENTS, 'lens'),
-    variant: enumOption(options, 'variant', VARIANTS, 'cdt'),
-    convexHull: booleanOption(options, 'convexHull'),
-    autoHoles: booleanOption(options, 'autoHoles'),
-    trace: booleanOption(options, 'trace'),
-    sizeMeasure: booleanOption(options, 'sizeMeasure'),
-    edges: booleanOption(options, 'edges'),
-    noBoundarySteiner: booleanOption(options, 'noBoundarySteiner'),
-    noSegmentSteiner: booleanOption(options, 'noSegmentSteiner'),
-    jettison: booleanOption(options, 'jettison'),
-    sizeFunction: functionOption(options, 'sizeFunction'),
-    onProgress: functionOption(options, 'onProgress'),
-    order: orderOption(options),
-    voronoi: booleanOption(options, 'voronoi'),
-  };
+  const checked = {};
+  for (const option of OPTIONS) checked[option.name] = CHECK_BY_TYPE[option.type](options, option);
+  return checked;
 }
 
 /** Light check of a mesh handed back to the writers (toPoly, toSvg, ...). */

@@ -11,12 +11,25 @@
 //                                every export; absent from older drawings (all 0)
 //   options  { minAngle, maxArea, placement, maxSteiner, variant, encroachment }
 //            maxArea/maxSteiner: null = none/automatic; variant 'cdt' | 'box'; encroachment 'lens' | 'disk'
+import { OPTIONS } from '../wasm/dist/names.js';
 import { boundsOf, hasBounds, includePoint } from './bounds.js';
 
+// The package's options as the binding describes them (core/include/ruppert/option_table.h): the
+// page takes its defaults and the angle's range from there rather than writing them again.
+const PACKAGE_OPTIONS = Object.fromEntries(OPTIONS.map((option) => [option.name, option]));
+
+/** The min angle's range in degrees: { min, max }. */
+export const MIN_ANGLE_RANGE = Object.freeze({ min: PACKAGE_OPTIONS.minAngle.min, max: PACKAGE_OPTIONS.minAngle.max });
+
+/** The package's option names, for hosts that pass options the page does not offer. */
+export const PACKAGE_OPTION_NAMES = Object.freeze(OPTIONS.map((option) => option.name));
+
+// maxArea and maxSteiner: null (none, automatic) where the package's default means the same.
 export const DEFAULT_OPTIONS = Object.freeze({
-  minAngle: 30, maxArea: null, placement: 'optimal', maxSteiner: null, variant: 'cdt', encroachment: 'lens',
+  minAngle: PACKAGE_OPTIONS.minAngle.default, maxArea: null, placement: PACKAGE_OPTIONS.placement.default,
+  maxSteiner: null, variant: PACKAGE_OPTIONS.variant.default, encroachment: PACKAGE_OPTIONS.encroachment.default,
   // The chapter's size measure (stats.lfsIntegral, §6.5) costs a pass over the input per vertex: on demand.
-  sizeMeasure: false,
+  sizeMeasure: PACKAGE_OPTIONS.sizeMeasure.default,
 });
 
 export function emptyDrawing(options = DEFAULT_OPTIONS) {

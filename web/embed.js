@@ -28,7 +28,7 @@
 // Replies go to the message's sender, the page's own news to window.parent (the page itself when
 // it is not in a frame: it ignores what it sent). They carry a drawing's mesh, nothing private, so
 // any origin may receive them ('*'); any origin may also send a drawing to show.
-import { DEFAULT_OPTIONS } from './drawing.js';
+import { DEFAULT_OPTIONS, MIN_ANGLE_RANGE, PACKAGE_OPTION_NAMES } from './drawing.js';
 import { ENCROACHMENT_LABELS, PLACEMENT_LABELS, VARIANT_LABELS } from './labels.js';
 
 /** The protocol's version: a host checks `ready.version` against the one it was written for. */
@@ -106,8 +106,9 @@ export function postMesh(mesh, id, target) {
 
 // The option names a load takes: the package's (TriangulateOptions of wasm/index.d.ts) that the
 // page offers. `algorithm` is the name of protocol version 0 for `variant`, still accepted.
+const { min, max } = MIN_ANGLE_RANGE;
 const OPTION_CHECKS = {
-  minAngle: (v) => (typeof v === 'number' && v >= 0 && v <= 60 ? null : 'must be a number in [0, 60]'),
+  minAngle: (v) => (typeof v === 'number' && v >= min && v <= max ? null : `must be a number in [${min}, ${max}]`),
   maxArea: (v) => (v === null || (typeof v === 'number' && v >= 0 && v < Infinity) ? null : 'must be a number > 0, or 0 or null for none'),
   placement: (v) => oneOf(v, PLACEMENT_LABELS),
   variant: (v) => oneOf(v, VARIANT_LABELS),
@@ -116,9 +117,9 @@ const OPTION_CHECKS = {
 };
 export const OPTION_NAMES = Object.keys(OPTION_CHECKS);
 const OLD_NAMES = { algorithm: 'variant' };
-// The package's other options: a host may mean them, but the page does not offer them.
-const PACKAGE_ONLY = ['sizeFunction', 'trace', 'sizeMeasure', 'convexHull', 'autoHoles', 'onProgress', 'edges',
-  'noBoundarySteiner', 'noSegmentSteiner', 'jettison', 'order', 'voronoi', 'signal'];
+// The package's other options (and the worker's `signal`): a host may mean them, but the page does
+// not offer them.
+const PACKAGE_ONLY = [...PACKAGE_OPTION_NAMES.filter((name) => !(name in OPTION_CHECKS)), 'signal'];
 
 function oneOf(value, labels) {
   const values = Object.keys(labels);

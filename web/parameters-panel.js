@@ -2,7 +2,7 @@
 // encroachment, Steiner budget, the region seed fields (for new seeds, or the selected one) and the
 // selected segment's marker.
 // Each field writes app.drawing.options and reports the change; sync() shows a drawing's options.
-import { DEFAULT_OPTIONS, Item, segmentMarkers } from './drawing.js';
+import { DEFAULT_OPTIONS, Item, MIN_ANGLE_RANGE, segmentMarkers } from './drawing.js';
 import { ENCROACHMENT_LABELS, PLACEMENT_LABELS, PRACTICAL_ANGLE, VARIANT_LABELS } from './labels.js';
 import { setStatus } from './status-line.js';
 
@@ -56,10 +56,14 @@ export function createParametersPanel({ app, editor, changed }) {
     $('size-measure').checked = Boolean(o.sizeMeasure);
   }
 
+  const { min, max } = MIN_ANGLE_RANGE;
+  const inRange = (value) => value !== null && value >= min && value <= max;
+  for (const input of [minAngleRange, minAngleNumber]) input.min = String(min), input.max = String(max);
+
   function setMinAngle(value, commit) {
-    if (value === null || value < 0 || value > 60) {
+    if (!inRange(value)) {
       minAngleNumber.setAttribute('aria-invalid', 'true');
-      setStatus('Min angle must be a number from 0 to 60 degrees.', 'error');
+      setStatus(`Min angle must be a number from ${min} to ${max} degrees.`, 'error');
       return;
     }
     minAngleNumber.removeAttribute('aria-invalid');
@@ -82,7 +86,7 @@ export function createParametersPanel({ app, editor, changed }) {
   });
   minAngleNumber.addEventListener('input', () => {
     const value = readNumber(minAngleNumber);
-    if (value !== null && value >= 0 && value <= 60) minAngleRange.value = String(value);
+    if (inRange(value)) minAngleRange.value = String(value);
     setMinAngle(value, false);
   });
   minAngleNumber.addEventListener('change', () => setMinAngle(readNumber(minAngleNumber), true));

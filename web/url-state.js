@@ -9,7 +9,7 @@
 // "c"/"b" = CDT / bounding-box variant, "l"/"d" = diametral lens / disk encroachment. The last two
 // were appended later: links without them (or with unknown values) get the defaults, CDT and lens;
 // so was the seventh, present only when the size measure is asked for.
-import { DEFAULT_OPTIONS } from './drawing.js';
+import { DEFAULT_OPTIONS, MIN_ANGLE_RANGE } from './drawing.js';
 
 /** Links longer than this are not written (browsers and chat apps truncate them). */
 export const MAX_HASH_LENGTH = 64_000;
@@ -76,9 +76,10 @@ export function decodeDrawing(hash) {
   });
   const [minAngle, maxArea, placement, maxSteiner, variant, encroachment, sizeMeasure] = Array.isArray(data.o) ? data.o : [];
   const options = {
-    minAngle: Number.isFinite(minAngle) ? Math.min(60, Math.max(0, minAngle)) : DEFAULT_OPTIONS.minAngle,
+    minAngle: Number.isFinite(minAngle) ? Math.min(MIN_ANGLE_RANGE.max, Math.max(MIN_ANGLE_RANGE.min, minAngle))
+      : DEFAULT_OPTIONS.minAngle,
     maxArea: maxArea > 0 ? maxArea : null,
-    placement: PLACEMENT_NAMES.get(placement) ?? 'optimal',
+    placement: PLACEMENT_NAMES.get(placement) ?? DEFAULT_OPTIONS.placement,
     maxSteiner: Number.isInteger(maxSteiner) && maxSteiner >= 0 ? maxSteiner : null,
     variant: variant === 'b' ? 'box' : 'cdt',
     encroachment: encroachment === 'd' ? 'disk' : 'lens',

@@ -7,6 +7,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <initializer_list>
+#include <iterator>
+#include <type_traits>
+
+#include "cli_options.h"
 
 namespace ruppert::cli {
 
@@ -26,109 +30,6 @@ bool parseStrictCount(const std::string& text, std::uint64_t& value) {
   errno = 0;
   value = std::strtoull(text.c_str(), nullptr, 10);
   return errno != ERANGE;
-}
-
-const char* usageLine() {
-  // Wrapped to 80 columns; the error path prints it after the message.
-  return "usage: ruppert [--min-angle DEG] [--max-area A] [--max-steiner N] [-o BASE|-]\n"
-         "               [--format triangle|json|svg|msh|vtu|geojson]\n"
-         "               [--input-format poly|node|json|geojson] [--quiet] [--stats]\n"
-         "               [--trace FILE] [--placement optimal|offcenter|circumcenter|petal]\n"
-         "               [--encroachment lens|disk] [--variant cdt|box] [--convex-hull]\n"
-         "               [--auto-holes] [--order 1|2] [--voronoi] [-e|--edges]\n"
-         "               [--no-boundary-steiner] [--no-segment-steiner] [-j|--jettison]\n"
-         "               [--help] [--version] INPUT";
-}
-
-namespace {
-
-// The options and what they do, in columns that fit 80 characters.
-const char* const kOptionsHelp =
-    "  --min-angle DEG      smallest angle to reach, 0..60 (default 30); above 34,\n"
-    "                       where out of reach: the best mesh reached (at least 33\n"
-    "                       degrees), marked incomplete\n"
-    "  --max-area A         largest triangle area (default: no bound); --min-angle 0\n"
-    "                       without --max-area gives the plain constrained Delaunay\n"
-    "                       triangulation\n"
-    "  --max-steiner N      at most N new vertices (default: automatic)\n"
-    "  -o BASE              write the mesh: BASE.node, BASE.ele, BASE.poly (triangle\n"
-    "                       format), BASE.json (json) or BASE.svg (svg); without -o\n"
-    "                       only the summary is printed\n"
-    "  -o -                 write the one file of --format (not triangle: three\n"
-    "                       files) to standard output; the summary and --stats then\n"
-    "                       go to standard error\n"
-    "  --format F           triangle (default), json, svg, msh (Gmsh 4.1: BASE.msh),\n"
-    "                       vtu (VTK XML: BASE.vtu) or geojson (a FeatureCollection\n"
-    "                       of triangles: BASE.geojson)\n"
-    "  --input-format F     poly, node, json or geojson: how to read INPUT (default:\n"
-    "                       its extension; for - the text decides: '{' is json or\n"
-    "                       geojson, else .poly or .node)\n"
-    "  --placement P        optimal (default: off-centers, but where one would make a\n"
-    "                       skinny triangle the point maximising the smallest new\n"
-    "                       angle; the fewest triangles, and 35-40 degrees),\n"
-    "                       offcenter (faster), circumcenter, or petal (a point of\n"
-    "                       the shortest edge's petal there)\n"
-    "  --encroachment E     lens (default: diametral lenses) or disk (closed\n"
-    "                       diametral disks)\n"
-    "  --variant V          cdt (default: constrained, no triangles outside the\n"
-    "                       domain) or box (Ruppert's original: conforming mesh of\n"
-    "                       an enclosing box)\n"
-    "  --convex-hull        mesh the whole convex hull, not only what segments\n"
-    "                       enclose\n"
-    "  --auto-holes         without hole seeds: regions at even nesting depth become\n"
-    "                       holes\n"
-    "  --order 2            quadratic triangles: .ele gets 6 nodes per triangle\n"
-    "                       (corners, then the midpoints of the edges opposite them),\n"
-    "                       .node the midpoints after the corners\n"
-    "  --voronoi            also write the dual: BASE.v.node (circumcentres) and\n"
-    "                       BASE.v.edge\n"
-    "  -e, --edges          also write BASE.edge: every edge once, with its boundary\n"
-    "                       marker (triangle format only)\n"
-    "  --no-boundary-steiner  no new vertex on the domain's boundary (Triangle's -Y);\n"
-    "                       what quality that leaves unreachable is reported, not\n"
-    "                       looped over\n"
-    "  --no-segment-steiner   no new vertex on any segment (Triangle's -YY)\n"
-    "  -j, --jettison       leave unused input points (merged duplicates, points\n"
-    "                       outside the domain) out of the output; the others are\n"
-    "                       renumbered in order\n"
-    "  --stats              print statistics (vertex kinds, angle histogram, size\n"
-    "                       optimality)\n"
-    "  --trace FILE         write every step (insertion, or move of a free vertex) as\n"
-    "                       JSON lines to FILE\n"
-    "  --quiet              no summary and no warnings (errors and --stats still\n"
-    "                       print)\n"
-    "  --help, --version\n";
-
-// Each example runs as written from the top of a source tree (tests/readme checks them), the
-// inputs being the ones in docs/examples.
-const char* const kExamplesHelp =
-    "Examples (the inputs ship in the source tree's docs/examples):\n"
-    "  ruppert docs/examples/lake.poly\n"
-    "      the summary of a 30-degree mesh; nothing written\n"
-    "  ruppert --min-angle 33 --max-area 0.5 -o lake docs/examples/lake.poly\n"
-    "      lake.node, lake.ele and lake.poly\n"
-    "  ruppert --format vtu --stats -o plate docs/examples/plate.json\n"
-    "      plate.vtu for ParaView, and the statistics\n"
-    "  ruppert --format msh -o - - < docs/examples/park.geojson > park.msh\n"
-    "      GeoJSON from standard input, Gmsh's .msh to standard output\n";
-
-}  // namespace
-
-std::string helpText() {
-  return std::string(usageLine()) +
-         "\n\n"
-         "Quality triangle mesh of a planar straight-line graph by Delaunay refinement\n"
-         "(Ruppert). INPUT is a Triangle .poly or .node file, a .json file\n"
-         "{\"points\": [...], \"segments\": [...], ...}, a .geojson file (Polygon and\n"
-         "MultiPolygon features; inner rings are holes), or - for standard input.\n"
-         "INPUT BASE.ele refines that mesh (with BASE.node, and BASE.poly and BASE.area\n"
-         "when present: a maximum area per triangle, -1 for none, kept by every new\n"
-         "triangle within an old one).\n"
-         "\n" +
-         kOptionsHelp + "\n" + kExamplesHelp +
-         "\n"
-         "Exit status: 0 success, 1 invalid input, 2 usage error, 3 output could not be\n"
-         "written.\n";
 }
 
 namespace {
@@ -189,18 +90,6 @@ class OptionValue {
     throw UsageError(name() + ": '" + v + "' is not one of " + names);
   }
 
-  // One of the core's enum values, by its name (ruppert.h's tables), listed in the message in this order.
-  template <class T>
-  T named(std::initializer_list<T> values) {
-    const std::string v = text();
-    std::string names;
-    for (T value : values) {
-      if (v == enumName(value)) return value;
-      names += (names.empty() ? "" : ", ") + std::string(enumName(value));
-    }
-    throw UsageError(name() + ": '" + v + "' is not one of " + names);
-  }
-
  private:
   const Arg& arg_;
   const std::vector<std::string>& args_;
@@ -209,23 +98,60 @@ class OptionValue {
 
 using Handler = void (*)(OptionValue&, CliArgs&);
 
-// Every option: its spellings and what it sets.
-const std::vector<std::pair<std::vector<std::string>, Handler>>& optionTable() {
-  static const std::vector<std::pair<std::vector<std::string>, Handler>> table = {
-      {{"--min-angle"}, [](OptionValue& v, CliArgs& out) {
-         out.options.minAngle = v.number();
-         if (out.options.minAngle < 0 || out.options.minAngle > 60)
-           throw UsageError("--min-angle must be between 0 and 60 degrees");
-       }},
-      {{"--max-area"}, [](OptionValue& v, CliArgs& out) {
-         out.options.maxArea = v.number();
-         if (out.options.maxArea < 0) throw UsageError("--max-area must not be negative");
-       }},
-      {{"--max-steiner"}, [](OptionValue& v, CliArgs& out) {
-         const std::string text = v.text();
-         if (!parseStrictCount(text, out.options.maxSteiner))
-           throw UsageError("--max-steiner: '" + text + "' is not a non-negative integer");
-       }},
+// An option of the table, read as its type says and checked against its range: Spec is its
+// option:: type, `target` where it goes.
+template <class Spec>
+void read(OptionValue& v, double& target) {
+  target = v.number();
+  if (target >= Spec::low && target <= Spec::high) return;
+  if (Spec::low == 0 && Spec::high == kUnbounded) throw UsageError(v.name() + " must not be negative");
+  throw UsageError(v.name() + " must be between " + numberText(Spec::low) + " and " + numberText(Spec::high) + " " +
+                   Spec::unit);
+}
+
+template <class Spec>
+void read(OptionValue& v, std::uint64_t& target) {
+  const std::string text = v.text();
+  if (!parseStrictCount(text, target)) throw UsageError(v.name() + ": '" + text + "' is not a non-negative integer");
+}
+
+template <class Spec>
+void read(OptionValue& v, int& target) {
+  const std::string text = v.text();
+  std::uint64_t value = 0;
+  if (parseStrictCount(text, value) && value >= Spec::low && value <= Spec::high) {
+    target = static_cast<int>(value);
+    return;
+  }
+  std::string values;  // "1 or 2", "1, 2 or 3"
+  for (int i = static_cast<int>(Spec::low); i <= static_cast<int>(Spec::high); ++i)
+    values += (i == Spec::low ? "" : i == Spec::high ? " or " : ", ") + std::to_string(i);
+  throw UsageError(v.name() + ": '" + text + "' is not " + values);
+}
+
+template <class Spec>
+void read(OptionValue& v, bool& target) {
+  target = v.flag();
+}
+
+// An enum option: one of its values' names, listed in the message as in the usage line.
+template <class Spec, class Enum, class = std::enable_if_t<std::is_enum_v<Enum>>>
+void read(OptionValue& v, Enum& target) {
+  const std::string text = v.text();
+  const auto& known = valueNames(target);  // in the enum's order: a name's index is its value
+  for (std::size_t i = 0; i < std::size(known); ++i) {
+    if (text != known[i]) continue;
+    target = static_cast<Enum>(i);
+    return;
+  }
+  std::string names;
+  for (const std::string& name : choicesOf(Spec::fallback)) names += (names.empty() ? "" : ", ") + name;
+  throw UsageError(v.name() + ": '" + text + "' is not one of " + names);
+}
+
+// The CLI's own options: files, formats and what it prints.
+std::vector<std::pair<std::vector<std::string>, Handler>> cliOnlyOptions() {
+  return {
       {{"-o", "--output"}, [](OptionValue& v, CliArgs& out) {
          out.outputBase = v.text();
          if (out.outputBase.empty()) throw UsageError(v.name() + " needs a non-empty BASE");
@@ -238,16 +164,6 @@ const std::vector<std::pair<std::vector<std::string>, Handler>>& optionTable() {
       {{"--input-format"}, [](OptionValue& v, CliArgs& out) {
          out.inputFormat = v.choice<std::string>({{"poly", "poly"}, {"node", "node"}, {"json", "json"}, {"geojson", "geojson"}});
        }},
-      {{"--encroachment"}, [](OptionValue& v, CliArgs& out) {
-         out.options.encroachment = v.named({Encroachment::DiametralLens, Encroachment::DiametralDisk});
-       }},
-      {{"--placement"}, [](OptionValue& v, CliArgs& out) {
-         out.options.placement =
-             v.named({Placement::OffCenter, Placement::Circumcenter, Placement::Petal, Placement::Optimal});
-       }},
-      {{"--variant"}, [](OptionValue& v, CliArgs& out) {
-         out.options.variant = v.named({Variant::Constrained, Variant::BoundingBox});
-       }},
       {{"--trace"}, [](OptionValue& v, CliArgs& out) {
          out.tracePath = v.text();
          if (out.tracePath.empty()) throw UsageError("--trace needs a non-empty FILE");
@@ -255,21 +171,30 @@ const std::vector<std::pair<std::vector<std::string>, Handler>>& optionTable() {
        }},
       {{"--quiet", "-q"}, [](OptionValue& v, CliArgs& out) { out.quiet = v.flag(); }},
       {{"--stats"}, [](OptionValue& v, CliArgs& out) { out.options.sizeMeasure = out.stats = v.flag(); }},
-      {{"--convex-hull"}, [](OptionValue& v, CliArgs& out) { out.options.convexHull = v.flag(); }},
-      {{"--auto-holes"}, [](OptionValue& v, CliArgs& out) { out.options.autoHoles = v.flag(); }},
-      {{"--order"}, [](OptionValue& v, CliArgs& out) {
-         const std::string text = v.text();
-         if (text != "1" && text != "2") throw UsageError("--order: '" + text + "' is not 1 or 2");
-         out.order = text == "2" ? 2 : 1;
-       }},
-      {{"--voronoi"}, [](OptionValue& v, CliArgs& out) { out.voronoi = v.flag(); }},
-      {{"--edges", "-e"}, [](OptionValue& v, CliArgs& out) { out.options.edges = v.flag(); }},
-      {{"--no-boundary-steiner"}, [](OptionValue& v, CliArgs& out) { out.options.noBoundarySteiner = v.flag(); }},
-      {{"--no-segment-steiner"}, [](OptionValue& v, CliArgs& out) { out.options.noSegmentSteiner = v.flag(); }},
-      {{"--jettison", "-j"}, [](OptionValue& v, CliArgs& out) { out.options.jettison = v.flag(); }},
       {{"--help", "-h"}, [](OptionValue& v, CliArgs& out) { out.help = v.flag(); }},
       {{"--version"}, [](OptionValue& v, CliArgs& out) { out.version = v.flag(); }},
   };
+}
+
+// Every option: its spellings and what it sets. First those of the option table that have a flag
+// (the others are set by the CLI's own options below, or have no CLI form).
+const std::vector<std::pair<std::vector<std::string>, Handler>>& optionTable() {
+  static const std::vector<std::pair<std::vector<std::string>, Handler>> table = [] {
+    std::vector<std::pair<std::vector<std::string>, Handler>> t;
+    const auto add = [&](const char* flag, Handler handler) {
+      if (*flag != '\0') t.emplace_back(spellingsOf(flag), handler);
+    };
+#define RUPPERT_CLI_MESH_OPTION_(KEY, ...) \
+  add(option::KEY::flag, [](OptionValue& v, CliArgs& out) { read<option::KEY>(v, out.options.KEY); });
+#define RUPPERT_CLI_DERIVED_OPTION_(KEY, ...) \
+  add(option::KEY::flag, [](OptionValue& v, CliArgs& out) { read<option::KEY>(v, out.KEY); });
+    RUPPERT_MESH_OPTIONS(RUPPERT_CLI_MESH_OPTION_)
+    RUPPERT_DERIVED_OPTIONS(RUPPERT_CLI_DERIVED_OPTION_)
+#undef RUPPERT_CLI_MESH_OPTION_
+#undef RUPPERT_CLI_DERIVED_OPTION_
+    for (auto& entry : cliOnlyOptions()) t.push_back(entry);
+    return t;
+  }();
   return table;
 }
 

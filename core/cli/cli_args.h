@@ -27,8 +27,8 @@ struct CliArgs {
   bool help = false;
   bool version = false;
   // Derived outputs (issue 16): --order 2 (6-node triangles in .node/.ele), --voronoi (BASE.v.node, BASE.v.edge).
-  int order = 1;
-  bool voronoi = false;
+  int order = option::order::fallback;
+  bool voronoi = option::voronoi::fallback;
 };
 
 class UsageError : public std::runtime_error {
@@ -44,7 +44,8 @@ bool parseStrictDouble(const std::string& text, double& value);
 // Digits only, no sign, fits in 64 bits.
 bool parseStrictCount(const std::string& text, std::uint64_t& value);
 
-// The one-line synopsis and the full --help text.
+// The synopsis (wrapped to 80 columns) and the full --help text, made from the option table and the
+// CLI's own options (cli_help.cpp).
 const char* usageLine();
 std::string helpText();
 

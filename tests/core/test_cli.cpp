@@ -8,12 +8,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include "ruppert/ruppert.h"
 
@@ -268,4 +271,82 @@ TEST_CASE("cli: every example of --help runs as written on the shipped inputs", 
   CHECK(fs::file_size(dir / "lake.ele") > 0);
   CHECK(fs::file_size(dir / "plate.vtu") > 0);
   CHECK_THAT(slurp(dir / "park.msh"), Catch::StartsWith("$MeshFormat"));
+}
+
+namespace {
+
+// The option table's spellings of one option ("-e|--edges DEG" -> "-e", "--edges").
+std::vector<std::string> spellings(const char* flag) {
+  std::string text = flag;
+  text = text.substr(0, text.find(' '));
+  std::vector<std::string> out;
+  std::istringstream parts(text);
+  for (std::string part; std::getline(parts, part, '|');) out.push_back(part);
+  return out;
+}
+
+// Values the option must accept, as the command line spells them.
+template <class Spec>
+std::vector<std::string> acceptedValues() {
+  using T = std::decay_t<decltype(Spec::fallback)>;
+  if constexpr (std::is_same_v<T, bool>) {
+    return {""};
+  } else if constexpr (std::is_enum_v<T>) {
+    return {std::begin(ruppert::valueNames(Spec::fallback)), std::end(ruppert::valueNames(Spec::fallback))};
+  } else if constexpr (std::is_same_v<T, int>) {
+    std::vector<std::string> out;
+    for (int i = static_cast<int>(Spec::low); i <= static_cast<int>(Spec::high); ++i) out.push_back(std::to_string(i));
+    return out;
+  } else if constexpr (std::is_same_v<T, std::uint64_t>) {
+    return {"0", "5"};
+  } else {
+    return {std::to_string(Spec::low), "5"};
+  }
+}
+
+// Every spelling of a flagged option: in the usage line and --help, and parsed with each value it
+// accepts (parsing happens before --help is acted on); a number just outside its range is refused.
+template <class Spec>
+void checkFlag(const std::string& help) {
+  if (*Spec::flag == '\0') return;
+  const std::string usage = help.substr(0, help.find("\n\n"));
+  for (const std::string& spelling : spellings(Spec::flag)) {
+    INFO(spelling);
+    CHECK_THAT(usage, Catch::Contains("[" + spelling) || Catch::Contains("|" + spelling));
+    CHECK_THAT(help.substr(usage.size()), Catch::Contains("  " + spelling) || Catch::Contains(", " + spelling));
+    for (const std::string& value : acceptedValues<Spec>()) {
+      INFO(value);
+      CHECK(run(spelling + " " + value + " --help").status == 0);
+    }
+    if constexpr (std::is_same_v<std::decay_t<decltype(Spec::fallback)>, double>) {
+      const double outside = Spec::high < ruppert::kUnbounded ? Spec::high + 1 : Spec::low - 1;
+      const Run r = run(spelling + " " + std::to_string(outside) + " --help");
+      CHECK(r.status == 2);
+      if (Spec::high < ruppert::kUnbounded) CHECK_THAT(r.err, Catch::Contains(" must be between "));
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("cli: every flag of the option table is parsed, listed and range-checked", "[io][cli]") {
+  if (!haveCli()) return;
+  const std::string help = run("--help").out;
+#define CHECK_FLAG_(KEY, ...) checkFlag<ruppert::option::KEY>(help);
+  RUPPERT_MESH_OPTIONS(CHECK_FLAG_)
+  RUPPERT_DERIVED_OPTIONS(CHECK_FLAG_)
+#undef CHECK_FLAG_
+}
+
+TEST_CASE("cli: --help gives the option table's numbers, no placeholder", "[io][cli]") {
+  if (!haveCli()) return;
+  const std::string help = run("--help").out;
+  using Angle = ruppert::option::minAngle;
+  char range[64];
+  std::snprintf(range, sizeof range, "%g..%g (default %g)", Angle::low, Angle::high, Angle::fallback);
+  CHECK_THAT(help, Catch::Contains(range));
+  for (const char* placeholder : {"{min}", "{max}", "{default}"}) CHECK_THAT(help, !Catch::Contains(placeholder));
+  const Run r = run("--min-angle " + std::to_string(Angle::high + 1) + " x.poly");
+  std::snprintf(range, sizeof range, "must be between %g and %g %s", Angle::low, Angle::high, Angle::unit);
+  CHECK_THAT(r.err, Catch::Contains(range));
 }

@@ -4,7 +4,9 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <string>
 
 #include "plc_generators.h"
 #include "validator.h"
@@ -527,6 +529,22 @@ TEST_CASE("invalid options are rejected naming the option", "[repair]") {
     const auto e = expectError(plc, o);
     CHECK(e.code() == ErrorCode::InvalidOption);
     CHECK(mentionsWord(e.what(), "angle"));
+  }
+  SECTION("minAngle just outside the option table's range, in a message stating that range") {
+    using Angle = ruppert::option::minAngle;
+    const auto text = [](double v) {
+      char s[32];
+      std::snprintf(s, sizeof s, "%g", v);
+      return std::string(s);
+    };
+    for (double bad : {Angle::low - 1, Angle::high + 1}) {
+      auto o = cdtOptions();
+      o.minAngle = bad;
+      const auto e = expectError(plc, o);
+      CHECK(e.code() == ErrorCode::InvalidOption);
+      CHECK(std::string(e.what()) == std::string(Angle::key) + " = " + text(bad) + " is outside [" + text(Angle::low) +
+                                         ", " + text(Angle::high) + "] " + Angle::unit);
+    }
   }
   SECTION("negative or NaN minAngle") {
     for (double bad : {-1.0, std::numeric_limits<double>::quiet_NaN()}) {

@@ -115,3 +115,103 @@ test("the page's words (web/labels.js) are keyed by the core's names", async () 
   // The page draws only the exemptions among the reasons: those must be reasons.
   for (const reason of keys(labels.EXEMPTION_LABELS)) assert.ok(names.reasons.includes(reason), reason);
 });
+
+// Options (issue 43): every option's name, type, default and range is written once, in
+// core/include/ruppert/option_table.h; the binding describes them, triangulate() and the CLI take
+// them from there, and index.d.ts, which spells them out, must agree.
+// Only the CLI's module (ruppert-cli.wasm) describes them, which keeps the mesher small.
+async function bindingOptions() {
+  const { compileWasm, instantiate } = await import(new URL('wasm/loader.js', installed));
+  const { readDescription } = await import(new URL('wasm/describe.js', installed));
+  const { default: factory } = await import(new URL('wasm/dist/ruppert-cli.mjs', installed));
+  const kind = { file: 'ruppert-cli.wasm', factory, probe: 'parseCliArgs' };
+  const wasmBinary = readFileSync(new URL('wasm/dist/ruppert-cli.wasm', installed));
+  return readDescription(await instantiate(await compileWasm({ wasmBinary }, kind), kind)).options;
+}
+
+// TriangulateOptions' members: { name: { type, doc } }, doc the /** */ comment just before it.
+function declaredOptions() {
+  const text = readFileSync(new URL('wasm/index.d.ts', installed), 'utf8');
+  const start = text.indexOf('export interface TriangulateOptions {');
+  assert.ok(start >= 0, 'index.d.ts has no TriangulateOptions');
+  const body = text.slice(start, text.indexOf('\n}', start));
+  const members = {};
+  for (const m of body.matchAll(/(\/\*\*(?:[^*]|\*(?!\/))*\*\/)?\s*(\w+)\?:\s*([^;]+);/g)) {
+    members[m[2]] = { type: m[3].trim(), doc: (m[1] ?? '').replace(/\s*\n\s*\*\s*/g, ' ') };
+  }
+  return members;
+}
+
+// The TypeScript type an option of each type must have.
+function typeScriptOf(option) {
+  switch (option.type) {
+    case 'number': case 'count': return 'number';
+    case 'boolean': return 'boolean';
+    case 'choice': return option.values.map((v) => `'${v}'`).sort().join(' | ');
+    case 'integer': return Array.from({ length: option.max - option.min + 1 }, (_, i) => option.min + i).join(' | ');
+    default: return 'function';
+  }
+}
+
+test("the package's names.js has the binding's options", async () => {
+  const { OPTIONS } = await import(new URL('wasm/dist/names.js', installed));
+  const options = await bindingOptions();
+  assert.deepEqual(JSON.parse(JSON.stringify(OPTIONS)), options);
+  assert.ok(options.length > 0 && new Set(options.map((o) => o.name)).size === options.length);
+});
+
+test("index.d.ts's TriangulateOptions has exactly the table's options, each of its type", async () => {
+  const options = await bindingOptions();
+  const declared = declaredOptions();
+  assert.deepEqual(Object.keys(declared).sort(), options.map((o) => o.name).sort());
+  for (const option of options) {
+    const { type } = declared[option.name];
+    const written = type.includes('=>') ? 'function' : type.split('|').map((t) => t.trim()).sort().join(' | ');
+    assert.equal(written, typeScriptOf(option), `TriangulateOptions.${option.name}`);
+  }
+});
+
+test("index.d.ts's comments give the table's defaults and ranges", async () => {
+  const declared = declaredOptions();
+  for (const option of await bindingOptions()) {
+    const { doc } = declared[option.name];
+    // A number with both ends states its range; every default a comment names is the table's.
+    if (option.type === 'number' && option.max !== null) {
+      assert.ok(doc.includes(`[${option.min}, ${option.max}]`), `${option.name}'s comment: ${doc}`);
+    }
+    for (const m of doc.matchAll(/Default (-?[\d.]+)\b/g)) assert.equal(Number(m[1]), option.default, option.name);
+    for (const m of doc.matchAll(/'(\w+)' \(default\)/g)) assert.equal(m[1], option.default, option.name);
+  }
+  assert.match(declared.minAngle.doc, /Default \d/, "minAngle's comment names its default");
+});
+
+test("triangulate() and the CLI's parser default every option as the table says", async () => {
+  const options = await bindingOptions();
+  const mesher = await init();
+  const { initCli } = await import(new URL('wasm/cli-mesher.js', installed));
+  const parsed = (await initCli())._parseCliArgs(['in.poly']).options;
+  const square = { points: [0, 0, 1, 0, 1, 1, 0, 1], segments: [0, 1, 1, 2, 2, 3, 3, 0] };
+  const explicit = {};
+  for (const option of options) {
+    if (option.type === 'function' || option.default === null) {
+      assert.equal(parsed[option.name], undefined, `the CLI's ${option.name}`);
+      continue;
+    }
+    assert.equal(parsed[option.name], option.default, `the CLI's ${option.name}`);
+    explicit[option.name] = option.default;
+  }
+  const byDefault = mesher.triangulate(square), given = mesher.triangulate(square, explicit);
+  assert.deepEqual([...given.triangles], [...byDefault.triangles]);
+  assert.equal(given.stats.minAngle, byDefault.stats.minAngle);
+});
+
+test('a number option outside its range names the range', async () => {
+  const mesher = await init();
+  const square = { points: [0, 0, 1, 0, 1, 1, 0, 1], segments: [0, 1, 1, 2, 2, 3, 3, 0] };
+  for (const option of await bindingOptions()) {
+    if (option.type !== 'number' || option.max === null) continue;
+    assert.throws(() => mesher.triangulate(square, { [option.name]: option.max + 1 }),
+      (e) => e.code === 'INVALID_OPTION' &&
+        e.message === `${option.name} = ${option.max + 1} is outside [${option.min}, ${option.max}] ${option.unit}`);
+  }
+});

@@ -21,6 +21,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace ruppert {
@@ -167,6 +168,13 @@ inline constexpr const char* kVariantNames[] = {"cdt", "box"};  // --variant, op
 static_assert(detail::countOf(kVariantNames) == 1 + static_cast<std::size_t>(Variant::BoundingBox));
 constexpr const char* enumName(Variant v) { return detail::nameIn(kVariantNames, v); }
 
+}  // namespace ruppert
+
+// The options' keys, CLI flags, defaults, ranges and help, written once, after the enums they name.
+#include "ruppert/option_table.h"
+
+namespace ruppert {
+
 struct Progress {
   std::uint64_t insertedVertices = 0;
   std::uint64_t triangles = 0;
@@ -174,8 +182,9 @@ struct Progress {
 };
 
 struct Options {
-  // Minimum angle in degrees, in [0, 60]. 0 and maxArea <= 0 and no size function: plain CDT.
-  // Angles up to 60 are accepted; above ~34 completion is not guaranteed. Above 34 a caller gets:
+  // Every default and range here is option_table.h's (option::minAngle::fallback, ::low, ::high).
+  // Minimum angle in degrees, in [low, high]. 0 and maxArea <= 0 and no size function: plain CDT.
+  // Any angle in the range is accepted; above ~34 completion is not guaranteed. Above 34 a caller gets:
   // the mesh refined to minAngle directly, if that completes within sixteen times the triangles of
   // the 33-degree mesh, or (optimal placement, no maxArea) in three more attempts that, where no
   // point meets the bound, insert the best point below it, the first two splitting the largest
@@ -188,30 +197,45 @@ struct Options {
   // below 34). Above 34, vertices on segments may also slide along them (segment_slide.h). A miss
   // costs the attempts up to their caps: on the generated shape families at 40 degrees at most
   // 0.8 s natively.
-  double minAngle = 30.0;
-  double maxArea = 0.0;  // <= 0: no global area bound
+  double minAngle = option::minAngle::fallback;
+  double maxArea = option::maxArea::fallback;  // <= 0: no global area bound
   // Optional size field: max triangle area at (x, y); return <= 0 or +inf for "no bound here".
   std::function<double(double x, double y)> sizeFunction;
   // Budget of Steiner vertices. kAutoSteinerBudget: no fixed count; refinement stops only once its
   // vertices exceed a multiple of the chapter's size measure (§6.5), i.e. when it is not converging.
   // Running out is not an error: complete becomes false.
-  std::uint64_t maxSteiner = kAutoSteinerBudget;
-  Placement placement = Placement::Optimal;  // the fewest triangles, and 35-40 degrees
-  Encroachment encroachment = Encroachment::DiametralLens;
-  Variant variant = Variant::Constrained;
-  bool convexHull = false;  // mesh the whole convex hull, not only what segments enclose
-  bool autoHoles = false;   // with no hole seeds: regions at odd nesting depth are domain, even are holes
-  bool trace = false;       // record Mesh::events (every insertion, for step-by-step replay)
-  bool sizeMeasure = false; // compute Stats::lfsIntegral (§6.5; one shortest-path pass over the mesh)
+  std::uint64_t maxSteiner = option::maxSteiner::fallback;
+  Placement placement = option::placement::fallback;  // the fewest triangles, and 35-40 degrees
+  Encroachment encroachment = option::encroachment::fallback;
+  Variant variant = option::variant::fallback;
+  // Mesh the whole convex hull, not only what segments enclose.
+  bool convexHull = option::convexHull::fallback;
+  // With no hole seeds: regions at odd nesting depth are domain, even are holes.
+  bool autoHoles = option::autoHoles::fallback;
+  // Record Mesh::events (every insertion, for step-by-step replay).
+  bool trace = option::trace::fallback;
+  // Compute Stats::lfsIntegral (§6.5; one shortest-path pass over the mesh).
+  bool sizeMeasure = option::sizeMeasure::fallback;
   // Called every few thousand insertions; return false to stop early (complete=false, "cancelled").
   std::function<bool(const Progress&)> onProgress;
   // Output and boundary (issue 16), after Triangle's -e, -Y, -YY and -j:
-  bool edges = false;              // fill Mesh::edges and Mesh::edgeMarkers (meshEdges below)
-  bool noBoundarySteiner = false;  // no new vertex on a subsegment of the domain's boundary (-Y)
-  bool noSegmentSteiner = false;   // no new vertex on any subsegment (-YY); implies the above
-  bool jettison = false;           // leave Unused input points out of Mesh::points (-j), see
-                                   // Mesh::inputToOutput
+  // Fill Mesh::edges and Mesh::edgeMarkers (meshEdges below).
+  bool edges = option::edges::fallback;
+  // No new vertex on a subsegment of the domain's boundary (-Y).
+  bool noBoundarySteiner = option::noBoundarySteiner::fallback;
+  // No new vertex on any subsegment (-YY); implies noBoundarySteiner.
+  bool noSegmentSteiner = option::noSegmentSteiner::fallback;
+  // Leave Unused input points out of Mesh::points (-j), see Mesh::inputToOutput.
+  bool jettison = option::jettison::fallback;
 };
+// Every option of the table is a member of the table's type (the callbacks: a member at all).
+#define RUPPERT_OPTION_IS_MEMBER_(KEY, ...) \
+  static_assert(std::is_same_v<decltype(Options::KEY), std::decay_t<decltype(option::KEY::fallback)>>);
+RUPPERT_MESH_OPTIONS(RUPPERT_OPTION_IS_MEMBER_)
+#undef RUPPERT_OPTION_IS_MEMBER_
+#define RUPPERT_OPTION_IS_MEMBER_(KEY, ...) static_assert(sizeof(Options::KEY) > 0);
+RUPPERT_CALLBACK_OPTIONS(RUPPERT_OPTION_IS_MEMBER_)
+#undef RUPPERT_OPTION_IS_MEMBER_
 
 // ---------------------------------------------------------------------------------------------
 // Output

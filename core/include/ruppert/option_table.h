@@ -1,0 +1,92 @@
+// Every option of triangulate(), the npm package and the `ruppert` CLI, written once. Options'
+// defaults (ruppert.h), the CLI's parsing, usage line and --help (core/cli/cli_args.cpp), the
+// binding's heap table (wasm/heap_layout.h, heap_triangulate.cpp) and the package's option checks
+// (wasm/input-checks.js, through the description wasm/describe.cpp exports) are all made from these
+// lists; index.d.ts, which TypeScript needs spelled out, is compared with them by
+// tests/package/names.test.mjs. Included by ruppert.h after the enums and sentinels it names.
+//
+// Each list calls X(key, flag, fallback, low, high, unit, help) per option:
+//   key       its name: the Options member (or CliArgs member), the package's and JSON's key
+//   flag      the CLI's spellings, '|' between them, then the value's name if it takes one;
+//             "" where the CLI sets it some other way (--trace FILE, --stats) or not at all
+//   fallback  the default; its type is the option's (double, count, bool, enum, int)
+//   low, high the range of a number, both ends included (kUnbounded: no upper end); 0, 0 otherwise
+//   unit      what a number measures, for messages ("degrees in [0, 60]"); "" otherwise
+//   help      the CLI's --help, one line that the CLI wraps; {min}, {max} and {default} stand for
+//             the numbers above, so that no number is written twice
+#pragma once
+
+namespace ruppert {
+
+inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+
+// triangulate()'s Options that the binding passes as numbers, in the heap table's order.
+#define RUPPERT_MESH_OPTIONS(X)                                                                          \
+  X(minAngle, "--min-angle DEG", 30.0, 0, 60, "degrees",                                                \
+    "smallest angle to reach, {min}..{max} (default {default}); above 34, where out of reach: the best "  \
+    "mesh reached (at least 33 degrees), marked incomplete")                                             \
+  X(maxArea, "--max-area A", 0.0, 0, kUnbounded, "area",                                                 \
+    "largest triangle area (default: no bound); --min-angle 0 without --max-area gives the plain "        \
+    "constrained Delaunay triangulation")                                                                \
+  X(maxSteiner, "--max-steiner N", kAutoSteinerBudget, 0, kUnbounded, "vertices",                              \
+    "at most N new vertices (default: automatic)")                                                       \
+  X(placement, "--placement P", Placement::Optimal, 0, 0, "",                                            \
+    "optimal (default: off-centers, but where one would make a skinny triangle the point maximising "     \
+    "the smallest new angle; the fewest triangles, and 35-40 degrees), offcenter (faster), circumcenter, " \
+    "or petal (a point of the shortest edge's petal there)")                                             \
+  X(encroachment, "--encroachment E", Encroachment::DiametralLens, 0, 0, "",                             \
+    "lens (default: diametral lenses) or disk (closed diametral disks)")                                 \
+  X(variant, "--variant V", Variant::Constrained, 0, 0, "",                                              \
+    "cdt (default: constrained, no triangles outside the domain) or box (Ruppert's original: "            \
+    "conforming mesh of an enclosing box)")                                                              \
+  X(convexHull, "--convex-hull", false, 0, 0, "", "mesh the whole convex hull, not only what segments enclose") \
+  X(autoHoles, "--auto-holes", false, 0, 0, "", "without hole seeds: regions at even nesting depth become holes") \
+  X(trace, "", false, 0, 0, "", "")                                                                      \
+  X(sizeMeasure, "", false, 0, 0, "", "")                                                                \
+  X(edges, "-e|--edges", false, 0, 0, "",                                                                \
+    "also write BASE.edge: every edge once, with its boundary marker (triangle format only)")             \
+  X(noBoundarySteiner, "--no-boundary-steiner", false, 0, 0, "",                                         \
+    "no new vertex on the domain's boundary (Triangle's -Y); what quality that leaves unreachable is "    \
+    "reported, not looped over")                                                                         \
+  X(noSegmentSteiner, "--no-segment-steiner", false, 0, 0, "", "no new vertex on any segment (Triangle's -YY)") \
+  X(jettison, "-j|--jettison", false, 0, 0, "",                                                          \
+    "leave unused input points (merged duplicates, points outside the domain) out of the output; the "    \
+    "others are renumbered in order")
+
+// Outputs derived from the mesh after triangulate() (ruppert.h's addQuadraticNodes, voronoiDiagram):
+// the package's options and the CLI's flags, not Options members.
+#define RUPPERT_DERIVED_OPTIONS(X)                                                                       \
+  X(order, "--order 1|2", 1, 1, 2, "",                                                                   \
+    "2 for quadratic triangles (default {default}): .ele gets 6 nodes per triangle (corners, then the "   \
+    "midpoints of the edges opposite them), .node the midpoints after the corners")                                             \
+  X(voronoi, "--voronoi", false, 0, 0, "", "also write the dual: BASE.v.node (circumcentres) and BASE.v.edge")
+
+// Options members that are functions: the package takes JavaScript functions, the CLI has none.
+#define RUPPERT_CALLBACK_OPTIONS(X)             \
+  X(sizeFunction, "", nullptr, 0, 0, "", "")   \
+  X(onProgress, "", nullptr, 0, 0, "", "")
+
+#define RUPPERT_ALL_OPTIONS(X) RUPPERT_MESH_OPTIONS(X) RUPPERT_DERIVED_OPTIONS(X) RUPPERT_CALLBACK_OPTIONS(X)
+
+// option::minAngle::fallback, ::low, ::flag, ...: one type per option, so that code which needs one
+// option's default or range names it, and code over all of them is a template over these types.
+namespace option {
+#define RUPPERT_OPTION_TYPE_(KEY, FLAG, FALLBACK, LOW, HIGH, UNIT, HELP) \
+  struct KEY {                                                         \
+    static constexpr const char* key = #KEY;                           \
+    static constexpr const char* flag = FLAG;                          \
+    static constexpr auto fallback = FALLBACK;                         \
+    static constexpr double low = LOW, high = HIGH;                    \
+    static constexpr const char* unit = UNIT;                          \
+    static constexpr const char* help = HELP;                          \
+  };
+RUPPERT_ALL_OPTIONS(RUPPERT_OPTION_TYPE_)
+#undef RUPPERT_OPTION_TYPE_
+}  // namespace option
+
+// The names of an enum option's values (the tables beside the enums), for the CLI and the binding.
+constexpr const auto& valueNames(Placement) { return kPlacementNames; }
+constexpr const auto& valueNames(Encroachment) { return kEncroachmentNames; }
+constexpr const auto& valueNames(Variant) { return kVariantNames; }
+
+}  // namespace ruppert
