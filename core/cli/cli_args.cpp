@@ -37,6 +37,7 @@ const char* usageLine() {
          "               [--encroachment lens|disk] [--variant cdt|box] [--convex-hull]\n"
          "               [--auto-holes] [--order 1|2] [--voronoi] [-e|--edges]\n"
          "               [--no-boundary-steiner] [--no-segment-steiner] [-j|--jettison]\n"
+         "               [--curve-tolerance T]\n"
          "               [--help] [--version] INPUT";
 }
 
@@ -51,6 +52,8 @@ const char* const kOptionsHelp =
     "                       without --max-area gives the plain constrained Delaunay\n"
     "                       triangulation\n"
     "  --max-steiner N      at most N new vertices (default: automatic)\n"
+    "  --curve-tolerance T  largest distance from a boundary edge to the curve it\n"
+    "                       follows (JSON \"curves\"; default 1e-3 of the diagonal)\n"
     "  -o BASE              write the mesh: BASE.node, BASE.ele, BASE.poly (triangle\n"
     "                       format), BASE.json (json) or BASE.svg (svg); without -o\n"
     "                       only the summary is printed\n"
@@ -220,6 +223,10 @@ const std::vector<std::pair<std::vector<std::string>, Handler>>& optionTable() {
       {{"--max-area"}, [](OptionValue& v, CliArgs& out) {
          out.options.maxArea = v.number();
          if (out.options.maxArea < 0) throw UsageError("--max-area must not be negative");
+       }},
+      {{"--curve-tolerance"}, [](OptionValue& v, CliArgs& out) {
+         out.options.curveTolerance = v.number();
+         if (!(out.options.curveTolerance > 0)) throw UsageError("--curve-tolerance must be positive");
        }},
       {{"--max-steiner"}, [](OptionValue& v, CliArgs& out) {
          const std::string text = v.text();
