@@ -73,6 +73,7 @@ val parseCliArgs(val argsJs) {
     options.set("edges", o.edges);
     options.set("noBoundarySteiner", o.noBoundarySteiner);
     options.set("noSegmentSteiner", o.noSegmentSteiner);
+    if (o.curveTolerance > 0) options.set("curveTolerance", o.curveTolerance);
     options.set("jettison", o.jettison);
     out.set("options", options);
     return out;

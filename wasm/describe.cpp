@@ -34,7 +34,8 @@ std::string description() {
   list(json, "vertexKinds", ruppert::kVertexKindNames);
   list(json, "placements", ruppert::kPlacementNames);
   list(json, "encroachments", ruppert::kEncroachmentNames);
-  list(json, "variants", ruppert::kVariantNames, "},\"layout\":{");
+  list(json, "variants", ruppert::kVariantNames);
+  list(json, "curveTypes", ruppert::kCurveTypeNames, "},\"layout\":{");
   list(json, "input", ruppert_wasm::kInputFields);
   list(json, "output", ruppert_wasm::kOutputFields);
   list(json, "derivedInput", ruppert_wasm::kDerivedInputFields);

@@ -14,9 +14,13 @@ namespace ruppert_wasm {
 // rp_stage_input's arrays (it takes their lengths in this order), then the options (optionsFromTable).
 inline constexpr const char* kInputFields[] = {
     "points:f64", "segments:u32", "holes:f64", "regions:f64", "pointMarkers:i32", "segmentMarkers:i32",
-    "pointAttributes:f64",
+    "pointAttributes:f64", "curves:f64",
     "minAngle", "maxArea", "maxSteiner", "placement", "encroachment", "variant", "convexHull", "autoHoles",
-    "trace", "sizeMeasure", "edges", "noBoundarySteiner", "noSegmentSteiner", "jettison"};
+    "trace", "sizeMeasure", "edges", "noBoundarySteiner", "noSegmentSteiner", "jettison",
+    "curveTolerance"};
+// "curves": kCurveValues doubles per Plc::curves item: the type's number, from, to, the centre (arc,
+// then two zeros) or the controls (Bézier), the marker.
+inline constexpr std::size_t kCurveValues = 8;
 
 // writeOutputTable()'s order. Reasons and notices come as numbers per item (the kind's number first)
 // and a UTF-8 text of "message\0" per item.
