@@ -4,6 +4,7 @@
 // of them, and the mesh's area within the chords' error of the curved domain's.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -169,6 +170,11 @@ TEST_CASE("bad curves are refused with the curve named", "[curves][errors]") {
   crossing.from = 3, crossing.to = 4, crossing.center[0] = 1, crossing.center[1] = 0.2;
   p.curves.push_back(crossing);
   refused(p, ruppert::ErrorCode::MalformedInput, "crosses or touches curve");
+  // A cubic that loops over itself.
+  p = ruppert_test::underBezier(1).plc;
+  const double loop[4] = {-1, 1, 2, 1};
+  std::copy(loop, loop + 4, p.curves[0].controls);
+  refused(p, ruppert::ErrorCode::MalformedInput, "curve 0 crosses itself");
 }
 
 TEST_CASE("curves are read from JSON and refused there with their path", "[curves][io]") {

@@ -228,9 +228,11 @@ void rejectRepairedCurves(const std::vector<Notice>& notices, const CurvePieces&
     switch (n.kind) {
       case NoticeKind::SegmentsCross:
       case NoticeKind::SegmentsOverlap:
-        if (a || b)
-          throw Error(ErrorCode::MalformedInput, (a ? name(n.a) : name(n.b)) + " crosses or touches " + (a ? name(n.b) : name(n.a)) +
+        if (a || b) {
+          const std::string first = a ? name(n.a) : name(n.b), second = a ? name(n.b) : name(n.a);
+          throw Error(ErrorCode::MalformedInput, first + (first == second ? " crosses itself" : " crosses or touches " + second) +
                                                      at + " (its pieces' chords meet); curves are not repaired");
+        }
         break;
       case NoticeKind::VertexOnSegment:
         if (a) throw Error(ErrorCode::MalformedInput, name(n.a) + ": point " + std::to_string(n.b) + " lies on a chord of its pieces; curves are not repaired");
