@@ -78,7 +78,8 @@ std::string description() {
   list(json, "vertexKinds", ruppert::kVertexKindNames);
   list(json, "placements", ruppert::kPlacementNames);
   list(json, "encroachments", ruppert::kEncroachmentNames);
-  list(json, "variants", ruppert::kVariantNames, "},");
+  list(json, "variants", ruppert::kVariantNames);
+  list(json, "curveTypes", ruppert::kCurveTypeNames, "},");
 #ifdef RUPPERT_WASM_DESCRIBE_OPTIONS
   json.append("\"options\":[");
 #define RUPPERT_WASM_DESCRIBE_OPTION_(KEY, ...) appendOption<ruppert::option::KEY>(json);

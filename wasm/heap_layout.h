@@ -20,7 +20,10 @@ namespace ruppert_wasm {
 // table's RUPPERT_MESH_OPTIONS, in its order (optionsFromTable reads them through the same list).
 inline constexpr const char* kInputFields[] = {
     "points:f64", "segments:u32", "holes:f64", "regions:f64", "pointMarkers:i32", "segmentMarkers:i32",
-    "pointAttributes:f64", RUPPERT_MESH_OPTIONS(RUPPERT_WASM_FIELD_)};
+    "pointAttributes:f64", "curves:f64", RUPPERT_MESH_OPTIONS(RUPPERT_WASM_FIELD_)};
+// "curves": kCurveValues doubles per Plc::curves item: the type's number, from, to, the centre (arc,
+// then two zeros) or the controls (Bézier), the marker.
+inline constexpr std::size_t kCurveValues = 8;
 
 // writeOutputTable()'s order. Reasons and notices come as numbers per item (the kind's number first)
 // and a UTF-8 text of "message\0" per item.

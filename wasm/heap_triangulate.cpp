@@ -47,6 +47,19 @@ ruppert::Options optionsFromTable(const double* v) {
   return o;
 }
 
+// Plc::curves from their flat form (heap_layout.h's kCurveValues per curve).
+void curvesFromTable(const std::vector<double>& v, std::vector<ruppert::Curve>& out) {
+  for (std::size_t i = 0; i + kCurveValues <= v.size(); i += kCurveValues) {
+    ruppert::Curve c;
+    c.type = static_cast<ruppert::CurveType>(static_cast<int>(v[i]));
+    c.from = static_cast<std::uint32_t>(v[i + 1]), c.to = static_cast<std::uint32_t>(v[i + 2]);
+    c.center[0] = v[i + 3], c.center[1] = v[i + 4];
+    for (int k = 0; k < 4; ++k) c.controls[k] = v[i + 3 + k];
+    c.marker = static_cast<std::int32_t>(v[i + 7]);
+    out.push_back(c);
+  }
+}
+
 // The JavaScript wrappers never throw: they return NaN (size) or -1 (progress) after storing
 // the user's error, and we unwind with CallbackFailed.
 void addCallbacks(ruppert::Options& o, const val& size, const val& progress) {
@@ -172,6 +185,7 @@ void releaseDerived() {
 struct Staged {
   ruppert::Plc plc;
   std::vector<double> regions;  // x, y, attribute, maxArea per region
+  std::vector<double> curves;   // kCurveValues per curve
   double inputTable[kInputTableSize] = {};
   ruppert::Mesh mesh;
   std::vector<double> histogram, reasonNumbers, noticeNumbers;
@@ -221,12 +235,13 @@ bool runStaged(const val* sizeFunction, const val* onProgress) {
   Staged& s = staged();
   // Moved out, so that the input is freed however this call ends.
   ruppert::Plc plc = std::move(s.plc);
-  const std::vector<double> regions = std::move(s.regions);
-  s.plc = ruppert::Plc{}, s.regions = {};
+  const std::vector<double> regions = std::move(s.regions), curves = std::move(s.curves);
+  s.plc = ruppert::Plc{}, s.regions = {}, s.curves = {};
   return attempt(
       [&] {
         for (std::size_t i = 0; i + 3 < regions.size(); i += 4)
           plc.regions.push_back(ruppert::Region{regions[i], regions[i + 1], regions[i + 2], regions[i + 3]});
+        curvesFromTable(curves, plc.curves);
         ruppert::Options options = optionsFromTable(s.inputTable + kInputArrays);
         if (sizeFunction != nullptr) addCallbacks(options, *sizeFunction, *onProgress);
         takeDerivedInput(plc);  // issue 16, derived
@@ -276,8 +291,8 @@ extern "C" {
 // not fit in memory.
 EMSCRIPTEN_KEEPALIVE std::uintptr_t rp_stage_input(double points, double segments, double holes, double regions,
                                                    double pointMarkers, double segmentMarkers, double pointAttributes,
-                                                   int indexBase, int attributesPerPoint) {
-  static_assert(kInputArrays == 7, "rp_stage_input takes one length per input array");
+                                                   double curves, int indexBase, int attributesPerPoint) {
+  static_assert(kInputArrays == 8, "rp_stage_input takes one length per input array");
   Staged& s = staged();
   try {
     s.mesh = ruppert::Mesh{};
@@ -288,11 +303,12 @@ EMSCRIPTEN_KEEPALIVE std::uintptr_t rp_stage_input(double points, double segment
     s.inputTable[4] = sized(s.plc.pointMarkers, pointMarkers);
     s.inputTable[5] = sized(s.plc.segmentMarkers, segmentMarkers);
     s.inputTable[6] = sized(s.plc.pointAttributes, pointAttributes);
+    s.inputTable[7] = sized(s.curves, curves);
     s.plc.indexBase = indexBase;
     s.plc.attributesPerPoint = static_cast<std::uint32_t>(attributesPerPoint);
   } catch (const std::bad_alloc&) {
     s.plc = ruppert::Plc{};
-    s.regions = {};
+    s.regions = {}, s.curves = {};
     return 0;
   }
   return reinterpret_cast<std::uintptr_t>(s.inputTable);

@@ -13,6 +13,21 @@ export interface Region {
   maxArea?: number;
 }
 
+/** A curve's type: the core's names (ruppert.h's CurveType). */
+export type CurveType = 'arc' | 'bezier';
+
+/**
+ * A curved boundary from point `from` to point `to`, bounding regions, holes and the domain as a
+ * segment does; refinement splits it on the curve, so every vertex of its pieces lies on it, each
+ * piece within options.curveTolerance of it. Its pieces' segmentIds are segments.length / 2 + its
+ * index in curves.
+ */
+export type Curve =
+  /** Counter-clockwise around center; from and to at the same distance from it. A circle is two arcs. */
+  | { type: 'arc'; from: number; to: number; center: NumberArray; marker?: number }
+  /** The cubic Bézier with inner control points controls = [x1, y1, x2, y2]. */
+  | { type: 'bezier'; from: number; to: number; controls: NumberArray; marker?: number };
+
 /** A planar straight-line graph. */
 export interface Plc {
   /** Interleaved coordinates x0, y0, x1, y1, ... */
@@ -48,6 +63,8 @@ export interface Plc {
    * triangles its interior meets, so every triangle lying within an old triangle meets its bound.
    */
   triangleMaxArea?: NumberArray;
+  /** Curved boundaries (issue 45); not with triangles. */
+  curves?: Curve[];
 }
 
 /** What the readers return. */
@@ -119,6 +136,11 @@ export interface TriangulateOptions {
   noSegmentSteiner?: boolean;
   /** Leave unused input points out of mesh.points (Triangle's -j); mesh.inputToOutput maps the indices. */
   jettison?: boolean;
+  /**
+   * With plc.curves: the largest distance from a boundary edge to the curve it follows (input units).
+   * Default (0): 1e-3 of the diagonal of the points' bounding box.
+   */
+  curveTolerance?: number;
   /**
    * 2: quadratic triangles: mesh.triangles6, and one midpoint node per edge appended to points
    * (and pointMarkers) after the corner vertices. Default 1.
@@ -234,7 +256,10 @@ export interface Mesh {
   neighbors: Int32Array;
   /** Two vertex indices per subsegment. */
   segments: Uint32Array;
-  /** Input segment index per subsegment, or -1 for an added convex-hull edge. */
+  /**
+   * Input segment index per subsegment, plc.segments.length / 2 + c for a piece of plc.curves[c], or
+   * -1 for an added convex-hull edge.
+   */
   segmentIds: Int32Array;
   /** VertexKind per point. */
   vertexKinds: Uint8Array;

@@ -7,14 +7,15 @@
 // vertex. Every message names the item and its value, e.g. "segments[7] = 2.5 is not an integer".
 // Value checks that need geometry (non-finite coordinates, duplicate points, hole placement) stay
 // in the core, which reports them with the same codes.
-import { OPTIONS } from './dist/names.js';
+import { NAMES, OPTIONS } from './dist/names.js';
 import { MeshError } from './errors.js';
 import { nearestKey, rejectUnknownKeys } from './known-keys.js';
 
 const MAX_UINT32 = 0xffffffff;
 const PLC_KEYS = ['points', 'segments', 'holes', 'regions', 'pointMarkers', 'segmentMarkers', 'indexBase',
-  'triangles', 'triangleMaxArea', 'pointAttributes', 'attributesPerPoint'];
+  'triangles', 'triangleMaxArea', 'pointAttributes', 'attributesPerPoint', 'curves'];
 const REGION_KEYS = ['x', 'y', 'attribute', 'maxArea'];
+const CURVE_KEYS = ['type', 'from', 'to', 'center', 'controls', 'marker'];
 
 function describe(value) {
   if (value === undefined) return 'undefined';
@@ -137,6 +138,34 @@ function oldMesh(plc, pointCount) {
   return { triangles, triangleMaxArea };
 }
 
+// Issue 45, curves: each { type: 'arc', from, to, center: [x, y] } or { type: 'bezier', from, to,
+// controls: [x1, y1, x2, y2] }, with an optional marker, flattened to 8 numbers (the binding's
+// heap_layout.h: type, from, to, 4 coordinates, marker). The core checks the geometry and the
+// indices' range, naming the curve.
+function checkCurves(plc) {
+  if (plc.curves == null) return NO_NUMBERS;
+  if (!Array.isArray(plc.curves)) throw invalid(`curves must be an array of { type, from, to, center | controls }, got ${describe(plc.curves)}`);
+  const out = new Float64Array(8 * plc.curves.length);
+  plc.curves.forEach((c, i) => {
+    const at = `curves[${i}]`;
+    if (c === null || typeof c !== 'object') throw invalid(`${at} = ${describe(c)} is not an object { type, from, to, ... }`);
+    rejectUnknownKeys(c, CURVE_KEYS, at, invalid);
+    const type = NAMES.curveTypes.indexOf(c.type);
+    if (type < 0) throw invalid(`${at}.type = ${describe(c.type)} must be one of ${NAMES.curveTypes.map((n) => `'${n}'`).join(', ')}`);
+    const key = type === 0 ? 'center' : 'controls', count = type === 0 ? 2 : 4;
+    const values = c[key] == null ? [] : toFloat64(c[key], `${at}.${key}`, { pairs: false });
+    if (values.length !== count) throw invalid(`${at} needs ${key}: ${count} numbers, got ${describe(c[key])}`);
+    const ends = [c.from, c.to];
+    ['from', 'to'].forEach((name, k) => {
+      if (!Number.isInteger(ends[k]) || ends[k] < 0 || ends[k] > MAX_UINT32) throw invalid(`${at}.${name} = ${describe(ends[k])} is not a point index`);
+    });
+    const marker = c.marker ?? 0;
+    if (!Number.isInteger(marker) || marker < -0x80000000 || marker > 0x7fffffff) throw invalid(`${at}.marker = ${describe(marker)} is not a 32-bit integer`);
+    out.set([type, c.from, c.to], 8 * i), out.set(values, 8 * i + 3), out[8 * i + 7] = marker;
+  });
+  return out;
+}
+
 /**
  * @param {unknown} plc { points, segments?, holes?, regions?, pointMarkers?, segmentMarkers?, indexBase? }
  * @returns the same data as exact typed arrays; regions flattened to x, y, attribute, maxArea.
@@ -189,7 +218,7 @@ export function checkPlc(plc) {
   const { triangles, triangleMaxArea } = oldMesh(plc, pointCount);
   const { pointAttributes, attributesPerPoint } = checkAttributes(plc, pointCount);
   return { points, segments, holes, regions, pointMarkers, segmentMarkers, indexBase, triangles, triangleMaxArea,
-    pointAttributes, attributesPerPoint };
+    pointAttributes, attributesPerPoint, curves: checkCurves(plc) };
 }
 
 // pointAttributes: flat, attributesPerPoint values per point; without attributesPerPoint the count is

@@ -12,6 +12,26 @@ namespace ruppert_wasm {
 namespace {
 
 // format: "poly", "node" or "json" (GeoJSON is read by geojson_reader.cpp, in the mesher module).
+// Plc::curves (issue 45: only JSON has them) as { type, from, to, center | controls, marker }, added
+// here rather than in plcToJs, which the mesher module links for GeoJSON.
+val withCurves(val o, const ruppert::Plc& plc) {
+  if (plc.curves.empty()) return o;  // the key only where a file has curves
+  val curves = val::array();
+  for (const ruppert::Curve& c : plc.curves) {
+    val item = val::object();
+    const bool arc = c.type == ruppert::CurveType::Arc;
+    const double* values = arc ? c.center : c.controls;
+    item.set("type", std::string(ruppert::enumName(c.type)));
+    item.set("from", c.from);
+    item.set("to", c.to);
+    item.set(arc ? "center" : "controls", copyOut(std::vector<double>(values, values + (arc ? 2 : 4))));
+    item.set("marker", c.marker);
+    curves.call<void>("push", item);
+  }
+  o.set("curves", curves);
+  return o;
+}
+
 val readPlc(std::string text, std::string format, std::string name) {
   return guarded([&] {
     ruppert::Plc plc;
@@ -25,7 +45,7 @@ val readPlc(std::string text, std::string format, std::string name) {
       throw ruppert::Error(ruppert::ErrorCode::InvalidOption, "unknown input format '" + format + "'");
     }
     val out = val::object();
-    out.set("plc", plcToJs(plc));
+    out.set("plc", withCurves(plcToJs(plc), plc));
     return out;
   });
 }

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "cdt/curves.h"
 #include "cdt/prepare_input.h"
 #include "ruppert/ruppert.h"
 #include "mesh/triangulation.h"
@@ -41,6 +42,14 @@ struct MeshState {
   // Per convex-hull (or bounding-box) edge that refinement split: its two end vertices, so that the
   // seditious rule (§6.6) treats it as the segment it stands for. w and r: refine.
   std::vector<std::array<std::uint32_t, 2>> hullEdgeEnds;
+  // Plc::curves cut into pieces, which are plc's segments from curves->first on (cdt/curves.h); held
+  // by triangulate (a pointer: MeshState is copied during refinement's push, the pieces never change).
+  // w: triangulate (before prepare; scaled after it). r: constrain (rejectRepairedCurves), refine
+  // (split points, the disk rule, the tolerance), output (segmentIds, vertex kinds).
+  const CurvePieces* curves = &kNoCurves;
+  // Per vertex refinement put on a curve piece: its curve parameter (NaN or absent for others; a
+  // piece's end vertices take theirs from the piece, CurvePieces::t0 and t1). w and r: refine.
+  std::vector<double> curveT;
   // Vertices [0, inputCount) are the distinct input points. w: build. r: constrain, refine, output,
   // initAttributes, the size measure.
   std::uint32_t inputCount = 0;

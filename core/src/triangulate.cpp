@@ -53,12 +53,17 @@ Mesh triangulate(const Plc& userPlc, const Options& options) {
   const auto start = std::chrono::steady_clock::now();
   const bool box = options.variant == Variant::BoundingBox;
   // Refining a mesh: its boundary edges join the segments, its triangles bound the domain and areas.
-  Plc refining;
-  const Plc& plc = plcToMesh(userPlc, options, refining);
+  Plc refining, withCurves;
+  CurvePieces curves;
+  const Plc* toMesh = &plcToMesh(userPlc, options, refining);
+  // Curves become pieces, segments after the input's, that refinement splits on the curve.
+  if (!toMesh->curves.empty()) withCurves = withCurvePieces(*toMesh, options, curves), toMesh = &withCurves;
+  const Plc& plc = *toMesh;
   MeshState m;
   m.plc = &plc;
   m.options = &options;
   m.input = prepareInput(plc, options, m.notices);
+  if (!curves.shapes.empty()) scaleCurves(curves, m.input), m.curves = &curves;
   std::optional<OldMesh> oldMesh;
   if (!plc.triangles.empty()) m.oldMesh = &oldMesh.emplace(plc, m.input);
 
@@ -71,6 +76,7 @@ Mesh triangulate(const Plc& userPlc, const Options& options) {
   // (found by fuzzing: tests/hostile/crossings-rounded-outside-a-hull-inserted-first.poly).
   if (plc.segments.empty()) insertHull(m);
   insertSegments(m);
+  if (!curves.shapes.empty()) rejectRepairedCurves(m.notices, curves);
   if (!plc.segments.empty() && options.convexHull) insertHull(m);
   if (box) constrainBoxSides(m);
 

@@ -350,3 +350,19 @@ TEST_CASE("cli: --help gives the option table's numbers, no placeholder", "[io][
   std::snprintf(range, sizeof range, "must be between %g and %g %s", Angle::low, Angle::high, Angle::unit);
   CHECK_THAT(r.err, Catch::Contains(range));
 }
+
+TEST_CASE("cli: curves from JSON are meshed to --curve-tolerance", "[io][cli][curves]") {
+  if (!haveCli()) return;
+  const std::string input = "'" + kCliFixtures + "square-with-round-hole.json'";
+  const Run coarse = run("--min-angle 30 --curve-tolerance 1e-3 " + input);
+  const Run fine = run("--min-angle 30 --curve-tolerance 1e-5 " + input);
+  INFO(coarse.out << coarse.err << fine.out << fine.err);
+  REQUIRE(coarse.status == 0);
+  REQUIRE(fine.status == 0);
+  CHECK_THAT(coarse.out, Catch::Contains("min angle 30.00") && Catch::Contains("complete"));
+  CHECK_THAT(fine.out, Catch::Contains("complete"));
+  // "ruppert: V vertices, ...": a hundredth of the tolerance takes many more vertices on the circle.
+  auto vertices = [](const std::string& summary) { return std::stoi(summary.substr(summary.find(": ") + 2)); };
+  CHECK(vertices(fine.out) > 4 * vertices(coarse.out));
+  CHECK(run("--curve-tolerance -1 " + input).status == 2);
+}

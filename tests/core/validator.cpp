@@ -814,7 +814,9 @@ void checkStats(const Mesh& m, const std::vector<bool>& used, Problems& out) {
 std::vector<std::string> validateMesh(const Mesh& mesh, const ValidateOptions& options) {
   Problems out(options.maxProblems);
   if (!checkSizes(mesh, out)) return out.finish();
-  const std::size_t inputSegments = options.input ? options.input->segments.size() / 2 : SIZE_MAX;
+  // Pieces of curves carry segmentIds after the segments' (ruppert.h).
+  const std::size_t inputSegments =
+      options.input ? options.input->segments.size() / 2 + options.input->curves.size() : SIZE_MAX;
   if (!checkIndices(mesh, inputSegments, out)) return out.finish();
 
   const Scaled s(mesh);
@@ -843,7 +845,9 @@ std::vector<std::string> validateMesh(const Mesh& mesh, const ValidateOptions& o
 
 std::vector<std::string> findNearDuplicates(const Mesh& mesh, const ValidateOptions& options) {
   Problems out(options.maxProblems);
-  const std::size_t inputSegments = options.input ? options.input->segments.size() / 2 : SIZE_MAX;
+  // Pieces of curves carry segmentIds after the segments' (ruppert.h).
+  const std::size_t inputSegments =
+      options.input ? options.input->segments.size() / 2 + options.input->curves.size() : SIZE_MAX;
   if (!checkSizes(mesh, out) || !checkIndices(mesh, inputSegments, out)) return out.finish();
   checkNearDuplicates(Scaled(mesh), options, out);
   return out.finish();
@@ -948,6 +952,12 @@ std::function<bool(const Mesh&, std::uint32_t)> seditiousTest(const Mesh& mesh, 
     if (su == -1 || sw == -1 || su == sw) return false;
     auto end = [plc, hullEnds, &m](std::int32_t s, int e) {
       if (s <= -2) return &m.points[2 * std::size_t((*hullEnds)[std::size_t(-2 - s)][e])];
+      // A curve's pieces: its chord stands in for it (what matters is the shared end where curves meet).
+      const std::size_t segments = plc->segments.size() / 2;
+      if (std::size_t(s) >= segments) {
+        const ruppert::Curve& c = plc->curves[std::size_t(s) - segments];
+        return &plc->points[2 * std::size_t(e == 0 ? c.from : c.to)];
+      }
       return &plc->points[2 * std::size_t(plc->segments[2 * std::size_t(s) + e])];
     };
     const double *a0 = end(su, 0), *a1 = end(su, 1), *b0 = end(sw, 0), *b1 = end(sw, 1);

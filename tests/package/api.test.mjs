@@ -38,10 +38,13 @@ test('the two-line example from the README meshes a square to the requested qual
 // Then the text formats moved to a module of their own (ruppert-formats.wasm) and the native CLI's
 // parser and texts to ruppert-cli.wasm, which only wasm/cli.js loads: the mesher (with the GeoJSON
 // reader, whose hole seeds need a triangulation) is 150 KB again.
+// Issue 45, curves (arcs and Béziers cut into pieces, split on the curve, beyond the chord where the
+// domain bulges; the checks naming the curve): 149,205 -> 155,492 bytes, with their code compiled for
+// size (cold_code.h) and kept out of the hot paths; the limit moved to 156 KB for it, openly.
 const gzippedSize = (file) => gzipSync(readFileSync(new URL(`./node_modules/ruppert/wasm/dist/${file}`, import.meta.url)), { level: 9 }).length;
-test('the mesher .wasm is at most 150 KB gzipped, the text formats at most 60 KB', () => {
+test('the mesher .wasm is at most 156 KB gzipped, the text formats at most 60 KB', () => {
   const mesher = gzippedSize('ruppert.wasm'), formats = gzippedSize('ruppert-formats.wasm');
-  assert.ok(mesher <= 150000, `ruppert.wasm: ${mesher} bytes gzipped`);
+  assert.ok(mesher <= 156000, `ruppert.wasm: ${mesher} bytes gzipped`);
   assert.ok(formats <= 60000, `ruppert-formats.wasm: ${formats} bytes gzipped`);
 });
 

@@ -44,7 +44,7 @@ const sorted = (names) => [...names].sort();
 test('the binding exports every enum the package names, none empty', async () => {
   const names = await bindingNames();
   assert.deepEqual(Object.keys(names).sort(),
-    ['encroachments', 'errorCodes', 'events', 'notices', 'placements', 'reasons', 'variants', 'vertexKinds']);
+    ['curveTypes', 'encroachments', 'errorCodes', 'events', 'notices', 'placements', 'reasons', 'variants', 'vertexKinds']);
   for (const [key, list] of Object.entries(names)) {
     assert.ok(list.length > 0 && new Set(list).size === list.length, `${key}: ${list}`);
   }
@@ -97,6 +97,11 @@ test('placement, encroachment and variant: the core\'s names, accepted by triang
       assert.equal(parsed.options[option], name);
     }
   }
+});
+
+test("index.d.ts's CurveType is the core's curve types", async () => {
+  const { curveTypes } = await bindingNames();
+  assert.deepEqual(union('export type CurveType ='), curveTypes);
 });
 
 test("the page's words (web/labels.js) are keyed by the core's names", async () => {

@@ -99,3 +99,18 @@ async function derived(mesher: Mesher): Promise<void> {
   void six, void rays, void text;
 }
 void derived;
+
+// Issue 45, curves: arcs and cubic Béziers, and their tolerance.
+function curved(mesher: Mesher): void {
+  const plc: Plc = {
+    points: [0, 0, 1, 0, 0, 1],
+    segments: [0, 1, 2, 0],
+    curves: [{ type: 'arc', from: 1, to: 2, center: [0, 0], marker: 2 }, { type: 'bezier', from: 2, to: 1, controls: [0.5, 2, 2, 0.5] }],
+  };
+  void mesher.triangulate(plc, { curveTolerance: 1e-3 });
+  // @ts-expect-error an arc has a center, not controls
+  mesher.triangulate({ points: [], curves: [{ type: 'arc', from: 0, to: 1, controls: [0, 0, 1, 1] }] });
+  // @ts-expect-error a curve's type is 'arc' or 'bezier'
+  mesher.triangulate({ points: [], curves: [{ type: 'spline', from: 0, to: 1, center: [0, 0] }] });
+}
+void curved;

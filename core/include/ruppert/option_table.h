@@ -51,7 +51,10 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
   X(noSegmentSteiner, "--no-segment-steiner", false, 0, 0, "", "no new vertex on any segment (Triangle's -YY)") \
   X(jettison, "-j|--jettison", false, 0, 0, "",                                                          \
     "leave unused input points (merged duplicates, points outside the domain) out of the output; the "    \
-    "others are renumbered in order")
+    "others are renumbered in order")                                                                    \
+  X(curveTolerance, "--curve-tolerance T", 0.0, 0, kUnbounded, "length",                                 \
+    "largest distance from a boundary edge to the curve it follows (JSON curves; default: 1e-3 of the "   \
+    "input's bounding-box diagonal)")
 
 // Outputs derived from the mesh after triangulate() (ruppert.h's addQuadraticNodes, voronoiDiagram):
 // the package's options and the CLI's flags, not Options members.

@@ -101,9 +101,32 @@ struct Region {
   double maxArea = 0;       // <= 0: no area bound in this region; otherwise an upper bound
 };
 
+// A curved boundary piece between two input points (issue 45). It bounds regions, holes and the
+// domain exactly as a segment does; refinement splits it at points on the curve (its parameter
+// midpoint, rounded to the nearest doubles), so every vertex of its pieces lies on the curve.
+enum class CurveType : std::uint8_t {
+  Arc = 0,     // counter-clockwise from `from` to `to` around `center`; both points at the same
+               // distance from it (within a relative 1e-9: rounding); a full circle is two arcs
+  Bezier = 1,  // the cubic from `from` to `to` with the two inner control points `controls`
+};
+inline constexpr const char* kCurveTypeNames[] = {"arc", "bezier"};  // Curve's "type" in JSON and JavaScript
+static_assert(detail::countOf(kCurveTypeNames) == 1 + static_cast<std::size_t>(CurveType::Bezier));
+constexpr const char* enumName(CurveType t) { return detail::nameIn(kCurveTypeNames, t); }
+
+struct Curve {
+  CurveType type = CurveType::Arc;
+  std::uint32_t from = 0, to = 0;   // point indices (distinct)
+  double center[2] = {0, 0};        // Arc
+  double controls[4] = {0, 0, 0, 0};  // Bezier: x1, y1, x2, y2
+  std::int32_t marker = 0;          // boundary marker of its pieces, as Plc::segmentMarkers
+};
+
 struct Plc {
   std::vector<double> points;           // x0, y0, x1, y1, ...
   std::vector<std::uint32_t> segments;  // a0, b0, a1, b1, ... indices into points
+  // Curved boundaries (Curve above). Their pieces are the mesh's subsegments like segments' pieces,
+  // with Mesh::segmentIds = segments.size() / 2 + the curve's index. Not with `triangles`.
+  std::vector<Curve> curves;
   std::vector<double> holes;            // hole seeds: hx0, hy0, hx1, hy1, ...
   std::vector<Region> regions;
   // Boundary markers (Triangle's): tags a solver uses to find its boundary conditions; may be empty
@@ -227,6 +250,10 @@ struct Options {
   bool noSegmentSteiner = option::noSegmentSteiner::fallback;
   // Leave Unused input points out of Mesh::points (-j), see Mesh::inputToOutput.
   bool jettison = option::jettison::fallback;
+  // Plc::curves: the largest distance from a boundary edge to the curve it follows (user units);
+  // <= 0: 1e-3 of the diagonal of the input points' bounding box. Pieces are split until each is
+  // within it.
+  double curveTolerance = option::curveTolerance::fallback;
 };
 // Every option of the table is a member of the table's type (the callbacks: a member at all).
 #define RUPPERT_OPTION_IS_MEMBER_(KEY, ...) \
@@ -385,7 +412,8 @@ struct Mesh {
   std::vector<std::uint32_t> triangles;   // 3 vertex indices per triangle, CCW
   std::vector<std::int32_t> neighbors;    // 3 per triangle, see conventions; kNoNeighbor on the boundary
   std::vector<std::uint32_t> segments;    // 2 per subsegment: every input segment is a chain of these
-  std::vector<std::int32_t> segmentIds;   // 1 per subsegment: input segment index, or kNoInputSegment
+  std::vector<std::int32_t> segmentIds;   // 1 per subsegment: input segment index, segments.size()/2
+                                          // + c for a piece of Plc::curves[c], or kNoInputSegment
   std::vector<std::uint8_t> vertexKinds;  // 1 per point: VertexKind
   std::vector<double> triangleAttributes; // 1 per triangle: its region's attribute (0 outside regions)
   std::vector<std::int32_t> pointMarkers; // 1 per point: boundary markers (see above)
@@ -437,7 +465,9 @@ Plc readPoly(std::istream& in, const std::string& name = "<poly>");
 Plc readNode(std::istream& in, const std::string& name = "<node>");
 // JSON: { "points": [x0,y0,...], "segments": [a0,b0,...], "holes": [x,y,...],
 //         "regions": [{"x":..,"y":..,"attribute":..,"maxArea":..}],
-//         "pointMarkers": [...], "segmentMarkers": [...], "pointAttributes": [...], "attributesPerPoint": k }
+//         "pointMarkers": [...], "segmentMarkers": [...], "pointAttributes": [...], "attributesPerPoint": k,
+//         "curves": [{"type": "arc", "from": i, "to": j, "center": [x, y], "marker": m},
+//                    {"type": "bezier", "from": i, "to": j, "controls": [x1, y1, x2, y2]}] }
 // (markers one per point / segment; attributes k per point, k defaulting to their count / points)
 Plc readJson(std::istream& in, const std::string& name = "<json>");
 // By extension: .poly, .node, .json or .geojson. Throws IoError if unreadable.

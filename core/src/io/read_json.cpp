@@ -3,7 +3,7 @@
 //     "regions": [{"x":..,"y":..,"attribute":..,"maxArea":..}] }
 // "points" is required; the rest are optional, "pointMarkers" and "segmentMarkers" (one integer per
 // point / segment), "pointAttributes" (attributesPerPoint numbers per point) and "attributesPerPoint"
-// among them. Unknown keys (and "triangles", which our own writer emits) are parsed for syntax and
+// among them, and "curves" (see curves() below). Unknown keys (and "triangles", which our own writer emits) are parsed for syntax and
 // ignored, so a written mesh reads back as its PLC.
 //
 // The parser is a small recursive-descent reader of RFC 8259 JSON that fills the Plc directly instead
@@ -12,6 +12,7 @@
 // offending value ("points[7] is not a number") and its line and column. Text that is not JSON is a
 // ParseError; JSON of the wrong shape (odd-length arrays, non-integer indices, wrong types, missing
 // keys) is MalformedInput, as ruppert.h defines it; a segment naming a missing point is IndexOutOfRange.
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -51,10 +52,10 @@ class JsonReader {
     if (p_ == end_) fail(ErrorCode::ParseError, "the input is empty; expected a JSON object");
     if (*p_ != '{') fail(ErrorCode::MalformedInput, "the top level must be an object ({ \"points\": [...] })");
     Plc plc;
-    constexpr int kKeys = 8;
+    constexpr int kKeys = 9;
     bool seen[kKeys] = {};
-    static const char* const kKnown[kKeys] = {"points", "segments", "holes", "regions",
-                                              "pointMarkers", "segmentMarkers", "pointAttributes", "attributesPerPoint"};
+    static const char* const kKnown[kKeys] = {"points", "segments", "holes", "regions", "pointMarkers",
+                                              "segmentMarkers", "pointAttributes", "attributesPerPoint", "curves"};
     double attributesPerPoint = -1;  // -1: not given
     members(1, [&](const std::string& key, int depth) {
       for (int k = 0; k < kKeys; ++k) {
@@ -69,6 +70,7 @@ class JsonReader {
           case 4: integers(key, depth, plc.pointMarkers, kNotMarker); return;
           case 5: integers(key, depth, plc.segmentMarkers, kNotMarker); return;
           case 6: numbers(key, depth, plc.pointAttributes); return;
+          case 8: curves(key, depth, plc.curves); return;
           default: attributesPerPoint = count(key); return;
         }
       }
@@ -392,6 +394,56 @@ class JsonReader {
                                                     std::to_string(n) + " points" +
                                                     (attributesPerPoint >= 0 ? " with attributesPerPoint = " + std::to_string(k) : ""));
     plc.attributesPerPoint = static_cast<std::uint32_t>(k);
+  }
+
+  // One whole number in [lo, hi]: a curve's point index or marker.
+  double wholeNumber(const std::string& path, double lo, double hi) {
+    const char* start = p_;
+    const double v = requireNumber(path);
+    if (v != std::floor(v) || v < lo || v > hi)
+      failAt(start, v > hi && lo == 0 ? ErrorCode::IndexOutOfRange : ErrorCode::MalformedInput,
+             path + " is not " + (lo == 0 ? "a point index" : "a 32-bit integer marker"));
+    return v;
+  }
+
+  // "curves": [{"type": "arc", "from": i, "to": j, "center": [x, y], "marker": m},
+  //            {"type": "bezier", "from": i, "to": j, "controls": [x1, y1, x2, y2]}]
+  // (ruppert.h's Curve; the points a curve names are checked with the rest of the input).
+  void curves(const std::string& key, int depth, std::vector<Curve>& out) {
+    requireArray(key);
+    elements(depth, key, [&](const std::string& path, int inner) {
+      if (p_ == end_ || *p_ != '{') fail(ErrorCode::MalformedInput, path + " is not an object ({\"type\": \"arc\", ...})");
+      const char* start = p_;
+      Curve curve;
+      std::string type;
+      bool from = false, to = false;
+      std::vector<double> center, controls;
+      members(inner, [&](const std::string& field, int valueDepth) {
+        const std::string fieldPath = path + "." + field;
+        if (field == "type") {
+          if (p_ == end_ || *p_ != '"') fail(ErrorCode::MalformedInput, fieldPath + " is not a string");
+          type = string();
+        } else if (field == "from" || field == "to") {
+          (field == "from" ? from : to) = true;
+          (field == "from" ? curve.from : curve.to) = static_cast<std::uint32_t>(wholeNumber(fieldPath, 0, 4294967295.0));
+        } else if (field == "center" || field == "controls") {
+          numbers(fieldPath, valueDepth, field == "center" ? center : controls);
+        } else if (field == "marker") {
+          curve.marker = static_cast<std::int32_t>(wholeNumber(fieldPath, -2147483648.0, 2147483647.0));
+        } else {
+          skipValue(valueDepth);
+        }
+      });
+      const bool arc = type == "arc";
+      if (!arc && type != "bezier") failAt(start, ErrorCode::MalformedInput, path + ".type must be \"arc\" or \"bezier\", not \"" + type + "\"");
+      curve.type = arc ? CurveType::Arc : CurveType::Bezier;
+      if (!from || !to) failAt(start, ErrorCode::MalformedInput, path + " has no \"" + (from ? "to" : "from") + "\"");
+      std::vector<double>& values = arc ? center : controls;
+      if (values.size() != (arc ? 2u : 4u))
+        failAt(start, ErrorCode::MalformedInput, path + (arc ? " needs \"center\": [x, y]" : " needs \"controls\": [x1, y1, x2, y2]"));
+      std::copy(values.begin(), values.end(), arc ? curve.center : curve.controls);
+      out.push_back(curve);
+    });
   }
 
   void regions(const std::string& key, int depth, std::vector<Region>& out) {

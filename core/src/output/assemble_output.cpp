@@ -66,7 +66,9 @@ void writeVertices(const MeshState& m, std::uint32_t outVertices, Mesh& mesh) {
     mesh.points[2 * std::size_t(i)] = plc.points[2 * std::size_t(i)];
     mesh.points[2 * std::size_t(i) + 1] = plc.points[2 * std::size_t(i) + 1];
     const bool used = m.input.inputIndex[v] == i && t.vtri[v] != kNone;
-    mesh.vertexKinds[i] = static_cast<std::uint8_t>(used ? VertexKind::Input : VertexKind::Unused);
+    // Points made on curves (cdt/curves.h) are splits of their curves.
+    const VertexKind own = i >= m.curves->firstPoint ? VertexKind::SegmentSplit : VertexKind::Input;
+    mesh.vertexKinds[i] = static_cast<std::uint8_t>(used ? own : VertexKind::Unused);
   }
   for (std::uint32_t v = m.inputCount; v < t.vertexCount(); ++v) {
     const std::uint32_t o = outIndex(v);
@@ -98,7 +100,7 @@ std::vector<std::uint32_t> scanTriangles(MeshState& m, Mesh& mesh) {
       if (t.con[h] != kFree && (g == kNone || h < g)) {
         mesh.segments.push_back(outIndex(t.origin(h)));
         mesh.segments.push_back(outIndex(t.dest(h)));
-        mesh.segmentIds.push_back(t.con[h] >= 0 ? t.con[h] : kNoInputSegment);
+        mesh.segmentIds.push_back(t.con[h] >= 0 ? m.curves->outputId(t.con[h]) : kNoInputSegment);
       }
     }
     angles.add(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2]));

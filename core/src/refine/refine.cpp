@@ -56,7 +56,8 @@ RefineOutcome Refiner::run() {
       const EdgeRef e = encroached_.back();
       encroached_.pop_back();
       const std::uint32_t h = edgeOf(e);
-      if (h == kNone || t_.con[h] == kFree || !isEncroached(h)) continue;
+      if (h == kNone || t_.con[h] == kFree) continue;
+      if (!isEncroached(h) && !(t_.con[h] >= mesh_.curveFirst && curvePieceTooCoarse(h))) continue;
       splitSubsegment(h, nullptr, nullptr);
       stop = outOfBudget();
     }

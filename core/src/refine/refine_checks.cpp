@@ -23,7 +23,8 @@ bool Refiner::isEncroached(std::uint32_t h) const {
 
 void Refiner::checkSubsegment(std::uint32_t h) {
   if (t_.con[h] == kFree) return;
-  if (mesh_.encroachesEdge(t_.pt(t_.apex(h)), h)) encroached_.push_back({t_.origin(h), t_.dest(h), h});
+  if (mesh_.encroachesEdge(t_.pt(t_.apex(h)), h) || (t_.con[h] >= mesh_.curveFirst && curvePieceTooCoarse(h)))
+    encroached_.push_back({t_.origin(h), t_.dest(h), h});
 }
 
 // The half-edge for a queued edge: the remembered one if it still is that edge, else a search.
@@ -172,10 +173,15 @@ bool Refiner::seditious(std::uint32_t s, const TriangleShape& sh) const {
   const std::uint32_t h = 3 * s + static_cast<std::uint32_t>(sh.shortestEdge);
   const std::uint32_t u = t_.origin(h), w = t_.dest(h);
   if (m_.kind[u] != VertexKind::SegmentSplit || m_.kind[w] != VertexKind::SegmentSplit) return false;
-  const std::int32_t su = m_.onSegment[u], sw = m_.onSegment[w];
+  // Pieces of one curve count as one segment (CurvePieces::outputId numbers curves after segments).
+  const std::int32_t su = m_.curves->outputId(m_.onSegment[u]), sw = m_.curves->outputId(m_.onSegment[w]);
   if (su == -1 || sw == -1 || su == sw) return false;
-  // An input segment's ends, or a hull edge's (which stands for a segment: --convex-hull).
+  // An input segment's ends, a curve's, or a hull edge's (which stands for a segment: --convex-hull).
   auto end = [&](std::int32_t code, int e) {
+    if (code >= m_.curves->first) {
+      const Curve& c = m_.plc->curves[static_cast<std::size_t>(code - m_.curves->first)];
+      return m_.input.representative[e == 0 ? c.from : c.to];
+    }
     return code >= 0 ? m_.segmentEnd(static_cast<std::size_t>(code), e) : m_.hullEdgeEnds[static_cast<std::size_t>(-2 - code)][e];
   };
   const std::uint32_t a0 = end(su, 0), a1 = end(su, 1);

@@ -45,9 +45,8 @@ bool Refiner::placeAwayFromForbidden(const BadTriangle& bt, const double* const*
   return false;
 }
 
-// Where subsegment h from pa to pb is split (§6.2, §6.6), into xy; false if no point can be kept.
-bool Refiner::subsegmentSplitPoint(std::uint32_t h, const double* pa, const double* pb, std::uint32_t a, std::uint32_t b, double xy[2]) const {
-  const double len = dist(pa, pb);
+// Where along subsegment a-b of length len it is split, as a fraction from a (§6.2, §6.6).
+double Refiner::splitFraction(std::uint32_t a, std::uint32_t b, double len) const {
   // Concentric shells: measured from an acute corner, the piece next to it gets a power-of-two
   // length in (len/3, 2len/3], so equal pieces on neighbouring segments do not encroach each other.
   // Between two corners, one under kSeditiousAngle and sharper than the other, the shells are
@@ -65,6 +64,12 @@ bool Refiner::subsegmentSplitPoint(std::uint32_t h, const double* pa, const doub
     const double d = std::exp2(std::floor(std::log2(2.0 * len / 3.0)));
     f = ca ? d / len : 1.0 - d / len;
   }
+  return f;
+}
+
+// Where subsegment h from pa to pb is split (§6.2, §6.6), into xy; false if no point can be kept.
+bool Refiner::subsegmentSplitPoint(std::uint32_t h, const double* pa, const double* pb, std::uint32_t a, std::uint32_t b, double xy[2]) const {
+  const double len = dist(pa, pb), f = splitFraction(a, b, len);
   double x = pa[0] + f * (pb[0] - pa[0]), y = pa[1] + f * (pb[1] - pa[1]);
   // On a subsegment with no triangle beyond it, a split point rounded to the outside can land in
   // another part of the domain across an exterior sliver thinner than the rounding (found by
@@ -107,6 +112,7 @@ bool Refiner::splitSubsegment(std::uint32_t h, const BadTriangle* bt, const doub
     refusedSplit_ = true;
     return false;
   }
+  if (t_.con[h] >= mesh_.curveFirst) return splitCurvePiece(h, bt, rejected);
   const std::uint32_t a = t_.origin(h), b = t_.dest(h);
   // Copies: adding a vertex below may reallocate the coordinate array.
   const double pa[2] = {t_.xy[2 * a], t_.xy[2 * a + 1]};
@@ -116,6 +122,17 @@ bool Refiner::splitSubsegment(std::uint32_t h, const BadTriangle* bt, const doub
     ++floorHits_;
     return false;
   }
+  const std::int32_t segment = t_.con[h] >= 0 ? t_.con[h] : t_.con[h] == kHullEdge ? hullEdgeOf(a, b) : -1;
+  return insertOnSubsegment(h, split, segment, bt, rejected) != kNone;
+}
+
+// Insert a vertex at `split`, on subsegment h or within rounding of it, with onSegment code
+// `segment`; the trace as splitSubsegment's. Its id, or kNone if it cannot be placed.
+std::uint32_t Refiner::insertOnSubsegment(std::uint32_t h, const double* split, std::int32_t segment, const BadTriangle* bt,
+                                          const double* rejected) {
+  const std::uint32_t a = t_.origin(h), b = t_.dest(h);
+  const double pa[2] = {t_.xy[2 * a], t_.xy[2 * a + 1]};
+  const double pb[2] = {t_.xy[2 * b], t_.xy[2 * b + 1]};
   Location loc;
   loc.kind = Location::OnEdge;
   loc.tri = h / 3;
@@ -128,10 +145,9 @@ bool Refiner::splitSubsegment(std::uint32_t h, const BadTriangle* bt, const doub
   t_.cavity(split, loc, splitTris_, splitBoundary_);
   if (mesh_.tooCloseToCavity(split, splitBoundary_)) {
     ++floorHits_;
-    return false;
+    return kNone;
   }
-  if (!mayInsert()) return false;
-  const std::int32_t segment = t_.con[h] >= 0 ? t_.con[h] : t_.con[h] == kHullEdge ? hullEdgeOf(a, b) : -1;
+  if (!mayInsert()) return kNone;
   const double x = split[0], y = split[1];
   const std::uint32_t v = m_.addVertex(x, y, VertexKind::SegmentSplit, segment);
   corner_.push_back(0);
@@ -139,16 +155,19 @@ bool Refiner::splitSubsegment(std::uint32_t h, const BadTriangle* bt, const doub
     // Not placeable: the new vertex stays unused (kind Unused) so output stays consistent.
     m_.kind[v] = VertexKind::Unused;
     ++floorHits_;
-    return false;
+    return kNone;
   }
-  if (o_.trace) {
-    Event e;
-    e.kind = rejected ? EventKind::Rejected : EventKind::SegmentSplit;
-    e.vertex = v, e.x = x, e.y = y, e.a = a, e.b = b;
-    if (rejected && bt) e.t0 = bt->a, e.t1 = bt->b, e.t2 = bt->c, e.cx = rejected[0], e.cy = rejected[1];
-    out_.events.push_back(e);
-  }
-  return true;
+  traceSplit(v, a, b, bt, rejected);
+  return v;
+}
+
+void Refiner::traceSplit(std::uint32_t v, std::uint32_t a, std::uint32_t b, const BadTriangle* bt, const double* rejected) {
+  if (!o_.trace) return;
+  Event e;
+  e.kind = rejected ? EventKind::Rejected : EventKind::SegmentSplit;
+  e.vertex = v, e.x = t_.xy[2 * v], e.y = t_.xy[2 * v + 1], e.a = a, e.b = b;
+  if (rejected && bt) e.t0 = bt->a, e.t1 = bt->b, e.t2 = bt->c, e.cx = rejected[0], e.cy = rejected[1];
+  out_.events.push_back(e);
 }
 
 // The first choice of point for a bad triangle: its circumcenter, or for a skinny one (unless
@@ -292,7 +311,9 @@ bool Refiner::mayMove(std::uint32_t v) {
 }
 
 bool Refiner::slideOnSegment(std::uint32_t v, const BadTriangle& bt) {
-  if (!plan_.slide || v < m_.inputCount || m_.kind[v] != VertexKind::SegmentSplit) return false;
+  // A vertex on a curve stays where it is: sliding moves along a chord, off the curve.
+  if (!plan_.slide || v < m_.inputCount || m_.kind[v] != VertexKind::SegmentSplit || m_.onSegment[v] >= mesh_.curveFirst)
+    return false;
   std::uint32_t ends[2];
   double x[2];
   if (!mayMove(v) || !segmentVertexFan(t_, v, slideStar_, ends) ||

@@ -125,6 +125,7 @@ class Refiner {
         mesh_(m.tri, m.input, sin2Theta_, lensCos2For(o_, theta_)),
         petal_(o_.placement == Placement::Petal ? theta_ : 0),
         optimal_(theta_, plan.belowBoundGain) {
+    mesh_.curveFirst = m.curves->first;
     bad_.setLargestFirst(plan.largestFirst);
     reserveScratch();
   }
@@ -265,6 +266,8 @@ class Refiner {
   // flipped_ for re-checking.
   void mendDelaunay();
 
+  // Where along subsegment a-b of length len it is split, as a fraction from a (§6.2, §6.6).
+  double splitFraction(std::uint32_t a, std::uint32_t b, double len) const;
   // Where subsegment h from pa to pb is split (§6.2, §6.6), into xy; false if no point can be kept.
   bool subsegmentSplitPoint(std::uint32_t h, const double* pa, const double* pb, std::uint32_t a, std::uint32_t b,
                             double xy[2]) const;
@@ -273,6 +276,27 @@ class Refiner {
   // and that point, if that is why, for the trace. False if it cannot be split (precision floor).
   std::int32_t hullEdgeOf(std::uint32_t a, std::uint32_t b);
   bool splitSubsegment(std::uint32_t h, const BadTriangle* bt, const double* rejected);
+  // Insert a vertex at `split`, on subsegment h or within rounding of it, with onSegment code
+  // `segment`. Its id, or kNone if it cannot be placed (then counted as a precision-floor hit).
+  std::uint32_t insertOnSubsegment(std::uint32_t h, const double* split, std::int32_t segment, const BadTriangle* bt,
+                                   const double* rejected);
+  void traceSplit(std::uint32_t v, std::uint32_t a, std::uint32_t b, const BadTriangle* bt, const double* rejected);
+
+  // ---- curves (refine_curve.cpp; cdt/curves.h) ------------------------------------------------
+  // Whether curve piece h must be split though nothing encroaches it: farther from its curve than
+  // the tolerance, or not within its chord's diametral disk.
+  [[gnu::noinline]] bool curvePieceTooCoarse(std::uint32_t h) const;
+  // Vertex v's parameter on the curve of piece `segment` (one of its ends, or a split of it).
+  double curveParam(std::uint32_t v, std::int32_t segment) const;
+  // Split curve piece h at its curve's point (§6.2's midpoint, or a shell, in the parameter).
+  [[gnu::noinline]] bool splitCurvePiece(std::uint32_t h, const BadTriangle* bt, const double* rejected);
+  // The split point p lies off the chord u-w, on its left: insert it with the triangle (u, w, p)
+  // between chord and curve, then hand that triangle to the chord's other side (or remove it where
+  // there is none) so that u-p-w is the boundary. v: p's vertex, already added.
+  bool insertBesideChord(std::uint32_t v, std::uint32_t u, std::uint32_t w, std::uint32_t hs, std::uint32_t ho);
+  void moveBoundaryToCurve(std::uint32_t x, std::int32_t segment, std::uint32_t ho);
+  // Copies slot `from`'s region data to slot `to`.
+  void copyRegionData(std::uint32_t from, std::uint32_t to);
 
   // The first choice of point for a bad triangle: its circumcenter, or for a skinny one (unless
   // Placement::Circumcenter) the off-center when that is nearer. False: no point to trust.

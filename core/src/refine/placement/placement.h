@@ -38,6 +38,9 @@ class MeshAccess {
   const PreparedInput& input;
   double sin2Theta;  // sin^2 of the angle bound, slightly lowered against rounding
   double lensCos2;   // encroachment rule, as in encroaches() (0: closed diametral disk)
+  // Subsegments carrying segment indices from here on are curve pieces (cdt/curves.h), tested
+  // against the closed diametral disk, which holds the sliver between a piece and its curve.
+  std::int32_t curveFirst = INT32_MAX;
 
   MeshAccess(const Triangulation& t, const PreparedInput& in, double sin2, double lens)
       : tri(t), input(in), sin2Theta(sin2), lensCos2(lens) {}
@@ -49,7 +52,7 @@ class MeshAccess {
   bool representable(const double* p) const;
   // Whether x encroaches the subsegment or edge h.
   bool encroachesEdge(const double* x, std::uint32_t h) const {
-    return encroaches(x, tri.pt(tri.origin(h)), tri.pt(tri.dest(h)), lensCos2);
+    return encroaches(x, tri.pt(tri.origin(h)), tri.pt(tri.dest(h)), tri.con[h] >= curveFirst ? 0 : lensCos2);
   }
   // Whether a vertex of the cavity boundary lies within the length floor of x (the nearest existing
   // vertex to a new one is always on the boundary of its cavity).

@@ -1,0 +1,252 @@
+// Curved boundaries (curves.h): geometry of arcs and cubic Béziers, the input checks naming the
+// curve, the cutting into initial pieces, and the check that no repair touched a piece.
+#include "cdt/curves.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "cdt/prepare_input.h"
+#include "cold_code.h"
+
+// Curves are rare and their pieces few: the whole file is compiled for size (cold_code.h).
+RUPPERT_COLD_BEGIN
+
+namespace ruppert::detail {
+
+namespace {
+
+constexpr double kTwoPi = 6.28318530717958647692;
+constexpr double kArcPieceTurn = kTwoPi / 6;      // 60 degrees: well inside the chord's diametral disk
+constexpr std::size_t kMaxPieces = std::size_t(1) << 22;
+constexpr int kMaxBisections = 40;
+
+// Bernstein form of a cubic's coordinate k (0: x, 1: y) at t.
+double cubic(const double* p, int k, double t) {
+  const double s = 1 - t;
+  return s * s * s * p[k] + 3 * s * s * t * p[2 + k] + 3 * s * t * t * p[4 + k] + t * t * t * p[6 + k];
+}
+
+double cubicDerivative(const double* p, int k, double t) {
+  const double s = 1 - t;
+  return 3 * (s * s * (p[2 + k] - p[k]) + 2 * s * t * (p[4 + k] - p[2 + k]) + t * t * (p[6 + k] - p[4 + k]));
+}
+
+// Distance of q from the line through a and b (from a when they coincide).
+double distanceToChord(const double* a, const double* b, const double* q) {
+  const double dx = b[0] - a[0], dy = b[1] - a[1], len = std::sqrt(dx * dx + dy * dy);
+  if (len == 0) return std::sqrt((q[0] - a[0]) * (q[0] - a[0]) + (q[1] - a[1]) * (q[1] - a[1]));
+  return std::fabs(dx * (q[1] - a[1]) - dy * (q[0] - a[0])) / len;
+}
+
+}  // namespace
+
+void CurveShape::point(double t, double out[2]) const {
+  if (type == CurveType::Arc) {
+    const double angle = c[3] + t * c[4];
+    out[0] = c[0] + c[2] * std::cos(angle), out[1] = c[1] + c[2] * std::sin(angle);
+    return;
+  }
+  out[0] = cubic(c, 0, t), out[1] = cubic(c, 1, t);
+}
+
+void CurveShape::pieceControls(double t0, double t1, double q[8]) const {
+  const double third = (t1 - t0) / 3;
+  point(t0, q), point(t1, q + 6);
+  q[2] = q[0] + third * cubicDerivative(c, 0, t0), q[3] = q[1] + third * cubicDerivative(c, 1, t0);
+  q[4] = q[6] - third * cubicDerivative(c, 0, t1), q[5] = q[7] - third * cubicDerivative(c, 1, t1);
+}
+
+double CurveShape::chordError(double t0, double t1) const {
+  if (type == CurveType::Arc) return c[2] * (1 - std::cos(std::fabs(t1 - t0) * c[4] / 2));
+  double q[8];
+  pieceControls(t0, t1, q);
+  return std::max(distanceToChord(q, q + 6, q + 2), distanceToChord(q, q + 6, q + 4));
+}
+
+bool CurveShape::withinDisk(double t0, double t1) const {
+  if (type == CurveType::Arc) return std::fabs(t1 - t0) * c[4] <= kArcPieceTurn * (1 + 1e-9);
+  double q[8];
+  pieceControls(t0, t1, q);
+  // A control point sees the chord at 90 degrees or more.
+  auto inDisk = [&](const double* p) { return (q[0] - p[0]) * (q[6] - p[0]) + (q[1] - p[1]) * (q[7] - p[1]) <= 0; };
+  return inDisk(q + 2) && inDisk(q + 4);
+}
+
+void CurveShape::scale(double factor) {
+  if (type == CurveType::Arc) {
+    c[0] *= factor, c[1] *= factor, c[2] *= factor;
+    return;
+  }
+  for (double& v : c) v *= factor;
+}
+
+namespace {
+
+[[noreturn]] void fail(ErrorCode code, std::size_t curve, const std::string& what) {
+  throw Error(code, "curve " + std::to_string(curve) + ": " + what);
+}
+
+// Curve i's shape in user coordinates, after checking what it refers to.
+CurveShape shapeOf(const Plc& plc, std::size_t i) {
+  const Curve& cv = plc.curves[i];
+  const std::size_t n = plc.points.size() / 2;
+  if (cv.type != CurveType::Arc && cv.type != CurveType::Bezier) fail(ErrorCode::MalformedInput, i, "unknown type (not 'arc' or 'bezier')");
+  for (auto [name, index] : {std::pair{"from", cv.from}, std::pair{"to", cv.to}})
+    if (index >= n)
+      fail(ErrorCode::IndexOutOfRange, i, std::string(name) + " = " + std::to_string(index) + " is not a point index (the input has " + std::to_string(n) + " points)");
+  if (cv.from == cv.to) fail(ErrorCode::MalformedInput, i, "from and to are the same point; a closed curve is two curves");
+  const double* a = &plc.points[2 * std::size_t(cv.from)];
+  const double* b = &plc.points[2 * std::size_t(cv.to)];
+  CurveShape s;
+  s.type = cv.type;
+  if (cv.type == CurveType::Bezier) {
+    for (double v : cv.controls)
+      if (!std::isfinite(v)) fail(ErrorCode::NonFiniteCoordinate, i, "a control coordinate is " + formatNumber(v));
+    const double c[8] = {a[0], a[1], cv.controls[0], cv.controls[1], cv.controls[2], cv.controls[3], b[0], b[1]};
+    std::copy(c, c + 8, s.c);
+    return s;
+  }
+  const double cx = cv.center[0], cy = cv.center[1];
+  if (!std::isfinite(cx) || !std::isfinite(cy)) fail(ErrorCode::NonFiniteCoordinate, i, "the center is not finite");
+  const double r0 = std::hypot(a[0] - cx, a[1] - cy), r1 = std::hypot(b[0] - cx, b[1] - cy);
+  if (!(r0 > 0) || !std::isfinite(r0) || std::fabs(r0 - r1) > 1e-9 * std::max(r0, r1))
+    fail(ErrorCode::MalformedInput, i, "from and to lie at distances " + formatNumber(r0) + " and " + formatNumber(r1) +
+                                           " from the center, which differ beyond rounding");
+  const double start = std::atan2(a[1] - cy, a[0] - cx);
+  double sweep = std::atan2(b[1] - cy, b[0] - cx) - start;
+  if (sweep <= 0) sweep += kTwoPi;
+  const double c[5] = {cx, cy, r0, start, sweep};
+  std::copy(c, c + 5, s.c);
+  return s;
+}
+
+// The parameters cutting curve s into pieces within `tolerance` and their chords' disks.
+std::vector<double> cutPoints(const CurveShape& s, double tolerance, std::size_t i) {
+  std::vector<double> t{0};
+  if (s.type == CurveType::Arc) {
+    const double r = s.c[2], sweep = s.c[4];
+    // The turn whose sagitta r (1 - cos(turn / 2)) is the tolerance (atan2, which the core links
+    // already, for acos).
+    const double c = 1 - tolerance / r;
+    const double turnWithin = tolerance < 2 * r ? 2 * std::atan2(std::sqrt(1 - c * c), c) : kTwoPi;
+    const double n = std::ceil(std::max(sweep / kArcPieceTurn, sweep / turnWithin) * (1 + 1e-12));
+    if (!(n <= double(kMaxPieces))) fail(ErrorCode::TooLarge, i, "the curve tolerance asks for more than 2^22 pieces");
+    for (double k = 1; k < n; ++k) t.push_back(k / n);
+    t.push_back(1);
+    return t;
+  }
+  // Bisection, depth first from the start: the parameters come out in order.
+  std::vector<std::pair<double, int>> ends{{1.0, 0}};
+  double from = 0;
+  while (!ends.empty()) {
+    const auto [to, depth] = ends.back();
+    if (s.chordError(from, to) <= tolerance && s.withinDisk(from, to)) {
+      t.push_back(to), from = to, ends.pop_back();
+      continue;
+    }
+    if (depth == kMaxBisections || t.size() + ends.size() > kMaxPieces)
+      fail(ErrorCode::MalformedInput, i, "its pieces do not flatten (a cusp, or a tolerance too small for it)");
+    ends.back().second = depth + 1;
+    ends.push_back({(from + to) / 2, depth + 1});
+  }
+  return t;
+}
+
+double defaultTolerance(const Plc& plc) {
+  double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
+  for (std::size_t k = 0; k < plc.points.size(); ++k)
+    lo[k % 2] = std::min(lo[k % 2], plc.points[k]), hi[k % 2] = std::max(hi[k % 2], plc.points[k]);
+  return 1e-3 * std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
+}
+
+// Curve i's pieces into out (points and segments) and pieces.
+void addPieces(Plc& out, const CurveShape& s, const std::vector<double>& t, std::size_t i, CurvePieces& pieces) {
+  const Curve& cv = out.curves[i];
+  const std::uint32_t k = out.attributesPerPoint;
+  std::uint32_t previous = cv.from;
+  for (std::size_t j = 1; j < t.size(); ++j) {
+    std::uint32_t next = cv.to;
+    if (j + 1 < t.size()) {
+      double p[2];
+      s.point(t[j], p);
+      next = static_cast<std::uint32_t>(out.points.size() / 2);
+      out.points.push_back(p[0]), out.points.push_back(p[1]);
+      if (!out.pointMarkers.empty()) out.pointMarkers.push_back(cv.marker);
+      // Attributes vary linearly in the parameter between the curve's ends.
+      for (std::uint32_t a = 0; a < k && !out.pointAttributes.empty(); ++a)
+        out.pointAttributes.push_back((1 - t[j]) * out.pointAttributes[std::size_t(cv.from) * k + a] +
+                                      t[j] * out.pointAttributes[std::size_t(cv.to) * k + a]);
+    }
+    out.segments.push_back(previous), out.segments.push_back(next);
+    pieces.curveOf.push_back(static_cast<std::uint32_t>(i));
+    pieces.t0.push_back(t[j - 1]), pieces.t1.push_back(t[j]);
+    previous = next;
+  }
+}
+
+}  // namespace
+
+Plc withCurvePieces(const Plc& plc, const Options& options, CurvePieces& pieces) {
+  if (!plc.triangles.empty()) throw Error(ErrorCode::MalformedInput, "curves cannot be given with triangles (refining a mesh)");
+  if (std::isnan(options.curveTolerance) || std::isinf(options.curveTolerance))
+    throw Error(ErrorCode::InvalidOption, "curveTolerance must be a finite number, not " + formatNumber(options.curveTolerance));
+  const double tolerance = options.curveTolerance > 0 ? options.curveTolerance : defaultTolerance(plc);
+  Plc out = plc;
+  const std::size_t userSegments = plc.segments.size() / 2;
+  pieces.first = static_cast<std::int32_t>(userSegments);
+  pieces.firstPoint = static_cast<std::uint32_t>(plc.points.size() / 2);
+  pieces.tolerance = tolerance;
+  bool marked = false;
+  for (std::size_t i = 0; i < plc.curves.size(); ++i) {
+    pieces.shapes.push_back(shapeOf(plc, i));
+    addPieces(out, pieces.shapes.back(), cutPoints(pieces.shapes.back(), tolerance, i), i, pieces);
+    marked = marked || plc.curves[i].marker != 0;
+  }
+  if (marked || !plc.segmentMarkers.empty()) {
+    out.segmentMarkers.resize(userSegments, 0);
+    for (const Curve& cv : plc.curves) out.segmentMarkers.push_back(cv.marker);
+  }
+  return out;
+}
+
+void scaleCurves(CurvePieces& pieces, const PreparedInput& input) {
+  const double factor = input.toInternal(1.0);
+  for (CurveShape& s : pieces.shapes) s.scale(factor);
+  pieces.tolerance = input.toInternal(pieces.tolerance);
+}
+
+void rejectRepairedCurves(const std::vector<Notice>& notices, const CurvePieces& pieces) {
+  auto name = [&](std::int64_t segment) {
+    if (!pieces.isPiece(static_cast<std::int32_t>(segment))) return "segment " + std::to_string(segment);
+    return "curve " + std::to_string(pieces.curveOf[std::size_t(segment - pieces.first)]);
+  };
+  for (const Notice& n : notices) {
+    const bool a = n.a >= pieces.first, b = n.b >= pieces.first;
+    const std::string at = " near (" + formatNumber(n.x) + ", " + formatNumber(n.y) + ")";
+    switch (n.kind) {
+      case NoticeKind::SegmentsCross:
+      case NoticeKind::SegmentsOverlap:
+        if (a || b) {
+          const std::string first = a ? name(n.a) : name(n.b), second = a ? name(n.b) : name(n.a);
+          throw Error(ErrorCode::MalformedInput, first + (first == second ? " crosses itself" : " crosses or touches " + second) +
+                                                     at + " (its pieces' chords meet); curves are not repaired");
+        }
+        break;
+      case NoticeKind::VertexOnSegment:
+        if (a) throw Error(ErrorCode::MalformedInput, name(n.a) + ": point " + std::to_string(n.b) + " lies on a chord of its pieces; curves are not repaired");
+        break;
+      case NoticeKind::ZeroLengthSegment:
+      case NoticeKind::DuplicateSegment:
+        if (a || b) throw Error(ErrorCode::MalformedInput, name(a ? n.a : n.b) + ": a piece has zero length or repeats another edge");
+        break;
+      default:
+        break;
+    }
+  }
+}
+
+}  // namespace ruppert::detail
+
+RUPPERT_COLD_END

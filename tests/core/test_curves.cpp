@@ -1,0 +1,196 @@
+// Curved boundaries (Plc::curves, issue 45): refined on the curve. Every mesh is judged by the
+// validator (Delaunay, the angle bound with the chapter's exemptions, the input) and by the
+// independent curve check (curve_checks.h): vertices on their curves, pieces within the tolerance
+// of them, and the mesh's area within the chords' error of the curved domain's.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "curve_checks.h"
+#include "curve_shapes.h"
+#include "validator.h"
+
+using ruppert::Mesh;
+using ruppert::Options;
+using ruppert::Plc;
+using ruppert_test::CurvedShape;
+
+namespace {
+
+struct Meshed {
+  Mesh mesh;
+  ruppert_test::CurveCheck curves;
+};
+
+// Meshes the shape and requires everything the issue promises.
+Meshed meshAndCheck(const CurvedShape& shape, double minAngle, double tolerance, double maxArea = 0, Options o = {}) {
+  o.minAngle = minAngle, o.curveTolerance = tolerance, o.maxArea = maxArea;
+  Meshed out{ruppert::triangulate(shape.plc, o), {}};
+  INFO("min angle " << minAngle << ", tolerance " << tolerance << ", max area " << maxArea);
+  REQUIRE(out.mesh.complete);
+  ruppert_test::ValidateOptions v;
+  v.input = &shape.plc, v.minAngle = minAngle, v.maxArea = maxArea;
+  v.angleExempt = ruppert_test::chapterExemptions(out.mesh, shape.plc);
+  REQUIRE_VALID(out.mesh, v);
+  out.curves = ruppert_test::checkCurves(out.mesh, shape.plc, tolerance);
+  INFO(ruppert_test::describeProblems(out.curves.problems));
+  REQUIRE(out.curves.problems.empty());
+  CHECK(std::fabs(ruppert_test::meshArea(out.mesh) - shape.area) <= out.curves.chordAreaBound + 1e-12);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("a unit square with a round hole meshes on the circle at 30 degrees", "[curves]") {
+  const CurvedShape shape = ruppert_test::squareWithRoundHole(0.25);
+  const Meshed coarse = meshAndCheck(shape, 30, 1e-3);
+  const Meshed fine = meshAndCheck(shape, 30, 1e-5);
+  const std::size_t coarseEdges = coarse.curves.pieces[0] + coarse.curves.pieces[1];
+  const std::size_t fineEdges = fine.curves.pieces[0] + fine.curves.pieces[1];
+  INFO("hole edges: " << coarseEdges << " at 1e-3, " << fineEdges << " at 1e-5");
+  CHECK(coarse.mesh.stats.minAngle >= 30);
+  // The sagitta r (1 - cos(pi / n)) shrinks as 1/n^2: a hundredth of the tolerance, ten times the edges.
+  CHECK(fineEdges >= 8 * coarseEdges);
+  CHECK(coarse.curves.worstOffCurve <= 1e-12);
+}
+
+TEST_CASE("a quarter disk under an area bound keeps its arc's vertices on the arc", "[curves]") {
+  const CurvedShape shape = ruppert_test::quarterDisk();
+  for (double angle : {0.0, 20.0, 30.0, 33.0}) meshAndCheck(shape, angle, 1e-3, 1e-3);
+  // The arc bulges out of its chords: the domain grows as they split (triangles beyond the chord).
+  const Meshed m = meshAndCheck(shape, 30, 1e-4);
+  CHECK(m.curves.pieces[0] >= 50);
+}
+
+TEST_CASE("a region under a cubic Bezier meshes on the curve", "[curves]") {
+  for (double h : {0.5, 1.0, 2.0}) {
+    const CurvedShape shape = ruppert_test::underBezier(h);
+    meshAndCheck(shape, 30, 1e-3);
+    meshAndCheck(shape, 25, 1e-4, 1e-3);
+  }
+}
+
+TEST_CASE("generated curved shapes mesh on their curves within the tolerance", "[curves]") {
+  for (std::uint32_t seed = 1; seed <= 6; ++seed) {
+    INFO("seed " << seed);
+    meshAndCheck(ruppert_test::diskWithHoles(int(seed) + 1, seed), 30, 1e-3);
+  }
+  for (double r : {0.05, 0.2, 0.5}) meshAndCheck(ruppert_test::roundedRectangle(2, 1, r), 30, 1e-3 * r);
+  for (double d : {0.3, 0.9, 0.97}) meshAndCheck(ruppert_test::lens(d), 30, 1e-3);
+  for (double r2 : {0.75, 0.9}) meshAndCheck(ruppert_test::crescent(0.3, r2), 30, 1e-3);
+  meshAndCheck(ruppert_test::crescent(0.3, 0.75), 33, 1e-4);
+}
+
+TEST_CASE("curves hold under every variant, placement and encroachment rule", "[curves]") {
+  const CurvedShape shapes[] = {ruppert_test::squareWithRoundHole(0.25), ruppert_test::quarterDisk(),
+                                ruppert_test::crescent(0.3, 0.75), ruppert_test::underBezier(1)};
+  for (const CurvedShape& shape : shapes) {
+    for (ruppert::Variant variant : {ruppert::Variant::Constrained, ruppert::Variant::BoundingBox})
+      for (ruppert::Placement placement : {ruppert::Placement::Circumcenter, ruppert::Placement::OffCenter,
+                                           ruppert::Placement::Petal, ruppert::Placement::Optimal})
+        for (ruppert::Encroachment rule : {ruppert::Encroachment::DiametralDisk, ruppert::Encroachment::DiametralLens}) {
+          Options o;
+          o.variant = variant, o.placement = placement, o.encroachment = rule;
+          INFO(enumName(variant) << ' ' << enumName(placement) << ' ' << enumName(rule));
+          meshAndCheck(shape, 30, 1e-4, 0, o);
+        }
+    // Above 34 degrees refinement runs in stages and slides vertices along segments (never along curves).
+    meshAndCheck(shape, 38, 1e-3);
+  }
+}
+
+TEST_CASE("a curve between two regions keeps both sides meshed and its pieces on it", "[curves]") {
+  // The unit square split by a quarter circle of radius 0.5 around (1, 1), which meets its sides at
+  // right angles, into two regions with attributes 1 and 2.
+  CurvedShape shape;
+  shape.plc.points = {0, 0, 1, 0, 1, 1, 0, 1, 1, 0.5, 0.5, 1};
+  shape.plc.segments = {0, 1, 1, 4, 4, 2, 2, 5, 5, 3, 3, 0};
+  ruppert::Curve arc;
+  arc.type = ruppert::CurveType::Arc, arc.from = 5, arc.to = 4, arc.center[0] = 1, arc.center[1] = 1;
+  shape.plc.curves.push_back(arc);
+  shape.plc.regions = {{0.1, 0.1, 1, 0}, {0.9, 0.9, 2, 0}};
+  shape.area = 1;
+  const Meshed m = meshAndCheck(shape, 30, 1e-3);
+  double inner = 0;
+  for (std::size_t t = 0; t < m.mesh.triangleAttributes.size(); ++t) {
+    const std::uint32_t* v = &m.mesh.triangles[3 * t];
+    const double* p[3] = {&m.mesh.points[2 * v[0]], &m.mesh.points[2 * v[1]], &m.mesh.points[2 * v[2]]};
+    const double a = ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1])) / 2;
+    if (m.mesh.triangleAttributes[t] == 2) inner += a;
+  }
+  // Region 2 is the quarter disk of radius 0.5 around (1, 1).
+  CHECK(std::fabs(inner - 3.14159265358979323846 / 16) <= m.curves.chordAreaBound + 1e-12);
+}
+
+TEST_CASE("curve pieces carry their curve's segmentId and marker", "[curves]") {
+  CurvedShape shape = ruppert_test::quarterDisk();
+  shape.plc.curves[0].marker = 7;
+  const Mesh mesh = ruppert::triangulate(shape.plc, Options{});
+  std::size_t pieces = 0;
+  for (std::size_t k = 0; k < mesh.segmentIds.size(); ++k) {
+    CHECK(mesh.segmentIds[k] >= 0);
+    CHECK(mesh.segmentIds[k] <= 2);
+    if (mesh.segmentIds[k] != 2) continue;
+    ++pieces;
+    CHECK(mesh.segmentMarkers[k] == 7);
+  }
+  CHECK(pieces >= 6);
+}
+
+TEST_CASE("bad curves are refused with the curve named", "[curves][errors]") {
+  auto refused = [](Plc plc, ruppert::ErrorCode code, const std::string& words) {
+    try {
+      ruppert::triangulate(plc, Options{});
+      FAIL("no error");
+    } catch (const ruppert::Error& e) {
+      INFO(e.what());
+      CHECK(e.code() == code);
+      CHECK(std::string(e.what()).find(words) != std::string::npos);
+    }
+  };
+  const Plc quarter = ruppert_test::quarterDisk().plc;
+  Plc p = quarter;
+  p.curves[0].to = 9;
+  refused(p, ruppert::ErrorCode::IndexOutOfRange, "curve 0: to = 9");
+  p = quarter, p.curves[0].center[0] = 0.01;
+  refused(p, ruppert::ErrorCode::MalformedInput, "curve 0: from and to lie at distances");
+  p = quarter, p.curves[0].type = ruppert::CurveType::Bezier, p.curves[0].controls[1] = NAN;
+  refused(p, ruppert::ErrorCode::NonFiniteCoordinate, "curve 0: a control coordinate");
+  p = quarter, p.curves[0].type = static_cast<ruppert::CurveType>(7);
+  refused(p, ruppert::ErrorCode::MalformedInput, "curve 0: unknown type");
+  p = quarter, p.curves[0].to = 1;
+  refused(p, ruppert::ErrorCode::MalformedInput, "curve 0: from and to are the same point");
+  // A segment across the arc, and a second arc crossing the first.
+  p = quarter, p.points.insert(p.points.end(), {0.5, 0.5, 1, 1}), p.segments.insert(p.segments.end(), {3, 4});
+  refused(p, ruppert::ErrorCode::MalformedInput, "curve 0 crosses or touches segment 2");
+  p = quarter, p.points.insert(p.points.end(), {1, 1, 0.2, 0.2});
+  ruppert::Curve crossing;
+  crossing.from = 3, crossing.to = 4, crossing.center[0] = 1, crossing.center[1] = 0.2;
+  p.curves.push_back(crossing);
+  refused(p, ruppert::ErrorCode::MalformedInput, "crosses or touches curve");
+  // A cubic that loops over itself.
+  p = ruppert_test::underBezier(1).plc;
+  const double loop[4] = {-1, 1, 2, 1};
+  std::copy(loop, loop + 4, p.curves[0].controls);
+  refused(p, ruppert::ErrorCode::MalformedInput, "curve 0 crosses itself");
+}
+
+TEST_CASE("curves are read from JSON and refused there with their path", "[curves][io]") {
+  const Plc plc = ruppert::parseJson(R"({"points": [0,0, 1,0, 0,1], "segments": [0,1, 2,0],
+    "curves": [{"type": "arc", "from": 1, "to": 2, "center": [0, 0], "marker": 3},
+               {"type": "bezier", "from": 2, "to": 1, "controls": [0.5, 2, 2, 0.5]}]})");
+  REQUIRE(plc.curves.size() == 2);
+  CHECK(plc.curves[0].type == ruppert::CurveType::Arc);
+  CHECK(plc.curves[0].marker == 3);
+  CHECK(plc.curves[1].type == ruppert::CurveType::Bezier);
+  CHECK(plc.curves[1].controls[1] == 2);
+  for (const char* bad : {R"({"points": [0,0, 1,0], "curves": [{"type": "spline", "from": 0, "to": 1}]})",
+                          R"({"points": [0,0, 1,0], "curves": [{"type": "arc", "from": 0, "to": 1}]})",
+                          R"({"points": [0,0, 1,0], "curves": [{"type": "arc", "to": 1, "center": [0, 0]}]})",
+                          R"({"points": [0,0, 1,0], "curves": [{"type": "arc", "from": -1, "to": 1, "center": [0, 0]}]})"}) {
+    INFO(bad);
+    CHECK_THROWS_WITH(ruppert::parseJson(bad), Catch::Contains("curves[0]"));
+  }
+}
