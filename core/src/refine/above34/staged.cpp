@@ -123,7 +123,8 @@ RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path)
     if (attempt.capHit() || !completeOutcome(out)) continue;
     const std::uint64_t triangles = liveTriangles(from);
     if (best.found && triangles >= best.triangles) continue;
-    best = {true, triangles, number, attempt.steps(), std::move(from), std::move(out)};
+    best.found = true, best.triangles = triangles, best.attempt = number, best.steps = attempt.steps();
+    best.mesh = std::move(from), best.out = std::move(out);
     if (triangles <= kDirectEnoughFactor * static_cast<double>(path.base)) break;
   }
   if (best.found) {
