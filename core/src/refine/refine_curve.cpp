@@ -131,15 +131,9 @@ void Refiner::moveBoundaryToCurve(std::uint32_t x, std::int32_t segment, std::ui
 }
 
 void Refiner::copyRegionData(std::uint32_t from, std::uint32_t to) {
-  const bool box = !m_.inDomain.empty();
-  if (m_.maxArea.empty() && !box) return;  // uniform (MeshState::maxAreaOf)
-  if (m_.attribute.size() < t_.slotCount()) {
-    m_.attribute.resize(t_.slotCount(), 0);
-    m_.maxArea.resize(t_.slotCount(), 0);
-    if (box) m_.inDomain.resize(t_.slotCount(), 0);
-  }
+  if (!regionDataCoversSlots()) return;
   m_.attribute[to] = m_.attribute[from], m_.maxArea[to] = m_.maxArea[from];
-  if (box) m_.inDomain[to] = m_.inDomain[from];
+  if (!m_.inDomain.empty()) m_.inDomain[to] = m_.inDomain[from];
 }
 
 }  // namespace ruppert::detail

@@ -76,14 +76,22 @@ void Refiner::recheckFlipped() {
 
 // The new triangles take their parents' region data. Two passes: a new triangle may reuse the
 // slot of another new triangle's parent.
-void Refiner::inheritRegionData() {
+// False where region data is uniform (MeshState::maxAreaOf); else grows the per-slot region arrays
+// to cover every slot.
+bool Refiner::regionDataCoversSlots() {
   const bool box = !m_.inDomain.empty();
-  if (m_.maxArea.empty() && !box) return;  // uniform (MeshState::maxAreaOf)
+  if (m_.maxArea.empty() && !box) return false;
   if (m_.attribute.size() < t_.slotCount()) {
     m_.attribute.resize(t_.slotCount(), 0);
     m_.maxArea.resize(t_.slotCount(), 0);
     if (box) m_.inDomain.resize(t_.slotCount(), 0);
   }
+  return true;
+}
+
+void Refiner::inheritRegionData() {
+  if (!regionDataCoversSlots()) return;
+  const bool box = !m_.inDomain.empty();
   inherit_.resize(newTris_.size());
   for (std::size_t k = 0; k < newTris_.size(); ++k)
     inherit_[k] = {m_.attribute[parents_[k]], m_.maxArea[parents_[k]], box ? m_.inDomain[parents_[k]] : std::uint8_t(1)};

@@ -255,6 +255,7 @@ class Refiner {
   // The new triangles take their parents' region data. Two passes: a new triangle may reuse the
   // slot of another new triangle's parent.
   void inheritRegionData();
+  bool regionDataCoversSlots();  // false: uniform region data; else the per-slot arrays cover every slot
 
   // A subsegment's split point is rounded, so it lies a hair off the subsegment's line. Bowyer-Watson
   // treats it as on the edge and joins it to the boundary of both sides' cavities; when it falls just
