@@ -89,7 +89,7 @@ double chordError(const CurveGeometry& g, Point a, Point b) {
 
 }  // namespace
 
-CurveCheck checkCurves(const ruppert::Mesh& mesh, const ruppert::Plc& input, double tolerance) {
+CurveCheck checkCurves(const ruppert::Mesh& mesh, const ruppert::Plc& input, double tolerance, bool wholeChains) {
   CurveCheck out;
   const std::size_t segments = input.segments.size() / 2;
   out.pieces.assign(input.curves.size(), 0);
@@ -115,13 +115,15 @@ CurveCheck checkCurves(const ruppert::Mesh& mesh, const ruppert::Plc& input, dou
   }
   for (std::size_t c = 0; c < input.curves.size(); ++c) {
     const Curve& cv = input.curves[c];
-    for (const auto& [v, d] : degree[c]) {
+    for (const auto& entry : degree[c]) {
+      const std::uint32_t v = entry.first;
+      const auto d = entry.second;
       // By coordinates: an end may have been merged with a duplicate point.
       auto same = [&](std::uint32_t i) { return at(v).x == input.points[2 * std::size_t(i)] && at(v).y == input.points[2 * std::size_t(i) + 1]; };
       const bool end = same(cv.from) || same(cv.to);
-      if (d != (end ? 1 : 2)) out.problems.push_back("curve " + std::to_string(c) + "'s pieces meet " + std::to_string(d) + " times at vertex " + std::to_string(v));
+      if (wholeChains ? d != (end ? 1 : 2) : d > (end ? 1 : 2)) out.problems.push_back("curve " + std::to_string(c) + "'s pieces meet " + std::to_string(d) + " times at vertex " + std::to_string(v));
     }
-    if (out.pieces[c] == 0) out.problems.push_back("curve " + std::to_string(c) + " has no pieces in the mesh");
+    if (wholeChains && out.pieces[c] == 0) out.problems.push_back("curve " + std::to_string(c) + " has no pieces in the mesh");
   }
   return out;
 }

@@ -20,7 +20,9 @@ struct CurveCheck {
 
 // Every subsegment with a curve's segmentId: both ends on the curve within 1e-12 of the curve's size
 // (an arc's radius, a Bézier's control polygon's extent), its stretch of curve within `tolerance`
-// (plus 1e-12 of the size) of its chord, and each curve's pieces one chain from `from` to `to`.
-CurveCheck checkCurves(const ruppert::Mesh& mesh, const ruppert::Plc& input, double tolerance);
+// (plus 1e-12 of the size) of its chord, and each curve's pieces one chain from `from` to `to`; or,
+// without wholeChains (curves may run through holes, whose pieces are not the mesh's), no vertex
+// where more than two of a curve's pieces meet.
+CurveCheck checkCurves(const ruppert::Mesh& mesh, const ruppert::Plc& input, double tolerance, bool wholeChains = true);
 
 }  // namespace ruppert_test

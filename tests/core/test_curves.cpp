@@ -124,6 +124,31 @@ TEST_CASE("a curve between two regions keeps both sides meshed and its pieces on
   CHECK(std::fabs(inner - 3.14159265358979323846 / 16) <= m.curves.chordAreaBound + 1e-12);
 }
 
+TEST_CASE("a curve inside a hole leaves no vertex of its own in the mesh", "[curves]") {
+  // The unit square with a square hole [0.2, 0.8]^2, and in the hole a circle of radius 0.1 with a
+  // hole seed inside it too: every piece of the circle lies in the hole (found by fuzz_mesh).
+  Plc plc;
+  plc.points = {0, 0, 1, 0, 1, 1, 0, 1, 0.2, 0.2, 0.8, 0.2, 0.8, 0.8, 0.2, 0.8};
+  plc.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4};
+  ruppert_test::addCircle(plc, 0.5, 0.5, 0.1);
+  plc.holes = {0.3, 0.3, 0.5, 0.5};
+  for (const bool jettison : {false, true}) {
+    Options o;
+    o.minAngle = 30, o.jettison = jettison;
+    const Mesh mesh = ruppert::triangulate(plc, o);
+    INFO("jettison " << jettison);
+    REQUIRE(mesh.complete);
+    ruppert_test::ValidateOptions v;
+    // With jettison the output renumbers the input's points, which the validator's input checks
+    // do not follow; then no point at all may be Unused.
+    v.input = jettison ? nullptr : &plc, v.minAngle = 30;
+    REQUIRE_VALID(mesh, v);
+    if (jettison)
+      for (std::uint8_t kind : mesh.vertexKinds) CHECK(kind != static_cast<std::uint8_t>(ruppert::VertexKind::Unused));
+    for (std::size_t k = 0; k < mesh.segmentIds.size(); ++k) CHECK(mesh.segmentIds[k] < 8);
+  }
+}
+
 TEST_CASE("curve pieces carry their curve's segmentId and marker", "[curves]") {
   CurvedShape shape = ruppert_test::quarterDisk();
   shape.plc.curves[0].marker = 7;

@@ -9,7 +9,13 @@
 //            .poly text, not binary
 //   byte 3   scale: integer coordinates are multiplied by 2^(signed byte), reaching 2^-128..2^127
 //   binary:  count, then points; count, then segments (2 index bytes; 255 = one past the end);
-//            count, then holes; count, then regions (x, y, attribute byte, max-area byte)
+//            count, then holes; count, then regions (x, y, attribute byte, max-area byte);
+//            count, then curves (below), then the curve tolerance byte
+// A curve: a type byte (bit 0: Bézier, else arc; bits 1-7: marker), its two point index bytes, then
+// an arc's centre as the chord's midpoint plus a signed multiple (int16 / 64) of its normal (so both
+// ends are at one distance from it to rounding, as Plc::curves asks), or a Bézier's two control
+// points in the coordinate encoding. Tolerance byte b: 0 the default, else the bounding box's
+// diagonal / 2^(b % 24).
 // Coordinate encodings: 0 int8, 1 int16, 2 raw IEEE double bits (NaN, Inf, subnormals ...),
 // 3 int8 + int8/256 (near-degenerate fractions). Small integer grids make the hard cases likely:
 // duplicates, collinear runs, crossings at one point, vertices on segments.
@@ -24,6 +30,7 @@
 #include <sstream>
 #include <string>
 
+#include "curve_checks.h"
 #include "mesh_judge.h"
 #include "plc_invariants.h"
 
@@ -106,6 +113,46 @@ void readBinaryPlc(Bytes& in, int encoding, double scale, ruppert::Plc& plc) {
   }
 }
 
+ruppert::Curve readCurve(Bytes& in, int encoding, double scale, const ruppert::Plc& plc) {
+  const std::size_t points = plc.points.size() / 2;
+  ruppert::Curve c;
+  const std::uint8_t kind = in.byte();
+  c.type = (kind & 1) ? ruppert::CurveType::Bezier : ruppert::CurveType::Arc;
+  c.marker = kind >> 1;
+  c.from = points ? in.byte() % points : in.byte();
+  c.to = points ? in.byte() % points : in.byte();
+  if (c.type == ruppert::CurveType::Bezier) {
+    for (double& v : c.controls) v = in.coordinate(encoding, scale);
+    return c;
+  }
+  const std::uint16_t lo = in.byte(), hi = in.byte();
+  const double offset = static_cast<std::int16_t>(static_cast<std::uint16_t>(lo | (hi << 8))) / 64.0;
+  if (c.from < points && c.to < points) {
+    const double ax = plc.points[2 * c.from], ay = plc.points[2 * c.from + 1];
+    const double bx = plc.points[2 * c.to], by = plc.points[2 * c.to + 1];
+    c.center[0] = 0.5 * (ax + bx) - offset * (by - ay);
+    c.center[1] = 0.5 * (ay + by) + offset * (bx - ax);
+  }
+  return c;
+}
+
+double boxDiagonal(const ruppert::Plc& plc) {
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (std::size_t i = 0; i < plc.points.size(); ++i) {
+    lo[i % 2] = std::fmin(lo[i % 2], plc.points[i]);
+    hi[i % 2] = std::fmax(hi[i % 2], plc.points[i]);
+  }
+  const double d = std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
+  return std::isfinite(d) ? d : 0;
+}
+
+void readCurves(Bytes& in, int encoding, double scale, ruppert::Plc& plc, ruppert::Options& o) {
+  const std::size_t curves = in.byte() % 4;
+  for (std::size_t i = 0; i < curves; ++i) plc.curves.push_back(readCurve(in, encoding, scale, plc));
+  const std::uint8_t tolerance = in.byte();
+  if (tolerance != 0) o.curveTolerance = std::ldexp(boxDiagonal(plc), -(tolerance % 24));
+}
+
 // With RUPPERT_FUZZ_DUMP=path set, every PLC is written there as .poly text before meshing, with
 // the options in a comment: running the target on one finding turns it into a fixture.
 void dumpPlc(const ruppert::Plc& plc, const ruppert::Options& o) {
@@ -129,6 +176,10 @@ void dumpPlc(const ruppert::Plc& plc, const ruppert::Options& o) {
   for (std::size_t i = 0; i < plc.regions.size(); ++i)
     std::fprintf(f, "%zu %.17g %.17g %.17g %.17g\n", i, plc.regions[i].x, plc.regions[i].y, plc.regions[i].attribute,
                  plc.regions[i].maxArea);
+  std::fprintf(f, "# curveTolerance %.17g; curves: type from to centre-or-controls marker\n", o.curveTolerance);
+  for (const ruppert::Curve& c : plc.curves)
+    std::fprintf(f, "# curve %s %u %u %.17g %.17g %.17g %.17g %.17g %.17g %d\n", ruppert::enumName(c.type), c.from, c.to,
+                 c.center[0], c.center[1], c.controls[0], c.controls[1], c.controls[2], c.controls[3], c.marker);
   std::fclose(f);
 }
 
@@ -161,6 +212,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (plc.points.size() / 2 > kMaxTextPoints || plc.segments.size() / 2 > kMaxTextPoints) return 0;
   } else {
     readBinaryPlc(in, (flags >> 4) & 3, scale, plc);
+    readCurves(in, (flags >> 4) & 3, scale, plc, o);
   }
   o.maxArea = areaBound(boxArea(plc), areaSelector);
 
@@ -172,7 +224,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (e.code() == ruppert::ErrorCode::Internal) ruppert_fuzz::finding(e.what());
     return 0;
   }
-  const std::vector<std::string> problems = ruppert_fuzz::judgeMesh(mesh, plc, o);
+  std::vector<std::string> problems = ruppert_fuzz::judgeMesh(mesh, plc, o);
+  if (!plc.curves.empty()) {
+    const double tolerance = o.curveTolerance > 0 ? o.curveTolerance : 1e-3 * boxDiagonal(plc);
+    for (std::string& p : ruppert_test::checkCurves(mesh, plc, tolerance, false).problems) problems.push_back(std::move(p));
+  }
   if (!problems.empty()) {
     std::fprintf(stderr, "minAngle %g maxArea %g placement %d convexHull %d autoHoles %d complete %d\n", o.minAngle,
                  o.maxArea, static_cast<int>(o.placement), o.convexHull, o.autoHoles, mesh.complete);

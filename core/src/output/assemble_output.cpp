@@ -212,6 +212,10 @@ void applyOutputOptions(const MeshState& m, Mesh& mesh) {
     std::vector<std::uint32_t> mergedInto(m.plc->points.size() / 2);
     for (std::size_t i = 0; i < mergedInto.size(); ++i) mergedInto[i] = m.input.inputIndex[m.input.representative[i]];
     jettisonUnused(mesh, mergedInto);
+  } else if (m.curves->firstPoint < m.plc->points.size() / 2) {
+    // Points made on a curve that lies in a hole or outside the domain: they are the mesher's, and
+    // the mesher returns no vertex that no triangle uses; the user's points stay where they are.
+    jettisonUnused(mesh, {}, m.curves->firstPoint);
   }
   if (options.edges) {
     MeshEdges edges = meshEdges(mesh);

@@ -21,13 +21,14 @@ void compact(std::vector<T>& values, std::size_t width, const std::vector<std::u
 
 }  // namespace
 
-void jettisonUnused(Mesh& mesh, const std::vector<std::uint32_t>& mergedInto) {
+void jettisonUnused(Mesh& mesh, const std::vector<std::uint32_t>& mergedInto, std::size_t keepBelow) {
   const std::size_t n = mesh.points.size() / 2;
   std::vector<std::uint32_t> newIndex(n, kNoVertex);
   std::uint32_t kept = 0;
   for (std::size_t v = 0; v < n; ++v)
-    if (static_cast<VertexKind>(mesh.vertexKinds[v]) != VertexKind::Unused) newIndex[v] = kept++;
-  mesh.inputToOutput.resize(mergedInto.size());
+    if (v < keepBelow || static_cast<VertexKind>(mesh.vertexKinds[v]) != VertexKind::Unused) newIndex[v] = kept++;
+  if (kept == n) return;
+  if (!mergedInto.empty()) mesh.inputToOutput.resize(mergedInto.size());
   for (std::size_t i = 0; i < mergedInto.size(); ++i) {
     const std::uint32_t o = newIndex[mergedInto[i]];
     mesh.inputToOutput[i] = o == kNoVertex ? -1 : static_cast<std::int32_t>(o);

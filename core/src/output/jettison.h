@@ -8,9 +8,10 @@
 
 namespace ruppert::detail {
 
-// Removes the Unused points from mesh.points and renumbers every array that holds point indices
-// (triangles, segments, edges, events) and every per-point array; fills mesh.inputToOutput.
-// mergedInto[i]: the input point that input point i was merged into (i itself if it was not).
-void jettisonUnused(Mesh& mesh, const std::vector<std::uint32_t>& mergedInto);
+// Removes the Unused points from index keepBelow on from mesh.points and renumbers every array that
+// holds point indices (triangles, segments, edges, events) and every per-point array; fills
+// mesh.inputToOutput unless mergedInto is empty. mergedInto[i]: the input point that input point i
+// was merged into (i itself if it was not).
+void jettisonUnused(Mesh& mesh, const std::vector<std::uint32_t>& mergedInto, std::size_t keepBelow = 0);
 
 }  // namespace ruppert::detail
