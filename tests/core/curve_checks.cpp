@@ -24,23 +24,30 @@ Point bezierAt(const double* c, double t) {
   return {w[0] * c[0] + w[1] * c[2] + w[2] * c[4] + w[3] * c[6], w[0] * c[1] + w[1] * c[3] + w[2] * c[5] + w[3] * c[7]};
 }
 
-// The parameter of the curve point nearest p.
+// The parameter of the curve point nearest p: golden-section search around every local minimum of
+// the squared distance over 512 samples (a curve that comes back near itself has several; the
+// nearest sample alone could sit on the wrong stretch).
 double nearestParameter(const double* c, Point p) {
+  constexpr int kSamples = 512;
   auto d2 = [&](double t) {
     const Point q = bezierAt(c, t);
     return (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y);
   };
-  double best = 0;
-  for (int i = 1; i <= 4096; ++i)
-    if (d2(i / 4096.0) < d2(best)) best = i / 4096.0;
-  // Golden-section refinement in the bracket around the best sample.
-  double lo = std::max(0.0, best - 1 / 4096.0), hi = std::min(1.0, best + 1 / 4096.0);
-  for (int k = 0; k < 200; ++k) {
-    const double m1 = lo + (hi - lo) * 0.381966, m2 = hi - (hi - lo) * 0.381966;
-    if (d2(m1) < d2(m2)) hi = m2;
-    else lo = m1;
+  double sample[kSamples + 1];
+  for (int i = 0; i <= kSamples; ++i) sample[i] = d2(double(i) / kSamples);
+  double best = 0, bestD2 = sample[0];
+  for (int i = 0; i <= kSamples; ++i) {
+    if ((i > 0 && sample[i - 1] < sample[i]) || (i < kSamples && sample[i + 1] < sample[i])) continue;
+    double lo = std::max(0.0, double(i - 1) / kSamples), hi = std::min(1.0, double(i + 1) / kSamples);
+    for (int k = 0; k < 100; ++k) {
+      const double m1 = lo + (hi - lo) * 0.381966, m2 = hi - (hi - lo) * 0.381966;
+      if (d2(m1) < d2(m2)) hi = m2;
+      else lo = m1;
+    }
+    const double t = (lo + hi) / 2;
+    if (d2(t) < bestD2) best = t, bestD2 = d2(t);
   }
-  return (lo + hi) / 2;
+  return best;
 }
 
 double distanceToSegment(Point a, Point b, Point q) {
@@ -68,20 +75,22 @@ CurveGeometry geometryOf(const ruppert::Plc& in, const Curve& cv) {
   return g;
 }
 
-double offCurve(const CurveGeometry& g, Point p) {
+// Distance from p to the curve; for a Bézier, t receives the nearest point's parameter.
+double offCurve(const CurveGeometry& g, Point p, double& t) {
   if (g.curve.type == CurveType::Arc) return std::fabs(std::hypot(p.x - g.c[0], p.y - g.c[1]) - g.c[2]);
-  const Point q = bezierAt(g.c, nearestParameter(g.c, p));
+  t = nearestParameter(g.c, p);
+  const Point q = bezierAt(g.c, t);
   return std::hypot(q.x - p.x, q.y - p.y);
 }
 
-// Largest distance from the curve between a and b (both on it) to the chord a-b.
-double chordError(const CurveGeometry& g, Point a, Point b) {
+// Largest distance from the curve between a and b (both on it, a Bézier's at parameters ta and tb)
+// to the chord a-b.
+double chordError(const CurveGeometry& g, Point a, Point b, double ta, double tb) {
   const double chord = std::hypot(b.x - a.x, b.y - a.y);
   if (g.curve.type == CurveType::Arc) {
     const double r = g.c[2];
     return r - std::sqrt(std::max(0.0, r * r - chord * chord / 4));
   }
-  const double ta = nearestParameter(g.c, a), tb = nearestParameter(g.c, b);
   double worst = 0;
   for (int i = 1; i < 256; ++i) worst = std::max(worst, distanceToSegment(a, b, bezierAt(g.c, ta + (tb - ta) * i / 256.0)));
   return worst;
@@ -102,12 +111,14 @@ CurveCheck checkCurves(const ruppert::Mesh& mesh, const ruppert::Plc& input, dou
     const CurveGeometry g = geometryOf(input, input.curves[c]);
     const std::uint32_t u = mesh.segments[2 * k], w = mesh.segments[2 * k + 1];
     ++out.pieces[c], ++degree[c][u], ++degree[c][w];
-    for (std::uint32_t v : {u, w}) {
-      const double off = offCurve(g, at(v)) / g.size;
+    double t[2] = {0, 0};
+    for (int end = 0; end < 2; ++end) {
+      const std::uint32_t v = end ? w : u;
+      const double off = offCurve(g, at(v), t[end]) / g.size;
       out.worstOffCurve = std::max(out.worstOffCurve, off);
       if (off > 1e-12) out.problems.push_back("vertex " + std::to_string(v) + " of curve " + std::to_string(c) + " lies " + std::to_string(off) + " of its size off it");
     }
-    const double error = chordError(g, at(u), at(w));
+    const double error = chordError(g, at(u), at(w), t[0], t[1]);
     out.worstChordError = std::max(out.worstChordError, error);
     out.chordAreaBound += error * std::hypot(at(w).x - at(u).x, at(w).y - at(u).y);
     if (error > tolerance + 1e-12 * g.size)
