@@ -25,19 +25,19 @@ Point bezierAt(const double* c, double t) {
 }
 
 // The parameter of the curve point nearest p: golden-section search around every local minimum of
-// the squared distance over 512 samples (a curve that comes back near itself has several; the
+// the squared distance over 4096 samples (a curve that comes back near itself has several; the
 // nearest sample alone could sit on the wrong stretch).
 double nearestParameter(const double* c, Point p) {
-  constexpr int kSamples = 512;
+  constexpr int kSamples = 4096;
   auto d2 = [&](double t) {
     const Point q = bezierAt(c, t);
     return (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y);
   };
-  double sample[kSamples + 1];
+  std::vector<double> sample(kSamples + 1);
   for (int i = 0; i <= kSamples; ++i) sample[i] = d2(double(i) / kSamples);
   double best = 0, bestD2 = sample[0];
   for (int i = 0; i <= kSamples; ++i) {
-    if ((i > 0 && sample[i - 1] < sample[i]) || (i < kSamples && sample[i + 1] < sample[i])) continue;
+    if ((i > 0 && sample[i - 1] <= sample[i]) || (i < kSamples && sample[i + 1] < sample[i])) continue;
     double lo = std::max(0.0, double(i - 1) / kSamples), hi = std::min(1.0, double(i + 1) / kSamples);
     for (int k = 0; k < 100; ++k) {
       const double m1 = lo + (hi - lo) * 0.381966, m2 = hi - (hi - lo) * 0.381966;
@@ -45,6 +45,7 @@ double nearestParameter(const double* c, Point p) {
       else lo = m1;
     }
     const double t = (lo + hi) / 2;
+    if (sample[i] < bestD2) best = double(i) / kSamples, bestD2 = sample[i];
     if (d2(t) < bestD2) best = t, bestD2 = d2(t);
   }
   return best;
