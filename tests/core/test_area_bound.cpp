@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "refine/placement/refine_geometry.h"
 #include "shape_families.h"
 #include "validator.h"
 
@@ -64,6 +65,27 @@ TEST_CASE("a square under an area bound alone is split largest first into a grid
     CHECK(mesh.triangles.size() / 3 == expected);
     CHECK_VALID(mesh, bounded(plc, mesh, 1.0, 30, maxArea));
   }
+}
+
+TEST_CASE("a size off-center makes the triangle on the shortest edge as large as the bound allows", "[refine][area]") {
+  using ruppert::detail::sizeOffCenter;
+  const double theta = 30 * 3.14159265358979323846 / 180;
+  // A tall acute triangle on u-w: its circumcenter lies 1.5 above the edge's midpoint (1, 0).
+  const double u[2] = {0, 0}, w[2] = {2, 0}, cc[2] = {1, 1.5};
+  double x[2];
+  REQUIRE(sizeOffCenter(u, w, cc, 1.0, theta, x));
+  CHECK(x[0] == Approx(1));
+  // Area of u-w-x: |uw| * height / 2 = 0.98 of the bound.
+  CHECK(x[1] == Approx(ruppert::detail::kSizeFill * 1.0));
+  // A bound so large the circumcenter is nearer: none.
+  CHECK_FALSE(sizeOffCenter(u, w, cc, 2.0, theta, x));
+  // A bound so small the angles at u and w would be under theta (height < tan(30) = 0.577): none.
+  CHECK_FALSE(sizeOffCenter(u, w, cc, 0.5, theta, x));
+  const double right[3][2] = {{0, 0}, {1, 0}, {0, 1}}, acute[3][2] = {{0, 0}, {1, 0}, {0.4, 1}};
+  const double* r[3] = {right[0], right[1], right[2]};
+  const double* a[3] = {acute[0], acute[1], acute[2]};
+  CHECK_FALSE(ruppert::detail::isAcute(r));
+  CHECK(ruppert::detail::isAcute(a));
 }
 
 TEST_CASE("with an area bound the default placement makes fewer triangles than off-centers", "[refine][area]") {

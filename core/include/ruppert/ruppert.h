@@ -271,7 +271,7 @@ enum class VertexKind : std::uint8_t {
   Input = 0,         // an input point that the mesh uses
   SegmentSplit = 1,  // inserted on a segment (encroachment midpoint or concentric-shell split)
   Interior = 2,      // circumcenter of a skinny or large triangle
-  OffCenter = 3,     // off-center of a skinny triangle (§6.8)
+  OffCenter = 3,     // off-center of a skinny triangle (§6.8), or of one over its area bound
   Intersection = 4,  // where two input segments cross (repair of the input)
   Unused = 5,        // an input point no triangle uses: a merged duplicate, or outside the domain
 };

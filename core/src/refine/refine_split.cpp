@@ -170,16 +170,27 @@ void Refiner::traceSplit(std::uint32_t v, std::uint32_t a, std::uint32_t b, cons
   out_.events.push_back(e);
 }
 
-// The first choice of point for a bad triangle: its circumcenter, or for a skinny one (unless
-// Placement::Circumcenter) the off-center when that is nearer. False: no point to trust.
-bool Refiner::firstChoice(const double* const* p, const TriangleShape& sh, bool skinny, double target[2], VertexKind& kind) const {
+// The first choice of point for a bad triangle: its circumcenter, or (unless
+// Placement::Circumcenter) for a skinny one the off-center when that is nearer, for one that only
+// exceeds its area bound `overBound` (> 0) the size off-center when there is one. False: no point to
+// trust.
+bool Refiner::firstChoice(const double* const* p, const TriangleShape& sh, bool skinny, double overBound,
+                          double target[2], VertexKind& kind) const {
   double cc[2];
   if (!circumcenter(p, cc)) return false;
   target[0] = cc[0], target[1] = cc[1];
   kind = VertexKind::Interior;
-  if (skinny && o_.placement != Placement::Circumcenter) {
+  if (o_.placement != Placement::Circumcenter) {
     const int e = sh.shortestEdge;
-    if (offCenter(p[(e + 1) % 3], p[(e + 2) % 3], sh.shortest, cc, theta_, target)) kind = VertexKind::OffCenter;
+    const double* u = p[(e + 1) % 3];
+    const double* w = p[(e + 2) % 3];
+    double x[2];
+    if (skinny ? offCenter(u, w, sh.shortest, cc, theta_, x)
+               : overBound > 0 && isAcute(p) && sizeOffCenter(u, w, cc, overBound, theta_, x)) {
+      // Out of range, a skinny triangle's off-center is refused below; a size off-center gives way
+      // to the circumcenter.
+      if (skinny || mesh_.representable(x)) target[0] = x[0], target[1] = x[1], kind = VertexKind::OffCenter;
+    }
   }
   return mesh_.representable(target);
 }
@@ -211,7 +222,8 @@ void Refiner::splitTriangle(const BadTriangle& bt) {
   }
   double target[2];
   VertexKind kind;
-  if (sh.shortest < 2 * kLengthFloor || !firstChoice(p, sh, skinny, target, kind)) {
+  const double overBound = !skinny && maxAreaAt(s) > 0 && q.area > maxAreaAt(s) ? maxAreaAt(s) : 0;
+  if (sh.shortest < 2 * kLengthFloor || !firstChoice(p, sh, skinny, overBound, target, kind)) {
     ++floorHits_;
     return;
   }

@@ -299,10 +299,10 @@ class Refiner {
   // Copies slot `from`'s region data to slot `to`.
   void copyRegionData(std::uint32_t from, std::uint32_t to);
 
-  // The first choice of point for a bad triangle: its circumcenter, or for a skinny one (unless
-  // Placement::Circumcenter) the off-center when that is nearer. False: no point to trust.
-  bool firstChoice(const double* const* p, const TriangleShape& sh, bool skinny, double target[2],
-                   VertexKind& kind) const;
+  // The first choice of point for a bad triangle: its circumcenter, or an off-center (for a skinny
+  // one, or one only over its area bound overBound > 0). False: no point to trust.
+  bool firstChoice(const double* const* p, const TriangleShape& sh, bool skinny, double overBound,
+                   double target[2], VertexKind& kind) const;
 
   // A better point than the first choice from the configured placement, if it has one (placement.h).
   bool improvePlacement(const SkinnyTriangle& st, double target[2], Location& loc);
