@@ -3,7 +3,7 @@
 // build-wasm/, then copy each module's .mjs + .wasm into wasm/dist/ (what the package ships: the
 // mesher ruppert, the text formats ruppert-formats and, for wasm/cli.js, ruppert-cli) and
 // write wasm/dist/names.js: the core's enum names and options as the binding exports them
-// (describe.cpp), for the package's constants and option checks, which need them before any
+// (binding/describe.cpp), for the package's constants and option checks, which need them before any
 // module is instantiated.
 // Debian's emcc needs NODE_PATH=/usr/share/nodejs to find its JS optimizer's `acorn`.
 import { spawnSync } from 'node:child_process';
@@ -35,7 +35,7 @@ for (const name of ['ruppert', 'ruppert-formats', 'ruppert-cli']) {
 }
 
 // Instantiated here without wasm/loader.js, which imports what this writes.
-const { readDescription } = await import('./describe.js');
+const { readDescription } = await import('./heap-call.js');
 async function describeModule(name) {
   const { default: createModule } = await import(pathToFileURL(`${distDir}${name}.mjs`).href);
   const instance = {
@@ -49,11 +49,11 @@ async function describeModule(name) {
   await createModule(instance);
   return readDescription(instance);
 }
-// The names from the mesher; the options only the CLI's module describes (describe.cpp).
+// The names from the mesher; the options only the CLI's module describes (binding/describe.cpp).
 const { names } = await describeModule('ruppert');
 const { options } = await describeModule('ruppert-cli');
-writeFileSync(`${distDir}names.js`, `// Written by wasm/build-wasm.mjs from the binding (wasm/describe.cpp): the names of the core's
-// enums (core/include/ruppert/ruppert.h), each list in its enum's order, and the options
+writeFileSync(`${distDir}names.js`, `// Written by wasm/build-wasm.mjs from the binding (wasm/binding/describe.cpp): the names of
+// the core's enums (core/include/ruppert/ruppert.h), each list in its enum's order, and the options
 // (core/include/ruppert/option_table.h): name, type, default and range or values. Do not edit.
 export const NAMES = Object.freeze({
 ${Object.entries(names).map(([key, list]) => `  ${key}: Object.freeze(${JSON.stringify(list)}),`).join('\n')}

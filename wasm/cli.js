@@ -9,8 +9,11 @@
 // Exit status: 0 success, 1 invalid input, 2 usage error, 3 an output file could not be written.
 import { readFile, writeFile } from 'node:fs/promises';
 import { extname } from 'node:path';
-import { initCli } from './cli-mesher.js';
+import createCliModule from './dist/ruppert-cli.mjs';
 import { MeshError } from './errors.js';
+import { instanceHost } from './loader.js';
+import { createMesher } from './mesher.js';
+import './node.js';  // registers the Node host (reading the .wasm from a file: URL)
 
 const EXIT_OK = 0;
 const EXIT_INVALID_INPUT = 1;
@@ -18,6 +21,22 @@ const EXIT_USAGE = 2;
 const EXIT_WRITE_FAILED = 3;
 
 class WriteFailure extends Error {}
+
+// The mesher this CLI runs on: one instance of dist/ruppert-cli.wasm, which holds the mesher, the
+// text formats and the native CLI's argument parser and report printers (core/cli), so that both
+// CLIs accept the same options and print the same texts. Only this file loads it: no bundle does.
+const CLI_MODULE = Object.freeze({
+  file: 'ruppert-cli.wasm',
+  factory: createCliModule,
+  probe: 'parseCliArgs',
+  defaultUrl: () => new URL('./dist/ruppert-cli.wasm', import.meta.url),
+});
+
+/** A mesher whose readers, writers, triangulate() and CLI texts share one instance. */
+async function initCli() {
+  const host = await instanceHost({}, CLI_MODULE);
+  return createMesher(host, host, true);
+}
 
 const READERS = { poly: 'parsePoly', node: 'parseNode', json: 'parseJson', geojson: 'parseGeoJson' };
 

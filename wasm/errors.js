@@ -20,17 +20,3 @@ export class MeshError extends Error {
     this.code = code;
   }
 }
-
-// Workers post errors as plain objects (structured clone drops the class); rebuild them here.
-export function serializeError(error) {
-  if (error instanceof MeshError) return { name: 'MeshError', code: error.code, message: error.message };
-  const message = error instanceof Error ? error.message : String(error);
-  return { name: error?.name ?? 'Error', code: undefined, message };
-}
-
-export function deserializeError(data) {
-  if (data.name === 'MeshError') return new MeshError(data.code, data.message);
-  const error = new Error(data.message);
-  error.name = data.name;
-  return error;
-}

@@ -1,13 +1,35 @@
-// triangulate() through the wasm heap (see wasm/heap_triangulate.cpp): the checked input and the
-// options are written straight into the staged vectors and table, the mesh (reasons and notices
-// included) is read back from a table of (address, length) pairs and numbers. Without callbacks no
+// triangulate() through the wasm heap (see wasm/binding/heap_triangulate.cpp): the checked input
+// and the options are written straight into the staged vectors and table, the mesh (reasons and
+// notices included) is read back from a table of (address, length) pairs and numbers. Without callbacks no
 // embind call is made: the plain exports Module._rp_* cost no more than any wasm call. Only
 // failures, traces and the CLI's texts go through embind objects. Every array handed out is a copy:
 // a view into the heap would go stale when it grows.
 //
-// The tables' layouts are the binding's (wasm/heap_layout.h, read through readDescription()): a list
-// of fields per table, "name:type" for an array and "name" for a number, in the table's order.
-import { readDescription } from './describe.js';
+// The tables' layouts are the binding's (wasm/binding/heap_layout.h, read through readDescription()):
+// a list of fields per table, "name:type" for an array and "name" for a number, in the table's order.
+//
+// Imports nothing, so that wasm/build-wasm.mjs can use readDescription() before wasm/dist/names.js,
+// which it writes from that description, exists.
+
+const descriptions = new WeakMap();  // per instance: parsed once
+
+/**
+ * What the binding exports instead of JavaScript keeping copies (wasm/binding/describe.cpp): the
+ * names of the core's enums, the options (ruppert-cli.wasm only) and the layout of the heap tables,
+ * as one JSON text in the heap.
+ * @param {object} m an instantiated Emscripten module of ruppert.wasm
+ * @returns {{ names: Record<string, string[]>, options?: object[], layout: Record<string, string[]> }}
+ */
+export function readDescription(m) {
+  let description = descriptions.get(m);
+  if (description === undefined) {
+    const start = m._rp_describe(), bytes = m.HEAPU8;
+    const end = bytes.indexOf(0, start);
+    description = JSON.parse(new TextDecoder().decode(bytes.subarray(start, end)));
+    descriptions.set(m, description);
+  }
+  return description;
+}
 
 const TYPES = { f64: Float64Array, u32: Uint32Array, i32: Int32Array, u8: Uint8Array };
 // Reasons' and notices' numbers and texts are read at once, before anything can grow the heap: views,
@@ -67,7 +89,7 @@ function writeTable(m, address, { fields }, arrays, numbers) {
 // Why: V8 gives each typed array over 64 bytes a backing store of its own, about 2.3 us apiece in
 // Node 20 whatever its length (a `slice` of 16 doubles costs what one of 1,000 does), which was most
 // of a small mesh's call; one buffer is one such allocation. A worker's transfer list then holds one
-// buffer (mesh-transfer.js collects buffers in a Set).
+// buffer (mesh-worker.js collects buffers in a Set).
 function readTable(m, address, { fields }) {
   const heap = m.HEAPF64;
   const values = new Array(fields.length);

@@ -8,13 +8,12 @@
 // goes stale when the wasm heap grows. See index.d.ts for every field.
 import { NAMES } from './dist/names.js';
 import { MeshError, ERROR_CODES } from './errors.js';
-import { instanceHost } from './instance-host.js';
-import { MODULES } from './loader.js';
-import { rejectUnknownKeys } from './known-keys.js';
+import { rejectUnknownKeys } from './input-checks.js';
+import { MODULES, instanceHost } from './loader.js';
 import { createMesher } from './mesher.js';
 
 export { MeshError, ERROR_CODES };
-export { createMeshWorker } from './worker-client.js';
+export { createMeshWorker } from './mesh-worker.js';
 
 // { NAME: value } of one of the core's enums, from its names in enum order.
 const enumObject = (names) => Object.freeze(Object.fromEntries(names.map((name, value) => [name, value])));

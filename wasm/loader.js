@@ -1,6 +1,7 @@
 // Finds, compiles and instantiates the package's WebAssembly modules: dist/ruppert.wasm (the
 // mesher) and dist/ruppert-formats.wasm (the readers and writers of text formats). Each is a
-// MODULES entry: its Emscripten factory, its file name and where the package keeps it.
+// MODULES entry: its Emscripten factory, its file name and where the package keeps it. An
+// instance host (instanceHost() below) holds one compiled module and its current instance.
 //
 // The compiled WebAssembly.Module is kept so that a fresh instance can be made after an abort
 // (out of memory, a trap): instantiating an already compiled module is cheap and can be done
@@ -8,7 +9,33 @@
 import createRuppertModule from './dist/ruppert.mjs';
 import createFormatsModule from './dist/ruppert-formats.mjs';
 import { MeshError } from './errors.js';
-import { absoluteUrl, classicScriptUrl, getNodeHost } from './host.js';
+
+// What only Node can do: read a file: URL, start a worker_threads worker. The package's "node"
+// export (node.js) registers it; browser bundles never import node.js, so they hold no Node code.
+let nodeHost = null;
+
+/** @param {{ readFile(url: URL): Promise<Uint8Array>, spawnWorker(url?: string | URL): object }} host */
+export function registerNodeHost(host) {
+  nodeHost = host;
+}
+
+/** The registered Node host, or null in browsers (and in Node before node.js is loaded). */
+export function getNodeHost() {
+  return nodeHost;
+}
+
+// Where a classic-script bundle (esbuild's default iife format, which has no import.meta.url) was
+// loaded from; document.currentScript is only set while that script first runs, so read it now.
+export const classicScriptUrl = globalThis.document?.currentScript?.src || globalThis.location?.href;
+
+/** A URL as the platform resolves it (relative to the page or worker), for error messages. */
+export function absoluteUrl(url) {
+  try {
+    return new URL(url, globalThis.location?.href).href;
+  } catch {
+    return String(url);
+  }
+}
 
 // Where the package keeps `file`. `packaged` returns the literal new URL('./dist/<file>',
 // import.meta.url), written out per file so that bundlers that copy assets (vite, webpack) see it and
@@ -165,4 +192,86 @@ export function instantiateSync(compiled, kind = MODULES.mesher) {
   kind.factory(module).catch(() => {});
   if (typeof module[kind.probe] !== 'function') throw new Error('synchronous instantiation failed');
   return module;
+}
+
+/**
+ * One compiled WebAssembly module and its current instance. Anything that escapes a binding (an
+ * abort, a trap, a stack overflow) leaves the instance in an unknown state, so it is dropped and
+ * the next call runs on a fresh instance of the same compiled module.
+ * @param {WebAssembly.Module} compiled
+ * @param {object} kind the module's entry in MODULES
+ * @param {object} firstModule an instantiated Emscripten module of it (instantiate())
+ */
+function createInstanceHost(compiled, kind, firstModule) {
+  let module = firstModule;
+  let replacement = null;
+
+  // Forget the current instance and start preparing the next one in the background, so that a
+  // browser main thread (where synchronous instantiation may be refused) has it ready in time.
+  function discard() {
+    module = null;
+    const pending = instantiate(compiled, kind).then((fresh) => {
+      if (module === null) module = fresh;
+      if (replacement === pending) replacement = null;
+    });
+    pending.catch(() => { if (replacement === pending) replacement = null; });
+    replacement = pending;
+  }
+
+  function current() {
+    if (module !== null) return module;
+    try {
+      module = instantiateSync(compiled, kind);
+      return module;
+    } catch (cause) {
+      throw new MeshError('INTERNAL',
+        'the WebAssembly module is being re-instantiated after an abort; await mesher.ready and retry', { cause });
+    }
+  }
+
+  // Runs body(module); an exception out of it (an abort, a trap) discards the instance.
+  function run(name, body) {
+    const m = current();
+    let result;
+    try {
+      result = body(m);
+    } catch (cause) {
+      discard();
+      const detail = cause instanceof Error ? cause.message : String(cause);
+      throw new MeshError('INTERNAL',
+        `the WebAssembly module aborted in ${name}() (${detail}); the next call runs on a fresh instance`, { cause });
+    }
+    if (result && result.reset) discard();
+    return result;
+  }
+
+  return {
+    run,
+    call: (name, ...args) => run(name, (m) => m[name](...args)),
+    current,
+    /** Resolves once an instance is available (only ever pending right after an abort). */
+    get ready() {
+      return module !== null || replacement === null ? Promise.resolve() : replacement;
+    },
+  };
+}
+
+/**
+ * Compiles and instantiates one of MODULES from `options` (wasmUrl, locateFile,
+ * wasmBinary, wasmModule; fallbackUrl where they name no source) and returns its host.
+ */
+export async function instanceHost(options, kind, fallbackUrl = undefined) {
+  const compiled = await compileWasm(options, kind, fallbackUrl);
+  let first;
+  try {
+    first = await instantiate(compiled, kind);
+  } catch (cause) {
+    // No memory for the instance (RangeError) is not the module's fault: passed on as it is.
+    if (cause instanceof RangeError) throw cause;
+    // A WebAssembly module, but not this one (a locateFile that answers one URL for every file,
+    // the other module's bytes, another version's): its imports do not match the glue's.
+    throw new MeshError('IO_ERROR', `the WebAssembly module given for ${kind.file} is not this package's ${kind.file} ` +
+      `(${cause?.message ?? cause}); locateFile is called with each file's name`, { cause });
+  }
+  return createInstanceHost(compiled, kind, first);
 }

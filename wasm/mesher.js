@@ -1,12 +1,11 @@
 // The object init() resolves to: triangulate(), the readers and writers, over the mesher's and the
-// text formats' wasm instances (instance-host.js replaces an instance after an abort).
+// text formats' wasm instances (loader.js's instance hosts replace an instance after an abort).
 //
 // Every binding returns a plain object; a failure is { errorCode, errorMessage, reset? } and
 // becomes a MeshError here.
 import { MeshError } from './errors.js';
 import { triangulateInHeap } from './heap-call.js';
-import { rejectUnknownKeys } from './known-keys.js';
-import { checkMesh, checkOptions, checkPlc } from './input-checks.js';
+import { checkMesh, checkOptions, checkPlc, rejectUnknownKeys } from './input-checks.js';
 
 // The binding's name -> what the user called, for the message of a mesher without formats.
 const PUBLIC_NAMES = { readPlc: 'parsePoly, parseNode and parseJson', readPolyWithNode: 'parsePoly',
@@ -26,13 +25,13 @@ function requireText(text, what) {
 }
 
 /**
- * @param {object} mesher the mesher module's host (instance-host.js): triangulate(), GeoJSON
+ * @param {object} mesher the mesher module's instance host (loader.js): triangulate(), GeoJSON
  * @param {object | null} formats the text formats module's host, or null (init({ formats: false }));
  *   the same host as `mesher` for wasm/cli.js's module, which holds both
  * @param {boolean} [cli] add what wasm/cli.js uses (its module holds the CLI's parser and texts)
  */
 export function createMesher(mesher, formats, cli = false) {
-  // The readers and writers other than GeoJSON's (see wasm/geojson_reader.cpp) are in `formats`.
+  // The readers and writers other than GeoJSON's (wasm/binding/geojson_reader.cpp) are in `formats`.
   function call(name, ...args) {
     if (formats === null) {
       throw new MeshError('INVALID_OPTION', `this mesher was made with init({ formats: false }), which loads no text formats: ` +

@@ -4,7 +4,7 @@
 import { readFile } from 'node:fs/promises';
 import { Worker } from 'node:worker_threads';
 import { MeshError } from './errors.js';
-import { registerNodeHost } from './host.js';
+import { registerNodeHost } from './loader.js';
 
 function spawnWorker(workerUrl) {
   // worker_threads reads a string as a path: a 'file:' string is meant as a URL.

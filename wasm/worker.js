@@ -1,8 +1,8 @@
-// Browser side of createMeshWorker(): a module Web Worker (see worker-serve.js for the messages).
+// Browser side of createMeshWorker(): a module Web Worker (see mesh-worker.js for the messages).
 // No top-level await and no Node code, so that bundlers can build it in any worker format;
 // Node uses worker-node.js.
 import { init } from './index.js';
-import { meshRequestHandler } from './worker-serve.js';
+import { meshRequestHandler } from './mesh-worker.js';
 
 const handle = meshRequestHandler(init, (data, transfer = []) => self.postMessage(data, transfer));
 // Listen synchronously, so no message can arrive before the listener exists.

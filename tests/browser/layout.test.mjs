@@ -124,7 +124,7 @@ test('the server sends the right types and refuses paths outside the repository'
 test('the server serves only the page and the published package files', async () => {
   const get = (path) => fetch(`${harness.baseUrl}${path}`);
   for (const path of ['/.git/config', '/.git/HEAD', '/.gitignore', '/.ci/run', '/package.json', '/package-lock.json',
-    '/node_modules/playwright-core/package.json', '/README.md', '/core/src/refine/refine.cpp', '/wasm/bindings.cpp',
+    '/node_modules/playwright-core/package.json', '/README.md', '/core/src/refine/refine.cpp', '/wasm/binding/bindings.cpp',
     '/tests/browser/harness.mjs', '/web/.hidden', '/wasm/']) {
     const response = await get(path);
     assert.equal(response.status, 404, `${path} answered ${response.status}`);

@@ -1,6 +1,6 @@
 // One set of names per enum (issue 18): the core declares them (core/include/ruppert/ruppert.h's
-// k...Names), the binding exports them (wasm/describe.cpp), and the package's JavaScript and its
-// index.d.ts must use exactly those. The .d.ts has to spell them out (TypeScript needs literal
+// k...Names), the binding exports them (wasm/binding/describe.cpp), and the package's JavaScript and
+// its index.d.ts must use exactly those. The .d.ts has to spell them out (TypeScript needs literal
 // unions), so this test reads its text and fails on any name that differs, is missing or is extra.
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -12,7 +12,7 @@ const installed = new URL('./node_modules/ruppert/', import.meta.url);
 // The binding's own description, from an instance made here (not through the package's names.js).
 async function bindingNames() {
   const { compileWasm, instantiate } = await import(new URL('wasm/loader.js', installed));
-  const { readDescription } = await import(new URL('wasm/describe.js', installed));
+  const { readDescription } = await import(new URL('wasm/heap-call.js', installed));
   const wasmBinary = readFileSync(new URL('wasm/dist/ruppert.wasm', installed));
   return readDescription(await instantiate(await compileWasm({ wasmBinary }))).names;
 }
@@ -36,6 +36,23 @@ function declaredEnum(name) {
   assert.ok(at >= 0, `index.d.ts has no ${start}`);
   const text = declarations.slice(at + start.length, declarations.indexOf('}>', at));
   return Object.fromEntries([...text.matchAll(/(\w+):\s*(\d+)/g)].map((m) => [m[1], Number(m[2])]));
+}
+
+// ruppert-cli.wasm, the module wasm/cli.js runs on, as a MODULES-like entry of wasm/loader.js.
+async function cliModule() {
+  const { default: factory } = await import(new URL('wasm/dist/ruppert-cli.mjs', installed));
+  const kind = { file: 'ruppert-cli.wasm', factory, probe: 'parseCliArgs' };
+  return { kind, wasmBinary: readFileSync(new URL('wasm/dist/ruppert-cli.wasm', installed)) };
+}
+
+// A mesher on ruppert-cli.wasm with what wasm/cli.js uses (_parseCliArgs), made as cli.js makes
+// its own (cli.js runs its command line when imported, so it exports nothing).
+async function cliMesher() {
+  const { instanceHost } = await import(new URL('wasm/loader.js', installed));
+  const { createMesher } = await import(new URL('wasm/mesher.js', installed));
+  const { kind, wasmBinary } = await cliModule();
+  const host = await instanceHost({ wasmBinary }, kind);
+  return createMesher(host, host, true);
 }
 
 const asEnum = (names) => Object.fromEntries(names.map((name, value) => [name, value]));
@@ -79,8 +96,7 @@ test('placement, encroachment and variant: the core\'s names, accepted by triang
   const names = await bindingNames();
   const mesher = await init();
   // The native CLI's parser is in the module wasm/cli.js runs on (ruppert-cli.wasm).
-  const { initCli } = await import(new URL('wasm/cli-mesher.js', installed));
-  const cli = await initCli();
+  const cli = await cliMesher();
   const square = { points: [0, 0, 1, 0, 1, 1, 0, 1], segments: [0, 1, 1, 2, 2, 3, 3, 0] };
   for (const [option, key] of [['placement', 'placements'], ['encroachment', 'encroachments'], ['variant', 'variants']]) {
     const core = names[key];
@@ -127,10 +143,8 @@ test("the page's words (web/labels.js) are keyed by the core's names", async () 
 // Only the CLI's module (ruppert-cli.wasm) describes them, which keeps the mesher small.
 async function bindingOptions() {
   const { compileWasm, instantiate } = await import(new URL('wasm/loader.js', installed));
-  const { readDescription } = await import(new URL('wasm/describe.js', installed));
-  const { default: factory } = await import(new URL('wasm/dist/ruppert-cli.mjs', installed));
-  const kind = { file: 'ruppert-cli.wasm', factory, probe: 'parseCliArgs' };
-  const wasmBinary = readFileSync(new URL('wasm/dist/ruppert-cli.wasm', installed));
+  const { readDescription } = await import(new URL('wasm/heap-call.js', installed));
+  const { kind, wasmBinary } = await cliModule();
   return readDescription(await instantiate(await compileWasm({ wasmBinary }, kind), kind)).options;
 }
 
@@ -193,8 +207,7 @@ test("index.d.ts's comments give the table's defaults and ranges", async () => {
 test("triangulate() and the CLI's parser default every option as the table says", async () => {
   const options = await bindingOptions();
   const mesher = await init();
-  const { initCli } = await import(new URL('wasm/cli-mesher.js', installed));
-  const parsed = (await initCli())._parseCliArgs(['in.poly']).options;
+  const parsed = (await cliMesher())._parseCliArgs(['in.poly']).options;
   const square = { points: [0, 0, 1, 0, 1, 1, 0, 1], segments: [0, 1, 1, 2, 2, 3, 3, 0] };
   const explicit = {};
   for (const option of options) {

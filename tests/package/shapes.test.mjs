@@ -102,7 +102,7 @@ test('the export conditions: Node gets node.js and worker-node.js, browsers inde
   assert.equal(manifest.exports['.'].browser, './wasm/index.js');
   assert.equal(manifest.exports['./worker.js'].browser, './wasm/worker.js');
   // What browsers load has no Node module in it (the bundler tests build it; this is the source).
-  for (const file of ['index.js', 'loader.js', 'mesher.js', 'instance-host.js', 'worker-client.js', 'worker.js', 'worker-serve.js', 'host.js']) {
+  for (const file of ['index.js', 'errors.js', 'input-checks.js', 'loader.js', 'mesher.js', 'heap-call.js', 'mesh-worker.js', 'worker.js']) {
     const text = readFileSync(new URL(`./node_modules/ruppert/wasm/${file}`, import.meta.url), 'utf8');
     assert.doesNotMatch(text, /(from|import\()\s*['"]node:/, file);
   }

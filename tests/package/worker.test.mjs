@@ -97,7 +97,7 @@ test('terminate() rejects pending requests with CANCELLED', async () => {
 });
 
 test('the worker loads the mesher alone (init with formats: false), keeping the load options it is given', async () => {
-  const { meshRequestHandler } = await import(new URL('./node_modules/ruppert/wasm/worker-serve.js', import.meta.url));
+  const { meshRequestHandler } = await import(new URL('./node_modules/ruppert/wasm/mesh-worker.js', import.meta.url));
   const { init } = await import('ruppert');
   const seen = [];
   const posted = [];

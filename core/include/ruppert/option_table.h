@@ -1,8 +1,8 @@
 // Every option of triangulate(), the npm package and the `ruppert` CLI, written once. Options'
 // defaults (ruppert.h), the CLI's parsing, usage line and --help (core/cli/cli_args.cpp), the
-// binding's heap table (wasm/heap_layout.h, heap_triangulate.cpp) and the package's option checks
-// (wasm/input-checks.js, through the description wasm/describe.cpp exports) are all made from these
-// lists; index.d.ts, which TypeScript needs spelled out, is compared with them by
+// binding's heap table (wasm/binding/heap_layout.h, heap_triangulate.cpp) and the package's option
+// checks (wasm/input-checks.js, through the description wasm/binding/describe.cpp exports) are all
+// made from these lists; index.d.ts, which TypeScript needs spelled out, is compared with them by
 // tests/package/names.test.mjs. Included by ruppert.h after the enums and sentinels it names.
 //
 // Each list calls X(key, flag, fallback, low, high, unit, help) per option:

@@ -39,8 +39,8 @@ inline constexpr std::uint64_t kAutoSteinerBudget = std::numeric_limits<std::uin
 // ---------------------------------------------------------------------------------------------
 // Every enum below has its names written once, in a table beside it (k...Names, in the enum's order)
 // and read through enumName(). The CLI prints them, and the WebAssembly binding exports the tables to
-// the npm package (wasm/describe.cpp), whose constants, option checks and index.d.ts use the same
-// names (tests/package/names.test.mjs compares them). A published name never changes; a new
+// the npm package (wasm/binding/describe.cpp), whose constants, option checks and index.d.ts use the
+// same names (tests/package/names.test.mjs compares them). A published name never changes; a new
 // enumerator gets a new name at the end of its table.
 namespace detail {
 template <class Enum, std::size_t N>

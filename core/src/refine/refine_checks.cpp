@@ -158,6 +158,11 @@ bool Refiner::splitForbidden(std::uint32_t h) const {
   return o_.noBoundarySteiner && onDomainBoundary(h);
 }
 
+const char* Refiner::forbiddenRule() const {
+  return o_.noSegmentSteiner ? "no new vertex may lie on a segment"
+                             : "no new vertex may lie on the domain's boundary";
+}
+
 // ---- exemptions (§6.6) -------------------------------------------------------------------------
 // The triangle's smallest angle is an input angle: both edges at that corner are subsegments.
 bool Refiner::nestledInInputAngle(std::uint32_t s, const TriangleShape& sh) const {

@@ -91,8 +91,7 @@ void Refiner::finish() {
   else if (unmet > 0 && forbiddenHits_ > 0)
     add(ReasonKind::SegmentSplitForbidden, unmet,
         std::to_string(unmet) + " triangle(s) do not meet the bounds: " + std::to_string(forbiddenHits_) +
-            " split(s) of subsegments were refused because " +
-            (o_.noSegmentSteiner ? "no new vertex may lie on a segment" : "no new vertex may lie on the domain's boundary") +
+            " split(s) of subsegments were refused because " + forbiddenRule() +
             " (no-segment-steiner / no-boundary-steiner), and the vertices that would have caused them were not inserted");
   // Refused insertions that leave every bound met (a split of an encroached subsegment that no
   // bad triangle waits on) leave nothing unmet: the mesh is complete.

@@ -100,7 +100,7 @@ class Refiner {
   std::uint64_t steps_ = 0;  // steps (insertions, moves) in the mesh run() returns
   bool cancelled_ = false, budgetHit_ = false;
   std::uint64_t floorHits_ = 0;  // insertions refused at the precision limit
-  std::uint64_t forbiddenHits_ = 0;  // splits refused by noBoundarySteiner / noSegmentSteiner
+  std::uint64_t forbiddenHits_ = 0;  // splits refused by splitForbidden()
   bool refusedSplit_ = false;        // the current bad triangle's point asked for a refused split
   std::vector<EdgeRef> encroached_;
   BadTriangleQueue bad_;
@@ -209,16 +209,11 @@ class Refiner {
   bool extendBudget();
   std::string guardMessage(std::uint64_t unmet) const;
 
-  // ---- forbidden splits (Options::noBoundarySteiner, noSegmentSteiner) ---------------------------
-  // Such a subsegment is never split. A point that encroaches it, lies beyond it or on it is not
-  // inserted; instead a triangle over its area bound gets a point pulled back towards its centroid
-  // (halfway or a quarter of the way, if that encroaches no subsegment, else the centroid itself)
-  // (placeAwayFromForbidden); a triangle that is only skinny stays as it is.
-  // Only centroids of triangles over their area bound may lie in a forbidden subsegment's lens; what
-  // stays bad is reported as SegmentSplitForbidden. The Steiner budget and the length floor bound
-  // the work regardless.
+  // ---- forbidden splits (Triangle's -Y and -YY; what is done instead: refine_checks.cpp) ---------
   bool onDomainBoundary(std::uint32_t h) const;
   bool splitForbidden(std::uint32_t h) const;
+  // What splitForbidden() keeps, in words, for the SegmentSplitForbidden reason.
+  const char* forbiddenRule() const;
 
   // The fallback of a triangle whose point was refused (see above): between the point and the
   // triangle's centroid, the first of three points that lies in the domain on this side and

@@ -1,12 +1,35 @@
-// createMeshWorker(): triangulate off the main thread.
+// createMeshWorker(): triangulate off the main thread. Both sides are here: the client the page
+// holds, and the request loop that the worker scripts run (worker.js in a browser, worker-node.js
+// in Node), so that the messages between them are written in one place. The worker meshes one
+// request at a time (triangulate is synchronous) and answers
+//   { type: 'progress', id, progress }                       while refining
+//   { type: 'result', id, mesh }    (buffers transferred)    on success
+//   { type: 'error', id, error }    (serialised MeshError)   on failure
+// Requests: { type: 'init', options } once, then { type: 'triangulate', id, plc, options, progress }.
 //
 // Cancellation is by termination: refinement is one synchronous wasm call, so the only prompt way
 // to stop it is to end the worker. The cancelled request rejects with MeshError 'CANCELLED', and
 // requests queued behind it are re-sent to a fresh worker.
-import { MeshError, deserializeError } from './errors.js';
-import { absoluteUrl, classicScriptUrl, getNodeHost } from './host.js';
-import { rejectUnknownKeys } from './known-keys.js';
-import { checkOptions, checkPlc } from './input-checks.js';
+import { MeshError } from './errors.js';
+import { checkOptions, checkPlc, rejectUnknownKeys } from './input-checks.js';
+import { absoluteUrl, classicScriptUrl, getNodeHost } from './loader.js';
+
+// Workers post errors as plain objects (structured clone drops the class): the worker serialises
+// them, the client rebuilds them.
+function serializeError(error) {
+  if (error instanceof MeshError) return { name: 'MeshError', code: error.code, message: error.message };
+  const message = error instanceof Error ? error.message : String(error);
+  return { name: error?.name ?? 'Error', code: undefined, message };
+}
+
+function deserializeError(data) {
+  if (data.name === 'MeshError') return new MeshError(data.code, data.message);
+  const error = new Error(data.message);
+  error.name = data.name;
+  return error;
+}
+
+// ---- the client's side ----
 
 // The bundled default: the literal pattern that vite and webpack turn into a worker entry. Both
 // rewrite only this exact form (`new Worker(new URL('...', import.meta.url), { type: 'module' })`).
@@ -186,5 +209,50 @@ export function createMeshWorker(options = {}) {
       for (const id of [...jobs.keys()]) settle(id).reject(new MeshError('CANCELLED', 'mesh worker terminated'));
       return old ? old.then((handle) => handle.terminate()).then(() => {}) : Promise.resolve();
     },
+  };
+}
+
+// ---- the worker's side ----
+
+// The ArrayBuffers inside a mesh result, for postMessage's transfer list: a worker hands them
+// over instead of copying (a 2-million-triangle mesh is ~70 MB of typed arrays).
+function meshBuffers(mesh) {
+  const buffers = new Set();
+  const visit = (value) => {
+    if (ArrayBuffer.isView(value)) buffers.add(value.buffer);
+    else if (value !== null && typeof value === 'object' && !Array.isArray(value)) Object.values(value).forEach(visit);
+  };
+  visit(mesh);
+  return [...buffers];
+}
+
+/**
+ * @param {(options?: object) => Promise<object>} init the package's init()
+ * @param {(data: object, transfer?: ArrayBuffer[]) => void} post sends a message to the client
+ * @returns {(message: object) => Promise<void>} handles one message from the client
+ */
+export function meshRequestHandler(init, post) {
+  let mesherPromise = null;
+  // A worker only meshes: the text formats module stays unloaded.
+  const initMesher = (options = {}) => init({ formats: false, ...options });
+  return async function handle(message) {
+    if (message.type === 'init') {
+      mesherPromise = initMesher(message.options);
+      mesherPromise.catch(() => {});  // reported with the first request
+      return;
+    }
+    if (message.type !== 'triangulate') return;
+    const { id } = message;
+    try {
+      const mesher = await (mesherPromise ??= initMesher());
+      const options = { ...message.options };
+      if (message.progress) {
+        options.onProgress = (progress) => { post({ type: 'progress', id, progress }); };
+      }
+      const mesh = mesher.triangulate(message.plc, options);
+      post({ type: 'result', id, mesh }, meshBuffers(mesh));
+    } catch (error) {
+      post({ type: 'error', id, error: serializeError(error) });
+    }
   };
 }
