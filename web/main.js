@@ -4,28 +4,28 @@
 // (MeshScheduler: debounced, in a worker) -> the renderer, the mesh panel, the display panel,
 // step mode, the status line, and a postMessage to a host.
 import { cloneDrawing, drawingBounds, emptyDrawing, fromPlc } from './drawing.js';
-import { createCompareView } from './compare-view.js';
-import { createDisplayPanel } from './display-panel.js';
-import { Editor } from './editor.js';
-import { isEditable, isEmbedded, listenToHost, postError, postMesh, postReady } from './embed.js';
-import { createExportMenu } from './export-menu.js';
-import { createFilePanel } from './file-panel.js';
-import { parsePolyText } from './files.js';
-import { History } from './history.js';
-import { createHoverInfo } from './hover-info.js';
-import { createMeshPanel } from './mesh-panel.js';
-import { createMeshing, loading } from './meshing.js';
-import { createPageLink } from './page-link.js';
-import { createParametersPanel } from './parameters-panel.js';
-import { createPresetBox } from './preset-box.js';
-import { PRESETS, findPreset } from './presets.js';
-import { Renderer } from './render.js';
-import { createStartHere } from './start-here.js';
-import { setStatus } from './status-line.js';
-import { createStepsPanel } from './steps-panel.js';
-import { createToolbar } from './toolbar.js';
-import { decodePageState } from './url-state.js';
-import { View } from './view.js';
+import { createCompareView } from './rendering/compare-view.js';
+import { createDisplayPanel } from './panels/display-panel.js';
+import { Editor } from './editing/editor.js';
+import { isEditable, isEmbedded, listenToHost, postError, postMesh, postReady } from './io/embed.js';
+import { createExportMenu } from './io/export-menu.js';
+import { createFilePanel } from './io/file-panel.js';
+import { parsePolyText } from './io/files.js';
+import { History } from './editing/history.js';
+import { createHoverInfo } from './panels/hover-info.js';
+import { createMeshPanel } from './panels/mesh-panel.js';
+import { createMeshing, loading } from './meshing/meshing.js';
+import { createPageLink } from './io/page-link.js';
+import { createParametersPanel } from './panels/parameters-panel.js';
+import { createPresetBox } from './panels/preset-box.js';
+import { PRESETS, findPreset } from './panels/presets.js';
+import { Renderer } from './rendering/render.js';
+import { createStartHere } from './panels/start-here.js';
+import { setStatus } from './panels/status-line.js';
+import { createStepsPanel } from './steps/steps-panel.js';
+import { createToolbar } from './editing/toolbar.js';
+import { decodePageState } from './io/url-state.js';
+import { View } from './rendering/view.js';
 
 const $ = (id) => document.getElementById(id);
 

@@ -4,11 +4,11 @@
 // While it shows, it takes the main canvas's place; every change of the drawing or its options
 // meshes both again (in a worker of its own, so a slow placement never blocks the page), and
 // closing it brings the main canvas back.
-import { createMeshWorker } from '../wasm/index.js';
-import { boundsOf } from './bounds.js';
-import { toMeshOptions, toPlc } from './drawing.js';
-import { PLACEMENT_LABELS } from './labels.js';
-import { minAngles } from './mesh-geometry.js';
+import { createMeshWorker } from '../../wasm/index.js';
+import { boundsOf } from '../geometry/bounds.js';
+import { toMeshOptions, toPlc } from '../drawing.js';
+import { PLACEMENT_LABELS } from '../labels.js';
+import { minAngles } from '../geometry/mesh-geometry.js';
 import { ANGLE_CLASSES, COLOURS } from './render.js';
 
 const $ = (id) => document.getElementById(id);

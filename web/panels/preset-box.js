@@ -1,8 +1,8 @@
 // The presets box: the chapter's figures and other examples (presets.js) with their captions,
 // and, when the server offers it, the corpus of real PLCs beside the repository.
-import { DEFAULT_OPTIONS, fromPlc } from './drawing.js';
-import { parseInput } from './files.js';
-import { loading } from './meshing.js';
+import { DEFAULT_OPTIONS, fromPlc } from '../drawing.js';
+import { parseInput } from '../io/files.js';
+import { loading } from '../meshing/meshing.js';
 import { DEFAULT_PRESET, PRESETS, findPreset } from './presets.js';
 import { setStatus } from './status-line.js';
 

@@ -1,8 +1,8 @@
 // The export buttons: the mesh in each of the package's formats or as a PNG of the canvas, the
 // drawing itself as a .poly, and the link to the page as it is.
-import { toPlc } from './drawing.js';
+import { toPlc } from '../drawing.js';
 import { canvasBlob, download, drawingPolyText, exportText } from './files.js';
-import { setStatus } from './status-line.js';
+import { setStatus } from '../panels/status-line.js';
 
 const $ = (id) => document.getElementById(id);
 const FORMATS = ['poly', 'json', 'svg', 'png', 'node', 'ele', 'msh', 'vtu', 'geojson'];

@@ -1,9 +1,9 @@
 // Opening files: the file picker and drag-and-drop onto the canvas (files.js reads them with the
 // package's readers).
-import { fromPlc } from './drawing.js';
+import { fromPlc } from '../drawing.js';
 import { parseInput } from './files.js';
-import { loading } from './meshing.js';
-import { setStatus, showNotices } from './status-line.js';
+import { loading } from '../meshing/meshing.js';
+import { setStatus, showNotices } from '../panels/status-line.js';
 
 const $ = (id) => document.getElementById(id);
 
