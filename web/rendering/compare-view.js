@@ -68,10 +68,10 @@ export function compareCaption(placement, mesh) {
 }
 
 /**
- * @param {object} app the page's state (drawing)
+ * @param {() => object} drawing the drawing to mesh once per placement
  * @param {() => void} onClose the comparison was closed by the reader (the preset box may say so)
  */
-export function createCompareView({ app, onClose = () => {} }) {
+export function createCompareView({ drawing, onClose = () => {} }) {
   const figure = $('compare');
   const sides = [...figure.querySelectorAll('.compare-side')].map((side) => ({
     canvas: side.querySelector('canvas'), caption: side.querySelector('figcaption'), mesh: null,
@@ -98,10 +98,11 @@ export function createCompareView({ app, onClose = () => {} }) {
     worker ??= createMeshWorker();
     busy = true;
     figure.dataset.state = 'meshing';
-    const plc = toPlc(app.drawing);
+    const shown = drawing();
+    const plc = toPlc(shown);
     const meshes = [];
     for (const placement of placements) {
-      const options = { ...toMeshOptions(app.drawing), placement };
+      const options = { ...toMeshOptions(shown), placement };
       meshes.push(await worker.triangulate(plc, options).catch(() => null));
       if (mine !== generation) return;
     }
