@@ -12,7 +12,7 @@
 //   options  { minAngle, maxArea, placement, maxSteiner, variant, encroachment }
 //            maxArea/maxSteiner: null = none/automatic; variant 'cdt' | 'box'; encroachment 'lens' | 'disk'
 import { OPTIONS } from '../wasm/dist/names.js';
-import { boundsOf, hasBounds, includePoint } from './bounds.js';
+import { boundsOf, hasBounds, includePoint } from './geometry/bounds.js';
 
 // The package's options as the binding describes them (core/include/ruppert/option_table.h): the
 // page takes its defaults and the angle's range from there rather than writing them again.

@@ -1,31 +1,37 @@
-// The page: creates the drawing, the editor, the renderer and the panels, and wires them.
+// The page's composition root: it creates every part (the editor, the history, the renderer, the
+// panels, the meshing, step mode, the link, the embed protocol) and wires them together: each part
+// is handed here the values, callbacks and other parts it uses, rather than importing them.
 //
-// Data flow: an edit changes `drawing` -> history + URL hash (page-link.js) -> meshing.js
-// (MeshScheduler: debounced, in a worker) -> the renderer, the mesh panel, the display panel,
-// step mode, the status line, and a postMessage to a host.
+// Data flow: an edit changes `app.drawing` -> history + URL hash (io/page-link.js) ->
+// meshing/meshing.js (MeshScheduler: throttled, in a worker) -> the renderer, the mesh panel, the
+// display panel, step mode, the status line, and a postMessage to a host.
+//
+// Folders: editing/ (editor, toolbar, history), panels/, rendering/, steps/ (step mode), meshing/,
+// io/ (files, the URL hash, the embed protocol), geometry/ (measures of a mesh, no DOM); drawing.js
+// (the model) and labels.js (the page's words) are shared by all of them.
 import { cloneDrawing, drawingBounds, emptyDrawing, fromPlc } from './drawing.js';
-import { createCompareView } from './compare-view.js';
-import { createDisplayPanel } from './display-panel.js';
-import { Editor } from './editor.js';
-import { isEditable, isEmbedded, listenToHost, postError, postMesh, postReady } from './embed.js';
-import { createExportMenu } from './export-menu.js';
-import { createFilePanel } from './file-panel.js';
-import { parsePolyText } from './files.js';
-import { History } from './history.js';
-import { createHoverInfo } from './hover-info.js';
-import { createMeshPanel } from './mesh-panel.js';
-import { createMeshing, loading } from './meshing.js';
-import { createPageLink } from './page-link.js';
-import { createParametersPanel } from './parameters-panel.js';
-import { createPresetBox } from './preset-box.js';
-import { PRESETS, findPreset } from './presets.js';
-import { Renderer } from './render.js';
-import { createStartHere } from './start-here.js';
-import { setStatus } from './status-line.js';
-import { createStepsPanel } from './steps-panel.js';
-import { createToolbar } from './toolbar.js';
-import { decodePageState } from './url-state.js';
-import { View } from './view.js';
+import { createCompareView } from './rendering/compare-view.js';
+import { createDisplayPanel } from './panels/display-panel.js';
+import { Editor } from './editing/editor.js';
+import { isEditable, isEmbedded, listenToHost, postError, postMesh, postReady } from './io/embed.js';
+import { createExportMenu } from './io/export-menu.js';
+import { createFilePanel } from './io/file-panel.js';
+import { parsePolyText } from './io/files.js';
+import { History } from './editing/history.js';
+import { createHoverInfo } from './panels/hover-info.js';
+import { createMeshPanel } from './panels/mesh-panel.js';
+import { createMeshing, loading } from './meshing/meshing.js';
+import { createPageLink } from './io/page-link.js';
+import { createParametersPanel } from './panels/parameters-panel.js';
+import { createPresetBox } from './panels/preset-box.js';
+import { PRESETS, findPreset } from './panels/presets.js';
+import { Renderer } from './rendering/render.js';
+import { createStartHere } from './panels/start-here.js';
+import { setStatus } from './panels/status-line.js';
+import { createStepsPanel } from './steps/steps-panel.js';
+import { createToolbar } from './editing/toolbar.js';
+import { decodePageState } from './io/url-state.js';
+import { View } from './rendering/view.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -55,22 +61,24 @@ const readOnly = !isEditable();
 // `&edit=1`: the reader draws, so the embed shows the drawing tools and the edit buttons too.
 if (embedded && !readOnly) document.body.classList.add('editable');
 
+// The state the parts share, each field with the part that writes it; the parts that only read a
+// field or two are handed getters instead. The functions after the state are the editor's way out
+// (editing/editor.js takes this object as its host).
 const app = {
   canvas,
   view,
-  drawing: emptyDrawing(),
-  snap: false,
-  mesh: null,           // the latest mesh, or null
-  meshedPlc: null,      // the input it was made from (for exports)
-  notices: [],
-  colorMode: 'angle',
-  stepMode: false,
-  stepMesh: null,       // step mode: the mesh of the step on screen (StepReplay), else null
-  pendingStep: null,    // a step to show once the mesh with its trace arrives (link, host)
-  hoverTriangle: -1,
-  exemptions: null,     // triangles left skinny on purpose (§6.6) in app.mesh, or null
-  writtenHash: '',
-  viewMoved: false,     // set by the editor on pan and zoom
+  drawing: emptyDrawing(),  // main.js (setDrawing, restore), edited in place by the editor
+  snap: false,              // toolbar
+  mesh: null,               // meshing: the latest mesh, or null
+  meshedPlc: null,          // meshing: the input it was made from (for exports)
+  notices: [],              // meshing
+  colorMode: 'angle',       // display panel
+  stepMode: false,          // steps panel
+  stepMesh: null,           // steps panel (meshing clears it): the mesh of the step on screen, else null
+  pendingStep: null,        // steps panel and main.js: a step to show once the mesh with its trace arrives (link, host)
+  hoverTriangle: -1,        // hover line (a new mesh or step resets it)
+  exemptions: null,         // meshing: triangles left skinny on purpose (§6.6) in app.mesh, or null
+  viewMoved: false,         // the editor on pan and zoom, main.js on fit
   changed: ({ commit }) => {
     if (commit) presets.notPreset();  // an edit on the canvas: no longer the preset
     changed(commit);
@@ -193,7 +201,7 @@ const meshPanel = createMeshPanel();
 const steps = createStepsPanel({
   app, renderer, meshPanel, scheduleDraw, writeLinkSoon: link.writeSoon, remeshNow: () => meshing.remesh(0, { quiet: true }),
 });
-const compare = createCompareView({ app });
+const compare = createCompareView({ drawing: () => app.drawing });
 const meshing = createMeshing({
   app, renderer, meshPanel, display, steps, scheduleDraw, onMeshed: () => compare.update(),
   onArrival: bench ? () => {
@@ -206,10 +214,12 @@ const toolbar = createToolbar({
   syncRegion: parameters.syncRegion, stepShortcut: steps.shortcut, notPreset: () => presets.notPreset(),
 });
 const presets = createPresetBox({
-  app, setDrawing, restartSteps: steps.restart, setStages: steps.setStages, compare, shared: !embedded,
+  drawingOptions: () => app.drawing.options, setDrawing, restartSteps: steps.restart, setStages: steps.setStages, compare, shared: !embedded,
 });
-createFilePanel({ app, setDrawing, notPreset: presets.notPreset });
-createExportMenu({ app, renderer, draw, writeLink: link.write });
+createFilePanel({ drawingOptions: () => app.drawing.options, setDrawing, notPreset: presets.notPreset });
+createExportMenu({
+  meshed: () => ({ mesh: app.mesh, plc: app.meshedPlc }), drawing: () => app.drawing, renderer, draw, writeLink: link.write,
+});
 createStartHere({ embedded });
 
 // ---------------------------------------------------------------- embedding (embed.js)

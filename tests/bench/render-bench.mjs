@@ -62,8 +62,8 @@ async function round(harness, renderer) {
     const zoomed = await run();
     let hover = null;
     if (renderer.gl) {
-      const { locateTriangle } = await import('./mesh-index.js');
-      const { findTriangle } = await import('./mesh-geometry.js');
+      const { locateTriangle } = await import('./geometry/mesh-index.js');
+      const { findTriangle } = await import('./geometry/mesh-geometry.js');
       const p = renderer.mesh.points;
       let seed = 1;
       const random = () => { seed = (seed * 16807) % 2147483647; return seed / 2147483647; };

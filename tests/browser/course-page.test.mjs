@@ -66,7 +66,7 @@ test('the histogram has a count axis and a line at the bound, in view at 1440 x 
   assert.ok(drawn.axisPixel[3] > 200 && drawn.axisPixel.slice(0, 3).every((c) => c < 110), `axis pixel ${drawn.axisPixel}`);
   // The axis goes to a round number at or above the fullest bin.
   const fullest = await page.evaluate(async () => {
-    const { decodeDrawing } = await import('./url-state.js');
+    const { decodeDrawing } = await import('./io/url-state.js');
     const { toMeshOptions, toPlc } = await import('./drawing.js');
     const { init } = await import('../wasm/index.js');
     const drawing = decodeDrawing(location.hash);
@@ -131,7 +131,7 @@ test('a resize to phone width keeps the drawing in view, also after a zoom', asy
     }
     const inView = () => page.evaluate(async () => {
       const { drawingBounds } = await import('./drawing.js');
-      const b = drawingBounds((await import('./url-state.js')).decodeDrawing(location.hash));
+      const b = drawingBounds((await import('./io/url-state.js')).decodeDrawing(location.hash));
       const { view } = window.ruppertBench;
       const a = view.toScreen(b.minX, b.minY);
       const c = view.toScreen(b.maxX, b.maxY);

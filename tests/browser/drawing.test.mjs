@@ -3,7 +3,7 @@ import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { init } from '../../wasm/index.js';
 import { toMeshOptions, toPlc } from '../../web/drawing.js';
-import { decodeDrawing } from '../../web/url-state.js';
+import { decodeDrawing } from '../../web/io/url-state.js';
 import {
   SCREENSHOTS, canvasFingerprint, clickCanvas, launch, moveOnCanvas, openPage, readStats, settle,
 } from './harness.mjs';

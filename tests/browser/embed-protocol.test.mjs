@@ -1,11 +1,11 @@
-// The embed protocol (web/embed.js, docs/course-site.md) from a host page of ANOTHER origin: the
+// The embed protocol (web/io/embed.js, docs/course-site.md) from a host page of ANOTHER origin: the
 // frame comes from the page's server, the host from a second server on another port.
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { after, before, test } from 'node:test';
 import { init, parsePoly } from '../../wasm/index.js';
 import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/drawing.js';
-import { findPreset } from '../../web/presets.js';
+import { findPreset } from '../../web/panels/presets.js';
 import { SCREENSHOTS, launch, openPage, startHostPage } from './harness.mjs';
 
 const VERSION = JSON.parse(readFileSync(new URL('../../package.json', import.meta.url), 'utf8')).version;

@@ -4,8 +4,8 @@ import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { init } from '../../wasm/index.js';
 import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/drawing.js';
-import { triangleShape } from '../../web/mesh-geometry.js';
-import { DEFAULT_PRESET, PRESETS, findPreset } from '../../web/presets.js';
+import { triangleShape } from '../../web/geometry/mesh-geometry.js';
+import { DEFAULT_PRESET, PRESETS, findPreset } from '../../web/panels/presets.js';
 import { SCREENSHOTS, launch, openPage, readStats, settle } from './harness.mjs';
 
 let harness;
@@ -99,7 +99,7 @@ test('optimal points are offered, mesh past 34 degrees and survive the link', as
   assert.equal(await settle(page), 'done');
   const stats = await readStats(page);
   assert.ok(stats.triangles > 0);
-  const { decodeDrawing } = await import('../../web/url-state.js');
+  const { decodeDrawing } = await import('../../web/io/url-state.js');
   const drawing = decodeDrawing(await page.evaluate(() => location.hash));
   assert.equal(drawing.options.placement, 'optimal');
   assert.equal(drawing.options.minAngle, 36);

@@ -2,7 +2,7 @@
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { after, before, test } from 'node:test';
-import { PRESETS } from '../../web/presets.js';
+import { PRESETS } from '../../web/panels/presets.js';
 import { SCREENSHOTS, launch, openPage, readStats, settle } from './harness.mjs';
 
 let harness;
@@ -92,7 +92,7 @@ test('a .poly file chosen in the file picker is read by the package and meshed',
   assert.ok(stats.vertices >= 8 && stats.triangles > 0);
   assert.equal(stats.complete, 'yes');
   // The hole survived the import: the URL holds one hole seed at (5, 4.6).
-  const drawing = await page.evaluate(async () => (await import('./url-state.js')).decodeDrawing(location.hash));
+  const drawing = await page.evaluate(async () => (await import('./io/url-state.js')).decodeDrawing(location.hash));
   assert.deepEqual(drawing.holes, [5, 4.6]);
   assert.equal(drawing.points.length, 16);
   assert.equal(drawing.segments.length, 16);
@@ -118,7 +118,7 @@ test('a .json file dropped on the canvas is loaded', async () => {
   assert.equal(await page.locator('#drop-hint').isVisible(), true);
   await page.dispatchEvent('#canvas-wrap', 'drop', { dataTransfer });
   assert.equal(await settle(page), 'done');
-  const drawing = await page.evaluate(async () => (await import('./url-state.js')).decodeDrawing(location.hash));
+  const drawing = await page.evaluate(async () => (await import('./io/url-state.js')).decodeDrawing(location.hash));
   assert.deepEqual(drawing.points, [0, 0, 4, 0, 4, 3, 0, 3]);
   assert.equal(await page.locator('#drop-hint').isHidden(), true);
 });
@@ -156,7 +156,7 @@ test('exports .poly, .json, .svg and .png downloads of the mesh', async () => {
 test('exports the drawing itself as a .poly that reads back to the same drawing', async () => {
   await page.setInputFiles('#file-input', { name: 'pentagon-with-hole.poly', mimeType: 'text/plain', buffer: Buffer.from(PENTAGON) });
   assert.equal(await settle(page), 'done');
-  const before = await page.evaluate(async () => (await import('./url-state.js')).decodeDrawing(location.hash));
+  const before = await page.evaluate(async () => (await import('./io/url-state.js')).decodeDrawing(location.hash));
   const exported = await exportFile('#export-drawing');
   assert.equal(exported.name, 'ruppert-drawing.poly');
   const lines = exported.bytes.toString('utf8').split('\n').map((l) => l.replace(/#.*/, '').trim()).filter(Boolean);
@@ -164,7 +164,7 @@ test('exports the drawing itself as a .poly that reads back to the same drawing'
   assert.equal(Number(lines[0].split(/\s+/)[0]), before.points.length / 2, `.poly header: ${lines[0]}`);
   await page.setInputFiles('#file-input', { name: 'again.poly', mimeType: 'text/plain', buffer: exported.bytes });
   assert.equal(await settle(page), 'done');
-  const after = await page.evaluate(async () => (await import('./url-state.js')).decodeDrawing(location.hash));
+  const after = await page.evaluate(async () => (await import('./io/url-state.js')).decodeDrawing(location.hash));
   assert.deepEqual(after.points, before.points);
   assert.deepEqual(after.segments, before.segments);
   assert.deepEqual(after.holes, before.holes);
@@ -208,7 +208,7 @@ test('exports .node, .ele, .msh, .vtu and .geojson downloads whose headers match
   // The exported GeoJSON opens again: the triangles as polygons, the pentagon's hole left empty.
   await page.setInputFiles('#file-input', { name: 'again.geojson', mimeType: 'application/geo+json', buffer: geojson.bytes });
   assert.equal(await settle(page), 'done');
-  const drawing = await page.evaluate(async () => (await import('./url-state.js')).decodeDrawing(location.hash));
+  const drawing = await page.evaluate(async () => (await import('./io/url-state.js')).decodeDrawing(location.hash));
   assert.equal(drawing.holes.length, 2, 'one hole seed, computed by parseGeoJson');
   assert.deepEqual(errors, []);
 });

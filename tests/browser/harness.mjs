@@ -82,7 +82,7 @@ export async function launch() {
 
 /**
  * Opens a page and collects console errors and uncaught exceptions in `errors`. The "Start here"
- * panel (web/start-here.js) is dismissed beforehand, as a returning reader has it, so that it
+ * panel (web/panels/start-here.js) is dismissed beforehand, as a returning reader has it, so that it
  * covers no part of the canvas a test clicks; `startHere: true` leaves the page's storage alone.
  */
 export async function openPage(context, url, { width = 1280, height = 800, startHere = false } = {}) {

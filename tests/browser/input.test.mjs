@@ -11,7 +11,7 @@ let page;
 let errors;
 let touch;  // a CDP session: Chromium turns its touch events into pointer events of type 'touch'
 
-const decodeHash = () => page.evaluate(async () => (await import('./url-state.js')).decodeDrawing(location.hash));
+const decodeHash = () => page.evaluate(async () => (await import('./io/url-state.js')).decodeDrawing(location.hash));
 const points = async () => (await decodeHash()).points;
 
 before(async () => {

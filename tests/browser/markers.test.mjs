@@ -86,7 +86,7 @@ test('markers 1-4 of a loaded .poly are shown and written by every export', asyn
   const drawing = await exportFile('#export-drawing');
   assert.match(drawing, /\n8 1\n0 0 1 1\n1 1 2 2\n2 2 3 3\n3 3 0 3\n4 4 5 4\n/);
   // And the link.
-  const linked = await page.evaluate(async () => (await import('./url-state.js')).decodeDrawing(location.hash));
+  const linked = await page.evaluate(async () => (await import('./io/url-state.js')).decodeDrawing(location.hash));
   assert.deepEqual(linked.segmentMarkers, [1, 2, 3, 3, 4, 4, 4, 4]);
   assert.deepEqual(errors, []);
 });
@@ -99,7 +99,7 @@ test('a segment selected in the editor gets a marker', async () => {
   await page.click('[data-tool="select"]');
   const box = await page.locator('#canvas').boundingBox();
   const point = await page.evaluate(async () => {
-    const { decodeDrawing } = await import('./url-state.js');
+    const { decodeDrawing } = await import('./io/url-state.js');
     return decodeDrawing(location.hash).points.slice(0, 4);
   });
   assert.deepEqual(point, [0, 0, 10, 0]);
@@ -113,7 +113,7 @@ test('a segment selected in the editor gets a marker', async () => {
   await page.fill('#segment-marker', '7');
   await page.locator('#segment-marker').dispatchEvent('change');
   assert.equal(await settle(page), 'done');
-  const linked = await page.evaluate(async () => (await import('./url-state.js')).decodeDrawing(location.hash));
+  const linked = await page.evaluate(async () => (await import('./io/url-state.js')).decodeDrawing(location.hash));
   assert.equal(linked.segmentMarkers.filter((m) => m === 7).length, 1);
   assert.match(await page.locator('#legend').textContent(), /segment marker 7/);
   const msh = await exportFile('#export-msh');

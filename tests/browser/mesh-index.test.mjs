@@ -1,12 +1,12 @@
-// The page's point location (web/mesh-index.js), against a scan of every triangle, on meshes with
+// The page's point location (web/geometry/mesh-index.js), against a scan of every triangle, on meshes with
 // holes and notches (where walks meet the boundary and the bucket grid answers) and a convex one.
 // Plain node: the module needs no browser.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { init } from '../../wasm/index.js';
 import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/drawing.js';
-import { presetDrawing } from '../../web/presets.js';
-import { locateTriangle } from '../../web/mesh-index.js';
+import { presetDrawing } from '../../web/panels/presets.js';
+import { locateTriangle } from '../../web/geometry/mesh-index.js';
 
 function containing(mesh, x, y) {
   const p = mesh.points; const tri = mesh.triangles;

@@ -5,8 +5,8 @@ import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { init } from '../../wasm/index.js';
 import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/drawing.js';
-import { triangleShape } from '../../web/mesh-geometry.js';
-import { findPreset } from '../../web/presets.js';
+import { triangleShape } from '../../web/geometry/mesh-geometry.js';
+import { findPreset } from '../../web/panels/presets.js';
 import { SCREENSHOTS, canvasFingerprint, launch, openPage, readStats, settle } from './harness.mjs';
 
 let harness;
@@ -266,7 +266,7 @@ test('the size measure: a small feature far from a large one, graded, with the i
   assert.ok(Math.max(...areas) > 100 * Math.min(...areas), `areas ${Math.min(...areas)} to ${Math.max(...areas)}`);
   await page.screenshot({ path: `${SCREENSHOTS}preset-size-measure.png` });
   // The link keeps the option; without it the row says how to turn it on.
-  const { decodeDrawing } = await import('../../web/url-state.js');
+  const { decodeDrawing } = await import('../../web/io/url-state.js');
   assert.equal(decodeDrawing(await page.evaluate(() => location.hash)).options.sizeMeasure, true);
   await page.uncheck('#size-measure');
   assert.equal(await settle(page), 'done');

@@ -3,7 +3,7 @@
 // algorithm, closed diametral disks, and links that carry (or predate) the two options.
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
-import { presetDrawing } from '../../web/presets.js';
+import { presetDrawing } from '../../web/panels/presets.js';
 import { SCREENSHOTS, launch, openPage, readStats, settle } from './harness.mjs';
 
 let harness;
@@ -21,7 +21,7 @@ after(async () => {
   await harness?.close();
 });
 
-const decodeHash = (p) => p.evaluate(async () => (await import('./url-state.js')).decodeDrawing(location.hash));
+const decodeHash = (p) => p.evaluate(async () => (await import('./io/url-state.js')).decodeDrawing(location.hash));
 
 /** A link in the compact format of url-state.js, built here by hand so the decoder is really tested. */
 function link(drawing, o) {

@@ -9,7 +9,7 @@
 // a worker, and a new one costs more than most steps): while one step is being meshed, only the
 // newest wanted step is remembered, and it is meshed next. Recent steps are cached, so stepping
 // back and forth is instant.
-import { createMeshWorker } from '../wasm/index.js';
+import { createMeshWorker } from '../../wasm/index.js';
 
 const CACHE_SIZE = 64;
 

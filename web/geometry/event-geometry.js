@@ -3,7 +3,7 @@
 // concentric-shell split from a midpoint split, and a rejected circumcenter from a rejected
 // off-center, by measuring.
 
-import { EventKind } from '../wasm/index.js';
+import { EventKind } from '../../wasm/index.js';
 
 const RELATIVE = 1e-9;
 

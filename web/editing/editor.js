@@ -12,8 +12,8 @@
 // an undo step (a click, the end of a drag), false only re-meshes (while dragging).
 // Read-only (an embed without &edit=1): the drawing cannot change; pointer and arrows pan, the
 // wheel and +/- zoom, hovering still reports triangles.
-import { Item, addPoint, addSegment, hitTest, itemPosition, moveItem, removeItem } from './drawing.js';
-import { snapToGrid } from './view.js';
+import { Item, addPoint, addSegment, hitTest, itemPosition, moveItem, removeItem } from '../drawing.js';
+import { snapToGrid } from '../rendering/view.js';
 
 const PICK_RADIUS = 9;  // CSS pixels
 const TAP_SLOP = 10;    // CSS pixels a touch may move and still be a tap

@@ -28,8 +28,8 @@
 // Replies go to the message's sender, the page's own news to window.parent (the page itself when
 // it is not in a frame: it ignores what it sent). They carry a drawing's mesh, nothing private, so
 // any origin may receive them ('*'); any origin may also send a drawing to show.
-import { DEFAULT_OPTIONS, MIN_ANGLE_RANGE, PACKAGE_OPTION_NAMES } from './drawing.js';
-import { ENCROACHMENT_LABELS, PLACEMENT_LABELS, VARIANT_LABELS } from './labels.js';
+import { DEFAULT_OPTIONS, MIN_ANGLE_RANGE, PACKAGE_OPTION_NAMES } from '../drawing.js';
+import { ENCROACHMENT_LABELS, PLACEMENT_LABELS, VARIANT_LABELS } from '../labels.js';
 
 /** The protocol's version: a host checks `ready.version` against the one it was written for. */
 export const PROTOCOL_VERSION = 1;

@@ -2,10 +2,10 @@
 // result or an error changes on the page (the mesh panel, the display panel's legend, step mode,
 // the status line, the host). body[data-mesh-state] tells tests and hosts where it stands:
 // 'queued', 'meshing', 'done', 'cancelled', 'error', 'empty', or 'loading' while a file is read.
-import { pointCount, toMeshOptions, toPlc } from './drawing.js';
-import { postError, postMeshed } from './embed.js';
+import { pointCount, toMeshOptions, toPlc } from '../drawing.js';
+import { postError, postMeshed } from '../io/embed.js';
 import { MeshScheduler } from './mesh-scheduler.js';
-import { setStatus, showNotices, showProgress, startProgress, stopProgress } from './status-line.js';
+import { setStatus, showNotices, showProgress, startProgress, stopProgress } from '../panels/status-line.js';
 
 const $ = (id) => document.getElementById(id);
 

@@ -2,8 +2,8 @@
 // encroachment, Steiner budget, the region seed fields (for new seeds, or the selected one) and the
 // selected segment's marker.
 // Each field writes app.drawing.options and reports the change; sync() shows a drawing's options.
-import { DEFAULT_OPTIONS, Item, MIN_ANGLE_RANGE, segmentMarkers } from './drawing.js';
-import { ENCROACHMENT_LABELS, PLACEMENT_LABELS, PRACTICAL_ANGLE, VARIANT_LABELS } from './labels.js';
+import { DEFAULT_OPTIONS, Item, MIN_ANGLE_RANGE, segmentMarkers } from '../drawing.js';
+import { ENCROACHMENT_LABELS, PLACEMENT_LABELS, PRACTICAL_ANGLE, VARIANT_LABELS } from '../labels.js';
 import { setStatus } from './status-line.js';
 
 const $ = (id) => document.getElementById(id);

@@ -1,9 +1,9 @@
 // The line over the canvas about the triangle under the pointer: its angles, radius-edge ratio,
 // area, vertices with their kinds, and region attribute.
-import { VertexKind } from '../wasm/index.js';
-import { VERTEX_KIND_LABELS } from './labels.js';
-import { triangleShape } from './mesh-geometry.js';
-import { locateTriangle } from './mesh-index.js';
+import { VertexKind } from '../../wasm/index.js';
+import { VERTEX_KIND_LABELS } from '../labels.js';
+import { triangleShape } from '../geometry/mesh-geometry.js';
+import { locateTriangle } from '../geometry/mesh-index.js';
 
 // mesh.vertexKinds holds VertexKind values; the labels are keyed by their names.
 const VERTEX_KIND_NAMES = Object.fromEntries(Object.entries(VertexKind).map(([name, value]) => [value, name]));

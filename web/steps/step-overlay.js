@@ -1,7 +1,7 @@
 // Step mode's overlay: the event that made the step on screen, drawn over that step's mesh on the
 // renderer's 2D canvas (render.js calls it after the drawing, in both the WebGL and the 2D paths).
-import { EventKind } from '../wasm/index.js';
-import { circumcircle, insertionsBefore, pointsAtStep, splitShell } from './event-geometry.js';
+import { EventKind } from '../../wasm/index.js';
+import { circumcircle, insertionsBefore, pointsAtStep, splitShell } from '../geometry/event-geometry.js';
 
 // Pink for what the event did, blue for what it answered to; neither is among the angle colours
 // (render.js), and the new triangles are hatched, not filled, so their angle colours show through.

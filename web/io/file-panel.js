@@ -1,25 +1,25 @@
 // Opening files: the file picker and drag-and-drop onto the canvas (files.js reads them with the
 // package's readers).
-import { fromPlc } from './drawing.js';
+import { fromPlc } from '../drawing.js';
 import { parseInput } from './files.js';
-import { loading } from './meshing.js';
-import { setStatus, showNotices } from './status-line.js';
+import { loading } from '../meshing/meshing.js';
+import { setStatus, showNotices } from '../panels/status-line.js';
 
 const $ = (id) => document.getElementById(id);
 
 /**
- * @param {object} app the page's state (drawing: its options carry over to the file's)
+ * @param {() => object} drawingOptions the drawing's options, which carry over to the file's
  * @param {(drawing) => void} setDrawing
  * @param {() => void} notPreset the presets box no longer names the drawing
  */
-export function createFilePanel({ app, setDrawing, notPreset }) {
+export function createFilePanel({ drawingOptions, setDrawing, notPreset }) {
   async function loadFile(file) {
     const failed = loading();
     try {
       const text = await file.text();
       const plc = await parseInput(text, file.name);
       notPreset();
-      setDrawing(fromPlc(plc, app.drawing.options));
+      setDrawing(fromPlc(plc, drawingOptions()));
       setStatus(`Loaded ${file.name}: ${plc.points.length / 2} points, ${plc.segments.length / 2} segments.`, 'ok');
     } catch (error) {
       failed();

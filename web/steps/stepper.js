@@ -3,9 +3,9 @@
 // the moves of free vertices the optimal placement makes), the k-th event being the one that made it; position 0 is the constrained Delaunay triangulation before
 // refinement. StepReplay (step-replay.js) provides each position's mesh.
 
-import { EventKind } from '../wasm/index.js';
-import { pointsAtStep, rejectedIsCircumcenter, splitShell } from './event-geometry.js';
-import { EVENT_KIND_LABELS as L } from './labels.js';
+import { EventKind } from '../../wasm/index.js';
+import { pointsAtStep, rejectedIsCircumcenter, splitShell } from '../geometry/event-geometry.js';
+import { EVENT_KIND_LABELS as L } from '../labels.js';
 
 const fmt = (v) => (Math.abs(v) >= 1e4 || (Math.abs(v) < 1e-3 && v !== 0) ? v.toExponential(3) : Number(v.toFixed(4)).toString());
 

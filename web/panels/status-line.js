@@ -1,6 +1,6 @@
 // The lines under the canvas: the status line, the list of the mesher's notices and errors, and
 // the progress indicator (its Cancel button is wired by meshing.js).
-import { NOTICE_LABELS, codeWords, roundNumbers } from './labels.js';
+import { NOTICE_LABELS, codeWords, roundNumbers } from '../labels.js';
 const $ = (id) => document.getElementById(id);
 // Progress shows only for work that takes a noticeable time.
 const PROGRESS_DELAY_MS = 200;

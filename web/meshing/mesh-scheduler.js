@@ -7,7 +7,7 @@
 // in favour of a newer one (createMeshWorker aborts by terminating the worker, which costs a
 // restart: worth it only when the mesh in the way is slow). Results of superseded requests are
 // dropped.
-import { MeshError, createMeshWorker } from '../wasm/index.js';
+import { MeshError, createMeshWorker } from '../../wasm/index.js';
 
 /** Delay of the first change of a burst: lets a click's several changes arrive as one. */
 export const DEBOUNCE_MS = 30;

@@ -2,7 +2,7 @@
 //
 // These run on the main thread, so the WebAssembly module is loaded here too, but only when a
 // file is first read or written.
-import { init } from '../wasm/index.js';
+import { init } from '../../wasm/index.js';
 
 let mesherPromise = null;
 const mesher = () => (mesherPromise ??= init());

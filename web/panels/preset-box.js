@@ -1,8 +1,8 @@
 // The presets box: the chapter's figures and other examples (presets.js) with their captions,
 // and, when the server offers it, the corpus of real PLCs beside the repository.
-import { DEFAULT_OPTIONS, fromPlc } from './drawing.js';
-import { parseInput } from './files.js';
-import { loading } from './meshing.js';
+import { DEFAULT_OPTIONS, fromPlc } from '../drawing.js';
+import { parseInput } from '../io/files.js';
+import { loading } from '../meshing/meshing.js';
 import { DEFAULT_PRESET, PRESETS, findPreset } from './presets.js';
 import { setStatus } from './status-line.js';
 
@@ -15,14 +15,14 @@ function showCaption(text) {
 }
 
 /**
- * @param {object} app the page's state (drawing, stepMode)
+ * @param {() => object} drawingOptions the drawing's options, which a PLC of the corpus keeps
  * @param {(drawing, how) => void} setDrawing
  * @param {(on: boolean) => void} restartSteps step mode on or off as a preset asks, from step 0
  * @param {(stages: Function|null) => void} setStages the preset's figure stages (presets.js), or none
  * @param {object} compare the side-by-side view (compare-view.js): a preset with `compare` shows it
  * @param {boolean} shared whether to look for the corpus (not in an embed)
  */
-export function createPresetBox({ app, setDrawing, restartSteps, setStages, compare, shared }) {
+export function createPresetBox({ drawingOptions, setDrawing, restartSteps, setStages, compare, shared }) {
   for (const preset of PRESETS) {
     const option = document.createElement('option');
     option.value = preset.id;
@@ -102,7 +102,7 @@ export function createPresetBox({ app, setDrawing, restartSteps, setStages, comp
       showCaption('');
       setStages(null);
       compare.hide();
-      setDrawing(fromPlc(plc, app.drawing.options));
+      setDrawing(fromPlc(plc, drawingOptions()));
       $('preset').value = SHARED_PRESET + name;
       setStatus(`Loaded ${name}: ${plc.points.length / 2} points, ${plc.segments.length / 2} segments.`, 'ok');
     } catch (error) {

@@ -4,11 +4,11 @@
 // While it shows, it takes the main canvas's place; every change of the drawing or its options
 // meshes both again (in a worker of its own, so a slow placement never blocks the page), and
 // closing it brings the main canvas back.
-import { createMeshWorker } from '../wasm/index.js';
-import { boundsOf } from './bounds.js';
-import { toMeshOptions, toPlc } from './drawing.js';
-import { PLACEMENT_LABELS } from './labels.js';
-import { minAngles } from './mesh-geometry.js';
+import { createMeshWorker } from '../../wasm/index.js';
+import { boundsOf } from '../geometry/bounds.js';
+import { toMeshOptions, toPlc } from '../drawing.js';
+import { PLACEMENT_LABELS } from '../labels.js';
+import { minAngles } from '../geometry/mesh-geometry.js';
 import { ANGLE_CLASSES, COLOURS } from './render.js';
 
 const $ = (id) => document.getElementById(id);
@@ -68,10 +68,10 @@ export function compareCaption(placement, mesh) {
 }
 
 /**
- * @param {object} app the page's state (drawing)
+ * @param {() => object} drawing the drawing to mesh once per placement
  * @param {() => void} onClose the comparison was closed by the reader (the preset box may say so)
  */
-export function createCompareView({ app, onClose = () => {} }) {
+export function createCompareView({ drawing, onClose = () => {} }) {
   const figure = $('compare');
   const sides = [...figure.querySelectorAll('.compare-side')].map((side) => ({
     canvas: side.querySelector('canvas'), caption: side.querySelector('figcaption'), mesh: null,
@@ -98,10 +98,11 @@ export function createCompareView({ app, onClose = () => {} }) {
     worker ??= createMeshWorker();
     busy = true;
     figure.dataset.state = 'meshing';
-    const plc = toPlc(app.drawing);
+    const shown = drawing();
+    const plc = toPlc(shown);
     const meshes = [];
     for (const placement of placements) {
-      const options = { ...toMeshOptions(app.drawing), placement };
+      const options = { ...toMeshOptions(shown), placement };
       meshes.push(await worker.triangulate(plc, options).catch(() => null));
       if (mine !== generation) return;
     }

@@ -6,7 +6,7 @@
 // world unit when the box fills the canvas) and `limit` (the largest texture). Both return
 // { image: Uint32Array of little-endian RGBA texels, size: { width, height, sx, sy } } with
 // sx, sy texels per world unit.
-import { walk } from './mesh-index.js';
+import { walk } from '../geometry/mesh-index.js';
 
 /**
  * Texels across the box's longer side in the sharp overview: texels of at most 2 device pixels

@@ -15,7 +15,7 @@
 //   one quad.
 // Positions are sent relative to the mesh's centre so float32 keeps the precision of a zoom.
 
-import { boundsOf, emptyBounds, includePoint } from './bounds.js';
+import { boundsOf, emptyBounds, includePoint } from '../geometry/bounds.js';
 import { parseColour, rasterizeOverview, walkOverview } from './mesh-overview.js';
 
 const MESH_VERTEX = `#version 300 es

@@ -4,10 +4,10 @@
 // class, one for all edges) and drawn under the view's transform, so panning and zooming only
 // replay them. Beyond LARGE_MESH triangles, per-triangle fills cost more than they show: only
 // the edges are drawn, as one path.
-import { minAngleOf, minAngles } from './mesh-geometry.js';
+import { minAngleOf, minAngles } from '../geometry/mesh-geometry.js';
 import { GlMesh } from './gl-mesh.js';
-import { EXEMPTION_LABELS } from './labels.js';
-import { drawStep, showsStep } from './step-overlay.js';
+import { EXEMPTION_LABELS } from '../labels.js';
+import { drawStep, showsStep } from '../steps/step-overlay.js';
 
 export const LARGE_MESH = 200_000;
 /** Vertex numbers are drawn for meshes of up to this many vertices (more would not be legible). */

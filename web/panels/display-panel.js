@@ -1,5 +1,5 @@
 // The Display panel: the colouring of the triangles and its legend, and the vertex numbers toggle.
-import { VERTEX_NUMBERS_UP_TO, exemptionLegend, legendEntries, markerLegend } from './render.js';
+import { VERTEX_NUMBERS_UP_TO, exemptionLegend, legendEntries, markerLegend } from '../rendering/render.js';
 
 const $ = (id) => document.getElementById(id);
 

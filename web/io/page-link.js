@@ -1,17 +1,22 @@
 // The page's link: the drawing, its options, the step, the colouring and the view written into
 // the URL hash (url-state.js encodes them), read back when the page opens or the hash changes.
 import { MAX_HASH_LENGTH, decodeDrawing, encodeDrawing, encodePageState } from './url-state.js';
-import { setStatus } from './status-line.js';
+import { setStatus } from '../panels/status-line.js';
 
 const $ = (id) => document.getElementById(id);
 
 /**
- * @param {object} app the page's state (drawing, stepMode, colorMode, viewMoved, writtenHash)
+ * @param {object} app the page's state (drawing, stepMode, colorMode, viewMoved), read only
  * @param {object} view the View on screen
  * @param {() => number} stepIndex the step shown in step mode
  * @param {(drawing) => void} onLinkChanged a drawing from a hash the page did not write itself
  */
 export function createPageLink({ app, view, stepIndex, onLinkChanged }) {
+  // The hash this page wrote last ('' when the state was too long for a link): a hashchange to it
+  // is the page's own, not a link opened.
+  let written = '';
+
+  /** Writes the state into the URL hash; false when it is too long for a link (the hash is cleared). */
   function write() {
     const state = encodePageState({
       step: app.stepMode ? stepIndex() : null,
@@ -23,12 +28,13 @@ export function createPageLink({ app, view, stepIndex, onLinkChanged }) {
     // The embed's link to the full page carries the same state.
     $('open-full').href = `${location.pathname}#${hash}`;
     if (hash.length > MAX_HASH_LENGTH) {
-      app.writtenHash = '';
+      written = '';
       window.history.replaceState(null, '', base);
-      return;
+      return false;
     }
-    app.writtenHash = `#${hash}`;
-    if (location.hash !== app.writtenHash) window.history.replaceState(null, '', `${base}#${hash}`);
+    written = `#${hash}`;
+    if (location.hash !== written) window.history.replaceState(null, '', `${base}#${hash}`);
+    return true;
   }
 
   // Steps, pans and zooms change the link too, but at most a few times a second (browsers
@@ -50,7 +56,7 @@ export function createPageLink({ app, view, stepIndex, onLinkChanged }) {
   }
 
   window.addEventListener('hashchange', () => {
-    if (location.hash === app.writtenHash) return;
+    if (location.hash === written) return;
     const drawing = read();
     if (drawing) onLinkChanged(drawing);
   });

@@ -9,7 +9,7 @@
 // "c"/"b" = CDT / bounding-box variant, "l"/"d" = diametral lens / disk encroachment. The last two
 // were appended later: links without them (or with unknown values) get the defaults, CDT and lens;
 // so was the seventh, present only when the size measure is asked for.
-import { DEFAULT_OPTIONS, MIN_ANGLE_RANGE } from './drawing.js';
+import { DEFAULT_OPTIONS, MIN_ANGLE_RANGE } from '../drawing.js';
 
 /** Links longer than this are not written (browsers and chat apps truncate them). */
 export const MAX_HASH_LENGTH = 64_000;

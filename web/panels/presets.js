@@ -3,7 +3,7 @@
 // current ones), a one-line caption naming the chapter's figure it redraws, and `steps: true` to
 // open it in step-by-step mode, and `stages` (a function of the trace) to name the steps that
 // show a figure's snapshots.
-import { EventKind } from '../wasm/index.js';
+import { EventKind } from '../../wasm/index.js';
 
 /** Adds a closed polygon (a ring of segments) and returns its first point index. */
 function ring(d, coordinates) {

@@ -1,11 +1,11 @@
 // Step-by-step mode: the checkbox, the step controls (Stepper, stepper.js), the mesh of each step
 // (StepReplay, step-replay.js, meshed on demand), and the step a link or a host asked for, shown
 // once the mesh with its trace arrives.
-import { postStepped } from './embed.js';
+import { postStepped } from '../io/embed.js';
 import { stepLegend } from './step-overlay.js';
 import { StepReplay } from './step-replay.js';
 import { Stepper, describeEvent } from './stepper.js';
-import { setStatus } from './status-line.js';
+import { setStatus } from '../panels/status-line.js';
 
 const $ = (id) => document.getElementById(id);
 

@@ -1,9 +1,9 @@
 // The Mesh panel: counts, angle range, completeness with reasons, the angle histogram, the event
 // counts and the triangles left skinny on purpose.
-import { EventKind } from '../wasm/index.js';
-import { rejectedIsCircumcenter, splitShell, undoMove } from './event-geometry.js';
-import { findExemptions } from './exemptions.js';
-import { EVENT_KIND_LABELS, EXEMPTION_LABELS } from './labels.js';
+import { EventKind } from '../../wasm/index.js';
+import { rejectedIsCircumcenter, splitShell, undoMove } from '../geometry/event-geometry.js';
+import { findExemptions } from '../geometry/exemptions.js';
+import { EVENT_KIND_LABELS, EXEMPTION_LABELS } from '../labels.js';
 
 /**
  * Angles worth seeing against the histogram: Ruppert's guaranteed 20.7°, the 26.45° and 28.6°

@@ -1,21 +1,23 @@
 // The export buttons: the mesh in each of the package's formats or as a PNG of the canvas, the
 // drawing itself as a .poly, and the link to the page as it is.
-import { toPlc } from './drawing.js';
+import { toPlc } from '../drawing.js';
 import { canvasBlob, download, drawingPolyText, exportText } from './files.js';
-import { setStatus } from './status-line.js';
+import { setStatus } from '../panels/status-line.js';
 
 const $ = (id) => document.getElementById(id);
 const FORMATS = ['poly', 'json', 'svg', 'png', 'node', 'ele', 'msh', 'vtu', 'geojson'];
 
 /**
- * @param {object} app the page's state (mesh, meshedPlc, drawing, writtenHash)
+ * @param {() => {mesh: object|null, plc: object|null}} meshed the latest mesh and the input it was made from
+ * @param {() => object} drawing the drawing on the canvas
  * @param {object} renderer the Renderer (its snapshot for PNG)
  * @param {() => void} draw draws the frame now (PNG)
- * @param {() => void} writeLink writes the link into the URL
+ * @param {() => boolean} writeLink writes the link into the URL; false when the drawing is too large for one
  */
-export function createExportMenu({ app, renderer, draw, writeLink }) {
+export function createExportMenu({ meshed, drawing, renderer, draw, writeLink }) {
   async function exportAs(format) {
-    if (app.mesh === null) {
+    const { mesh, plc } = meshed();
+    if (mesh === null) {
       setStatus('Nothing to export: the drawing has no mesh yet.', 'error');
       return;
     }
@@ -24,7 +26,7 @@ export function createExportMenu({ app, renderer, draw, writeLink }) {
         draw();
         download(await canvasBlob(renderer.snapshot()), 'ruppert-mesh.png', 'png');
       } else {
-        download(await exportText(format, app.mesh, app.meshedPlc), `ruppert-mesh.${format}`, format);
+        download(await exportText(format, mesh, plc), `ruppert-mesh.${format}`, format);
       }
       setStatus(`Exported ruppert-mesh.${format}.`, 'ok');
     } catch (error) {
@@ -34,13 +36,12 @@ export function createExportMenu({ app, renderer, draw, writeLink }) {
   for (const format of FORMATS) $(`export-${format}`).addEventListener('click', () => exportAs(format));
   // The drawing needs no mesh: what was drawn, as a .poly another program can mesh.
   $('export-drawing').addEventListener('click', () => {
-    download(drawingPolyText(toPlc(app.drawing)), 'ruppert-drawing.poly', 'poly');
+    download(drawingPolyText(toPlc(drawing())), 'ruppert-drawing.poly', 'poly');
     setStatus('Exported ruppert-drawing.poly (the drawing, not its mesh).', 'ok');
   });
 
   $('copy-link').addEventListener('click', async () => {
-    writeLink();
-    if (app.writtenHash === '') {
+    if (!writeLink()) {
       setStatus('This drawing is too large to fit in a link; export a .poly file instead.', 'warn');
       return;
     }
