@@ -21,7 +21,7 @@ const PICK_RADIUS = 9;  // CSS pixels
 const TAP_SLOP = 10;    // CSS pixels a touch may move and still be a tap
 
 export const TOOL_HINTS = {
-  select: 'Select: click a vertex, segment or seed; drag to move it; Delete removes it. Drag empty space to pan.',
+  select: 'Select: click a vertex, segment, curve, curve handle or seed; drag to move it; Delete removes it. Drag empty space to pan.',
   point: 'Point: click (or arrows, then Enter) to add a vertex (drag an existing one to move it).',
   polyline: 'Polygon: click to add vertices, click the first vertex to close, Enter or double-click ends an open polyline.',
   hole: 'Hole: click inside a closed polygon to make it a hole.',
