@@ -88,7 +88,8 @@ export function decodeDrawing(hash) {
     variant: variant === 'b' ? 'box' : 'cdt',
     encroachment: encroachment === 'd' ? 'disk' : 'lens',
     sizeMeasure: sizeMeasure === 1,
-    curveTolerance: typeof data.t === 'number' && data.t > 0 && Number.isFinite(data.t) ? data.t : 0,
+    // Only when the link has one (links without curves read as before; absent means automatic).
+    ...(typeof data.t === 'number' && data.t > 0 && Number.isFinite(data.t) ? { curveTolerance: data.t } : {}),
   };
   const curves = decodeCurves(data.c, n);
   return { points, segments, segmentMarkers, curves, holes, regions, options };
