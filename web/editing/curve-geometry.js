@@ -39,7 +39,7 @@ export function samples(shape, n = 64, t0 = 0, t1 = 1) {
 }
 
 /** Squared distance from (px, py) to the segment (ax, ay)-(bx, by). */
-function segmentDistance2(px, py, ax, ay, bx, by) {
+export function segmentDistance2(px, py, ax, ay, bx, by) {
   const dx = bx - ax, dy = by - ay;
   const length2 = dx * dx + dy * dy;
   const t = length2 > 0 ? Math.max(0, Math.min(1, ((px - ax) * dx + (py - ay) * dy) / length2)) : 0;

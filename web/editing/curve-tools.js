@@ -12,7 +12,7 @@
 // Bézier's controls) are dragged as curve-data.js's rules say, which keep every arc valid.
 import { Item, addPoint, hitTest, moveItem } from '../drawing.js';
 import { CurveItem, cloneCurves, curveShape, curvesOf, followPoints, handlesOf, twinArcs } from './curve-data.js';
-import { distanceTo, onBisector, shapeOf } from './curve-geometry.js';
+import { distanceTo, onBisector, segmentDistance2, shapeOf } from './curve-geometry.js';
 
 export const CURVE_TOOLS = Object.freeze(['circle', 'arc', 'bezier']);
 export const isCurveTool = (tool) => CURVE_TOOLS.includes(tool);
@@ -50,9 +50,13 @@ export function hitWithCurves(d, x, y, radius, kinds) {
   }
   if (best !== null || (hit !== null && hit.kind !== Item.SEGMENT)) return best ?? hit;
   // Strokes: a curve nearer than the nearest segment (or than nothing).
+  if (hit !== null) {
+    const [a, b] = [d.segments[2 * hit.index], d.segments[2 * hit.index + 1]];
+    bestDistance = Math.sqrt(segmentDistance2(x, y, d.points[2 * a], d.points[2 * a + 1], d.points[2 * b], d.points[2 * b + 1]));
+  }
   curves.forEach((_, k) => {
     const distance = distanceTo(curveShape(d, k), x, y);
-    if (distance <= bestDistance) { best = { kind: CurveItem.CURVE, index: k }; bestDistance = distance; }
+    if (distance < bestDistance) { best = { kind: CurveItem.CURVE, index: k }; bestDistance = distance; }
   });
   return best ?? hit;
 }
