@@ -228,6 +228,25 @@ test('dragging a circle\'s centre handle or an end re-meshes with valid arcs; un
   assert.deepEqual(errors, []);
 });
 
+test('a selected curve takes a marker: drawn, in the legend, the link and the .msh', async () => {
+  await page.selectOption('#preset', 'plate-round-hole');
+  assert.equal(await settle(page), 'done');
+  await page.keyboard.press('v');
+  // The top of the circle: a point of the first arc (counter-clockwise from (0.75, 0.5) to (0.25, 0.5)).
+  const top = await toScreen(0.5, 0.75);
+  await clickCanvas(page, top.x, top.y);
+  assert.equal(await page.isDisabled('#segment-marker'), false, 'the marker field serves the selected curve');
+  await page.fill('#segment-marker', '7');
+  await page.locator('#segment-marker').dispatchEvent('change');
+  assert.equal(await settle(page), 'done');
+  assert.deepEqual((await linked()).curves.map((c) => c.marker ?? 0), [7, 0]);
+  assert.match(await page.locator('#legend').textContent(), /segment marker 7/);
+  const msh = await exportFile('#export-msh');
+  assert.ok(msh.includes('"marker 7"'), 'a physical group for the curve\'s marker');
+  await page.screenshot({ path: `${SCREENSHOTS}curves-marker.png` });
+  assert.deepEqual(errors, []);
+});
+
 test('a replay step that splits a curve\'s piece says so and draws it', async () => {
   await page.selectOption('#preset', 'plate-round-hole');
   assert.equal(await settle(page), 'done');
