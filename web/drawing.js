@@ -9,10 +9,16 @@
 //   regions  [{ x, y, attribute, maxArea }]
 //   segmentMarkers m0, m1, ...  a boundary marker per segment (0: none), kept from files, written by
 //                                every export; absent from older drawings (all 0)
+//   curves   [{ type: 'arc' | 'bezier', from, to, center | controls, marker? }]  (editing/curve-data.js;
+//            absent from older drawings: none)
 //   options  { minAngle, maxArea, placement, maxSteiner, variant, encroachment }
 //            maxArea/maxSteiner: null = none/automatic; variant 'cdt' | 'box'; encroachment 'lens' | 'disk'
 import { OPTIONS } from '../wasm/dist/names.js';
 import { boundsOf, hasBounds, includePoint } from './geometry/bounds.js';
+import {
+  CurveItem, cloneCurves, curveItemPosition, curvesForPlc, curvesFromPlc, dropPointFromCurves, includeCurves,
+  moveCurveItem, removeCurve,
+} from './editing/curve-data.js';
 
 // The package's options as the binding describes them (core/include/ruppert/option_table.h): the
 // page takes its defaults and the angle's range from there rather than writing them again.
@@ -30,10 +36,12 @@ export const DEFAULT_OPTIONS = Object.freeze({
   maxSteiner: null, variant: PACKAGE_OPTIONS.variant.default, encroachment: PACKAGE_OPTIONS.encroachment.default,
   // The chapter's size measure (stats.lfsIntegral, §6.5) costs a pass over the input per vertex: on demand.
   sizeMeasure: PACKAGE_OPTIONS.sizeMeasure.default,
+  // Curves' largest distance from their boundary edges; 0: the core's automatic 1e-3 of the diagonal.
+  curveTolerance: PACKAGE_OPTIONS.curveTolerance.default,
 });
 
 export function emptyDrawing(options = DEFAULT_OPTIONS) {
-  return { points: [], segments: [], segmentMarkers: [], holes: [], regions: [], options: { ...options } };
+  return { points: [], segments: [], segmentMarkers: [], curves: [], holes: [], regions: [], options: { ...options } };
 }
 
 export function cloneDrawing(d) {
@@ -41,6 +49,7 @@ export function cloneDrawing(d) {
     points: d.points.slice(),
     segments: d.segments.slice(),
     segmentMarkers: segmentMarkers(d),
+    curves: cloneCurves(d),
     holes: d.holes.slice(),
     regions: d.regions.map((r) => ({ ...r })),
     options: { ...d.options },
@@ -62,6 +71,7 @@ export function toPlc(d) {
     segments: Uint32Array.from(d.segments),
     // Markers only when some segment has one: the mesh's own rules apply otherwise.
     ...(segmentMarkers(d).some((m) => m !== 0) ? { segmentMarkers: Int32Array.from(segmentMarkers(d)) } : {}),
+    ...curvesForPlc(d),
     holes: Float64Array.from(d.holes),
     regions: d.regions.map((r) => ({
       x: r.x, y: r.y, attribute: r.attribute ?? 0, ...(r.maxArea > 0 ? { maxArea: r.maxArea } : {}),
@@ -83,6 +93,7 @@ export function toMeshOptions(d, { trace = false } = {}) {
   if (o.maxArea > 0) options.maxArea = o.maxArea;
   if (Number.isInteger(o.maxSteiner) && o.maxSteiner >= 0) options.maxSteiner = o.maxSteiner;
   if (o.sizeMeasure) options.sizeMeasure = true;
+  if (o.curveTolerance > 0) options.curveTolerance = o.curveTolerance;
   return options;
 }
 
@@ -92,6 +103,7 @@ export function fromPlc(plc, options = DEFAULT_OPTIONS) {
     points: Array.from(plc.points ?? []),
     segments: Array.from(plc.segments ?? []),
     segmentMarkers: Array.from(plc.segmentMarkers ?? []),
+    curves: curvesFromPlc(plc),
     holes: Array.from(plc.holes ?? []),
     regions: (plc.regions ?? []).map((r) => ({
       x: r.x, y: r.y, attribute: r.attribute ?? 0, maxArea: r.maxArea > 0 ? r.maxArea : null,
@@ -133,6 +145,7 @@ export function removePoint(d, i) {
   }
   d.segments = kept;
   d.segmentMarkers = markers;
+  dropPointFromCurves(d, i);
 }
 
 export function removeSegment(d, k) {
@@ -149,7 +162,7 @@ export function itemPosition(d, item) {
     case Item.POINT: return { x: d.points[2 * item.index], y: d.points[2 * item.index + 1] };
     case Item.HOLE: return { x: d.holes[2 * item.index], y: d.holes[2 * item.index + 1] };
     case Item.REGION: return { x: d.regions[item.index].x, y: d.regions[item.index].y };
-    default: return null;
+    default: return curveItemPosition(d, item);
   }
 }
 
@@ -158,7 +171,7 @@ export function moveItem(d, item, x, y) {
     case Item.POINT: d.points[2 * item.index] = x; d.points[2 * item.index + 1] = y; break;
     case Item.HOLE: d.holes[2 * item.index] = x; d.holes[2 * item.index + 1] = y; break;
     case Item.REGION: d.regions[item.index].x = x; d.regions[item.index].y = y; break;
-    default: break;
+    default: moveCurveItem(d, item, x, y); break;
   }
 }
 
@@ -168,6 +181,7 @@ export function removeItem(d, item) {
     case Item.SEGMENT: removeSegment(d, item.index); break;
     case Item.HOLE: d.holes.splice(2 * item.index, 2); break;
     case Item.REGION: d.regions.splice(item.index, 1); break;
+    case CurveItem.CURVE: case CurveItem.HANDLE: removeCurve(d, item.index); break;
     default: break;
   }
 }
@@ -222,5 +236,6 @@ export function hitTest(d, x, y, radius, kinds = [Item.HOLE, Item.REGION, Item.P
 export function drawingBounds(d) {
   const box = boundsOf(d.holes, boundsOf(d.points));
   for (const r of d.regions) includePoint(box, r.x, r.y);
+  includeCurves(box, d);
   return hasBounds(box) ? box : null;
 }

@@ -20,7 +20,7 @@ export const VERTEX_KIND_LABELS = {
  * the off-center (petal and optimal points are never rejected).
  */
 export const EVENT_KIND_LABELS = {
-  SEGMENT_SPLIT: { midpoint: 'midpoint split', shell: 'shell split' },
+  SEGMENT_SPLIT: { midpoint: 'midpoint split', shell: 'shell split', curve: 'curve split' },
   CIRCUMCENTER: 'circumcenter',
   OFF_CENTER: 'off-center',
   PETAL_POINT: 'petal point',

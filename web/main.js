@@ -120,6 +120,8 @@ function draw() {
     hoverItem: editor.hoverItem,
     hoverTriangle: app.hoverTriangle,
     pendingChain: editor.pendingChain(),
+    curvePreview: editor.curveTools.preview(),
+    curveHandles: !readOnly,
     keyCursor: editor.keyCursor,
     notices: app.notices,
     step,

@@ -1,7 +1,8 @@
 // Mouse and keyboard editing of the drawing on the canvas.
 //
 // Tools: select (pick, drag, delete), point, polyline (click, click, ..., click the first vertex
-// to close; Enter, double-click or Esc ends an open one), hole seed, region seed.
+// to close; Enter, double-click or Esc ends an open one), hole seed, region seed, and the curve
+// tools circle, arc and Bézier (editing/curve-tools.js).
 // Everywhere: wheel zooms, middle-drag or Space+drag pans.
 // Touch: two fingers pinch-zoom and pan; one finger on empty space pans once it moves, and a tap
 // (no movement) does what a click does, so a pinch never leaves a stray vertex behind.
@@ -12,18 +13,20 @@
 // an undo step (a click, the end of a drag), false only re-meshes (while dragging).
 // Read-only (an embed without &edit=1): the drawing cannot change; pointer and arrows pan, the
 // wheel and +/- zoom, hovering still reports triangles.
-import { Item, addPoint, addSegment, hitTest, itemPosition, moveItem, removeItem } from '../drawing.js';
+import { Item, addPoint, addSegment, hitTest, itemPosition, removeItem } from '../drawing.js';
+import { CURVE_TOOL_HINTS, CurveTools, hitWithCurves, isCurveTool, moveWithCurves, snapshot } from './curve-tools.js';
 import { snapToGrid } from '../rendering/view.js';
 
 const PICK_RADIUS = 9;  // CSS pixels
 const TAP_SLOP = 10;    // CSS pixels a touch may move and still be a tap
 
 export const TOOL_HINTS = {
-  select: 'Select: click a vertex, segment or seed; drag to move it; Delete removes it. Drag empty space to pan.',
+  select: 'Select: click a vertex, segment, curve, curve handle or seed; drag to move it; Delete removes it. Drag empty space to pan.',
   point: 'Point: click (or arrows, then Enter) to add a vertex (drag an existing one to move it).',
   polyline: 'Polygon: click to add vertices, click the first vertex to close, Enter or double-click ends an open polyline.',
   hole: 'Hole: click inside a closed polygon to make it a hole.',
   region: 'Region: click inside a polygon to give it the attribute and max area set in the panel.',
+  ...CURVE_TOOL_HINTS,
 };
 
 // Capture can fail (a pointer that is already gone throws NotFoundError): the gesture works without it.
@@ -55,6 +58,7 @@ export class Editor {
     this.touches = new Map(); // pointerId -> { x, y } (client pixels) of fingers on the canvas
     this.keyCursor = null;    // world position of the keyboard cursor, once arrows moved it
     this.readOnly = false;
+    this.curveTools = new CurveTools(this);
     this.bind();
   }
 
@@ -74,6 +78,7 @@ export class Editor {
 
   setTool(tool) {
     if (this.chain && tool !== 'polyline') this.chain = null;
+    this.curveTools?.cancel();
     this.tool = tool;
     this.app.redraw();
   }
@@ -108,6 +113,7 @@ export class Editor {
     this.chain = null;
     this.gesture = null;
     this.keyCursor = null;
+    this.curveTools.cancel();
   }
 
   bind() {
@@ -170,14 +176,20 @@ export class Editor {
       else this.polylineClick(world);
       return;
     }
+    if (isCurveTool(this.tool)) {
+      if (touch) this.startGesture(e, { type: 'tap', x: e.clientX, y: e.clientY, world });
+      else { this.startGesture(e, { type: 'curve' }); this.curveTools.press(this.tool, world); }
+      return;
+    }
     // Every other tool drags an existing vertex or seed it is pressed on.
     const kinds = this.tool === 'select' ? undefined : [Item.HOLE, Item.REGION, Item.POINT];
-    const hit = hitTest(d, world.x, world.y, r, kinds);
+    const hit = hitWithCurves(d, world.x, world.y, r, kinds);
     if (hit !== null) {
       this.select(hit);
       if (hit.kind !== Item.SEGMENT) {
         const start = itemPosition(d, hit);
-        this.startGesture(e, { type: 'drag', item: hit, start, grab: { x: world.x - start.x, y: world.y - start.y }, moved: false });
+        // `before`: the curves' centres and controls follow their ends from where the drag began.
+        this.startGesture(e, { type: 'drag', item: hit, start, grab: { x: world.x - start.x, y: world.y - start.y }, moved: false, before: snapshot(d) });
       }
       return;
     }
@@ -288,14 +300,15 @@ export class Editor {
     }
     if (g?.type === 'drag') {
       const at = this.place({ x: world.x - g.grab.x, y: world.y - g.grab.y });
-      moveItem(this.app.drawing, g.item, at.x, at.y);
+      moveWithCurves(this.app.drawing, g.item, at.x, at.y, g.before);
       g.moved = true;
       this.app.changed({ commit: false });
       return;
     }
-    const hit = this.tool === 'polyline'
+    if (isCurveTool(this.tool)) this.curveTools.move(world);
+    const hit = this.tool === 'polyline' || isCurveTool(this.tool)
       ? hitTest(this.app.drawing, world.x, world.y, this.radius, [Item.POINT])
-      : hitTest(this.app.drawing, world.x, world.y, this.radius, this.tool === 'select' ? undefined : [Item.HOLE, Item.REGION, Item.POINT]);
+      : hitWithCurves(this.app.drawing, world.x, world.y, this.radius, this.tool === 'select' ? undefined : [Item.HOLE, Item.REGION, Item.POINT]);
     this.hoverItem = hit;
     this.app.canvas.style.cursor = hit ? (this.tool === 'polyline' ? 'crosshair' : 'move') : (this.tool === 'select' ? 'grab' : 'crosshair');
     this.app.hover(world);
@@ -313,6 +326,7 @@ export class Editor {
     this.gesture = null;
     release(this.app.canvas, e.pointerId);
     if (g.type === 'drag' && g.moved) this.app.changed({ commit: true });
+    if (g.type === 'curve') this.curveTools.release(this.worldOf(e));
     if (g.type === 'tap' && e.type === 'pointerup') this.clickAt(g.world);
   }
 
@@ -322,7 +336,12 @@ export class Editor {
       this.polylineClick(world);
       return;
     }
-    const hit = hitTest(this.app.drawing, world.x, world.y, this.radius, this.tool === 'select' ? undefined : [Item.HOLE, Item.REGION, Item.POINT]);
+    if (isCurveTool(this.tool)) {
+      this.curveTools.press(this.tool, world);
+      this.curveTools.release(world);
+      return;
+    }
+    const hit = hitWithCurves(this.app.drawing, world.x, world.y, this.radius, this.tool === 'select' ? undefined : [Item.HOLE, Item.REGION, Item.POINT]);
     if (hit !== null || this.tool === 'select') this.select(hit);
     else this.placeAt(world);
   }
@@ -358,7 +377,7 @@ export class Editor {
     } else if (key === 'Delete' || key === 'Backspace') {
       handled = this.deleteSelection();
     } else if (key === 'Escape') {
-      if (!this.endChain()) this.select(null);
+      if (!this.curveTools.cancel() && !this.endChain()) this.select(null);
     } else if (key === 'Enter' && this.keyCursor !== null && e.target === this.app.canvas) {
       this.clickAt(this.keyCursor);
       this.select(null);  // the arrows keep moving the cursor, not what was just placed
@@ -375,7 +394,7 @@ export class Editor {
       this.app.viewMoved = true;
       this.app.redraw();
     } else {
-      const tools = { v: 'select', p: 'point', l: 'polyline', h: 'hole', r: 'region' };
+      const tools = { v: 'select', p: 'point', l: 'polyline', h: 'hole', r: 'region', c: 'circle', a: 'arc', b: 'bezier' };
       const lower = key.toLowerCase();
       if (tools[lower] && !e.shiftKey) this.app.setTool(tools[lower]);
       else handled = this.app.shortcut(lower);
@@ -395,7 +414,7 @@ export class Editor {
       const step = this.app.view.gridStep() * (large ? 5 : 1) / (this.app.snap ? 1 : 4);
       const at = itemPosition(this.app.drawing, item);
       const round = (v) => (this.app.snap ? snapToGrid(v, step) : Number(v.toPrecision(12)));
-      moveItem(this.app.drawing, item, round(at.x + dx * step), round(at.y + dy * step));
+      moveWithCurves(this.app.drawing, item, round(at.x + dx * step), round(at.y + dy * step));
       this.app.changed({ commit: true });
     } else if (onCanvas && this.tool !== 'select') {
       const view = this.app.view;

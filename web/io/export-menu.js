@@ -3,6 +3,7 @@
 import { toPlc } from '../drawing.js';
 import { canvasBlob, download, drawingPolyText, exportText } from './files.js';
 import { setStatus } from '../panels/status-line.js';
+import { drawingJsonText } from '../editing/curve-data.js';
 
 const $ = (id) => document.getElementById(id);
 const FORMATS = ['poly', 'json', 'svg', 'png', 'node', 'ele', 'msh', 'vtu', 'geojson'];
@@ -38,6 +39,12 @@ export function createExportMenu({ meshed, drawing, renderer, draw, writeLink })
   $('export-drawing').addEventListener('click', () => {
     download(drawingPolyText(toPlc(drawing())), 'ruppert-drawing.poly', 'poly');
     setStatus('Exported ruppert-drawing.poly (the drawing, not its mesh).', 'ok');
+  });
+
+  // The drawing with its curves (which .poly cannot hold), in the JSON the file panel reads back.
+  $('export-drawing-json').addEventListener('click', () => {
+    download(drawingJsonText(toPlc(app.drawing)), 'ruppert-drawing.json', 'json');
+    setStatus('Exported ruppert-drawing.json (the drawing with its curves, not its mesh).', 'ok');
   });
 
   $('copy-link').addEventListener('click', async () => {

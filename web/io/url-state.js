@@ -3,13 +3,15 @@
 //   #d=<base64url of compact JSON>
 //   { "v": 1, "p": [x0, y0, ...], "s": [a0, b0, ...], "m": [marker per segment] (only if any), "h": [hx0, hy0, ...],
 //     "r": [[x, y, attribute, maxArea], ...],
-//     "o": [minAngle, maxArea, "o" | "c", maxSteiner, "c" | "b", "l" | "d", 1 (size measure, only if on)] }
+//     "o": [minAngle, maxArea, "o" | "c", maxSteiner, "c" | "b", "l" | "d", 1 (size measure, only if on)],
+//     "c": [curve, ...] (only if any: editing/curve-data.js), "t": curveTolerance (only if not 0) }
 //
 // maxArea 0 = none, maxSteiner -1 = automatic, "o"/"c"/"p"/"t" = off-center / circumcenter / petal / optimal placement,
 // "c"/"b" = CDT / bounding-box variant, "l"/"d" = diametral lens / disk encroachment. The last two
 // were appended later: links without them (or with unknown values) get the defaults, CDT and lens;
 // so was the seventh, present only when the size measure is asked for.
 import { DEFAULT_OPTIONS, MIN_ANGLE_RANGE } from '../drawing.js';
+import { decodeCurves, encodeCurves } from '../editing/curve-data.js';
 
 /** Links longer than this are not written (browsers and chat apps truncate them). */
 export const MAX_HASH_LENGTH = 64_000;
@@ -45,6 +47,8 @@ export function encodeDrawing(d) {
       o.variant === 'box' ? 'b' : 'c', o.encroachment === 'disk' ? 'd' : 'l',
       // The size measure only when asked for (older links have no 7th entry: off).
       ...(o.sizeMeasure ? [1] : [])],
+    ...encodeCurves(d),
+    ...(o.curveTolerance > 0 ? { t: o.curveTolerance } : {}),
   };
   return `d=${toBase64Url(JSON.stringify(compact))}`;
 }
@@ -84,8 +88,11 @@ export function decodeDrawing(hash) {
     variant: variant === 'b' ? 'box' : 'cdt',
     encroachment: encroachment === 'd' ? 'disk' : 'lens',
     sizeMeasure: sizeMeasure === 1,
+    // Only when the link has one (links without curves read as before; absent means automatic).
+    ...(typeof data.t === 'number' && data.t > 0 && Number.isFinite(data.t) ? { curveTolerance: data.t } : {}),
   };
-  return { points, segments, segmentMarkers, holes, regions, options };
+  const curves = decodeCurves(data.c, n);
+  return { points, segments, segmentMarkers, curves, holes, regions, options };
 }
 
 // What the page shows, beside the drawing: '&step=K' (step mode at step K), '&color=MODE' (the

@@ -107,7 +107,8 @@ export function createMeshing({ app, renderer, meshPanel, display, steps, schedu
    * the drawing and its options did not change (step mode asks for the trace, or drops it).
    */
   function remesh(delay, { quiet = false } = {}) {
-    if (pointCount(app.drawing) < 3) {
+    // A circle alone (two points, two arcs) is a domain too.
+    if (pointCount(app.drawing) < 3 && !app.drawing.curves?.length) {
       if (hostId !== null) postError({ code: 'EMPTY_INPUT', message: 'the drawing has fewer than three points: nothing to mesh' }, hostId);
       hostId = null;
       scheduler.clear();

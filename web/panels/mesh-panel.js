@@ -2,6 +2,7 @@
 // counts and the triangles left skinny on purpose.
 import { EventKind } from '../../wasm/index.js';
 import { rejectedIsCircumcenter, splitShell, undoMove } from '../geometry/event-geometry.js';
+import { splitsCurve } from '../steps/curve-events.js';
 import { findExemptions } from '../geometry/exemptions.js';
 import { EVENT_KIND_LABELS, EXEMPTION_LABELS } from '../labels.js';
 
@@ -158,6 +159,7 @@ const L = EVENT_KIND_LABELS;
 /** Event names, in the panel's order, and how to tell each from the trace (p: the points before event e). */
 const EVENT_NAMES = [
   [L.SEGMENT_SPLIT.midpoint, (ev, e, p) => ev.kind[e] === SEGMENT_SPLIT && splitShell(ev, e, p) === null],
+  [L.SEGMENT_SPLIT.curve, splitsCurve],  // off the chord: on a curve (before shells, which stay on it)
   [L.SEGMENT_SPLIT.shell, (ev, e, p) => ev.kind[e] === SEGMENT_SPLIT && splitShell(ev, e, p) !== null],
   [L.CIRCUMCENTER, (ev, e) => ev.kind[e] === CIRCUMCENTER],
   [L.OFF_CENTER, (ev, e) => ev.kind[e] === OFF_CENTER],

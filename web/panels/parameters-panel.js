@@ -5,6 +5,7 @@
 import { DEFAULT_OPTIONS, Item, MIN_ANGLE_RANGE, segmentMarkers } from '../drawing.js';
 import { ENCROACHMENT_LABELS, PLACEMENT_LABELS, PRACTICAL_ANGLE, VARIANT_LABELS } from '../labels.js';
 import { setStatus } from './status-line.js';
+import { curveMarkerOf, setCurveMarker, syncCurveTolerance, watchCurveTolerance } from '../editing/curve-fields.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -54,6 +55,7 @@ export function createParametersPanel({ app, editor, changed }) {
     $('variant').value = o.variant ?? DEFAULT_OPTIONS.variant;
     $('encroachment').value = o.encroachment ?? DEFAULT_OPTIONS.encroachment;
     $('size-measure').checked = Boolean(o.sizeMeasure);
+    syncCurveTolerance(o);
   }
 
   const { min, max } = MIN_ANGLE_RANGE;
@@ -107,6 +109,7 @@ export function createParametersPanel({ app, editor, changed }) {
     app.drawing.options.sizeMeasure = $('size-measure').checked;
     changed(true);
   });
+  watchCurveTolerance(app, changed);
   $('max-steiner').addEventListener('change', () => {
     const value = readNumber($('max-steiner'));
     app.drawing.options.maxSteiner = value !== null && value >= 0 ? Math.floor(value) : null;
@@ -123,8 +126,9 @@ export function createParametersPanel({ app, editor, changed }) {
   function syncRegion() {
     const item = editor.selection;
     const segment = item?.kind === Item.SEGMENT && item.index < app.drawing.segments.length / 2;
-    $('segment-marker').disabled = !segment;
-    $('segment-marker').value = segment ? String(segmentMarkers(app.drawing)[item.index]) : '';
+    const curveMarker = curveMarkerOf(app.drawing, item);  // a selected curve's (or its handle's), else null
+    $('segment-marker').disabled = !segment && curveMarker === null;
+    $('segment-marker').value = segment ? String(segmentMarkers(app.drawing)[item.index]) : curveMarker !== null ? String(curveMarker) : '';
     if (item?.kind !== Item.REGION) return;
     const region = app.drawing.regions[item.index];
     if (!region) return;
@@ -144,6 +148,7 @@ export function createParametersPanel({ app, editor, changed }) {
   $('segment-marker').addEventListener('change', () => {
     const item = editor.selection;
     const value = readNumber($('segment-marker'));
+    if (value !== null && Number.isInteger(value) && setCurveMarker(app.drawing, item, value)) changed(true);
     if (item?.kind !== Item.SEGMENT || value === null || !Number.isInteger(value)) return;
     app.drawing.segmentMarkers = segmentMarkers(app.drawing);
     app.drawing.segmentMarkers[item.index] = value;

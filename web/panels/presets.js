@@ -161,6 +161,20 @@ function twoPolygons() {
   return d;
 }
 
+/**
+ * The unit square with a round hole of radius 0.25 at its centre (issue 45): the hole is two arcs
+ * between (0.75, 0.5) and (0.25, 0.5); its seed sits off the centre, so that the Select tool picks the
+ * centre handle there.
+ */
+function plateWithRoundHole() {
+  const d = blank();
+  ring(d, [0, 0, 1, 0, 1, 1, 0, 1]);
+  d.points.push(0.75, 0.5, 0.25, 0.5);
+  d.curves = [{ type: 'arc', from: 4, to: 5, center: [0.5, 0.5] }, { type: 'arc', from: 5, to: 4, center: [0.5, 0.5] }];
+  d.holes.push(0.5, 0.6);
+  return d;
+}
+
 export const PRESETS = [
   {
     id: 'lake', name: 'A lake with islands and a jetty (the first sight)', build: lake, options: { maxArea: 0.5 },
@@ -239,6 +253,11 @@ export const PRESETS = [
     caption: 'Figure 6.16, left: Ruppert\'s original algorithm meshes a bounding box; the gaps are refined to their tiny width.',
   },
   { id: 'square-hole', name: 'Square with a square hole', build: squareWithHole },
+  {
+    id: 'plate-round-hole', name: 'A plate with a round hole (curves)', build: plateWithRoundHole,
+    caption: 'A unit square with a hole of radius 0.25: the circle is two arcs, and every vertex on it lies on the circle. ' +
+      'Drag the centre handle (Select) to change the radius, or set the curve tolerance.',
+  },
   { id: 'two-sizes', name: 'Two polygons of very different sizes, with regions', build: twoSizes },
 ];
 

@@ -8,6 +8,8 @@ import { minAngleOf, minAngles } from '../geometry/mesh-geometry.js';
 import { GlMesh } from './gl-mesh.js';
 import { EXEMPTION_LABELS } from '../labels.js';
 import { drawStep, showsStep } from '../steps/step-overlay.js';
+import { curveMarkers } from '../editing/curve-data.js';
+import { drawCurves } from './curve-draw.js';
 
 export const LARGE_MESH = 200_000;
 /** Vertex numbers are drawn for meshes of up to this many vertices (more would not be legible). */
@@ -58,7 +60,7 @@ export function markerColour(marker) {
 
 /** Legend rows of the segment markers of a drawing: [{ colour, label }]. */
 export function markerLegend(drawing) {
-  const values = [...new Set(drawing.segmentMarkers ?? [])].filter((m) => m !== 0).sort((a, b) => a - b);
+  const values = [...new Set([...(drawing.segmentMarkers ?? []), ...curveMarkers(drawing)])].filter((m) => m !== 0).sort((a, b) => a - b);
   return values.map((m) => ({ colour: markerColour(m), label: `segment marker ${m}` }));
 }
 
@@ -463,6 +465,7 @@ export class Renderer {
       ctx.stroke();
     }
     screen();
+    drawCurves(ctx, s, world, screen, px);  // curves, their handles and the one being made (curveHandles, curvePreview)
     if (markers.some((m) => m !== 0)) this.drawMarkerLabels(d, view);
 
     // The polyline being drawn: a dashed segment from its last vertex to the pointer.

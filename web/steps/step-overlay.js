@@ -2,6 +2,7 @@
 // renderer's 2D canvas (render.js calls it after the drawing, in both the WebGL and the 2D paths).
 import { EventKind } from '../../wasm/index.js';
 import { circumcircle, insertionsBefore, pointsAtStep, splitShell } from '../geometry/event-geometry.js';
+import { drawCurveSplit } from './curve-events.js';
 
 // Pink for what the event did, blue for what it answered to; neither is among the angle colours
 // (render.js), and the new triangles are hatched, not filled, so their angle colours show through.
@@ -40,6 +41,8 @@ export function stepLegend(context) {
     { svg: svg(`<circle cx="11" cy="8" r="6.5" fill="none" stroke="${P}" stroke-width="1.5" stroke-dasharray="3 2"/>`), label: 'its circumcircle' },
     { svg: svg(`<circle cx="11" cy="8" r="5" fill="#fff" stroke="${P}" stroke-width="2.5"/>`), label: 'a circumcenter considered (Fig. 6.4 (d))' },
     region,
+    ...(context?.curves?.length ? [{ svg: svg(`<path d="M3 12 Q11 0 19 12" fill="none" stroke="${P}" stroke-width="3"/><line x1="3" y1="12" x2="19" y2="12" stroke="${P}" stroke-dasharray="3 2"/>`),
+      label: 'a curve\'s piece split on the curve (its chord dashed, with the chord\'s diametral disk)' }] : []),
     { svg: svg(`<circle cx="11" cy="8" r="4.5" fill="${B}" stroke="#fff" stroke-width="1.5"/>`), label: 'the encroaching vertex' },
     { svg: svg(`<path d="M5 2 L17 14 M17 2 L5 14" stroke="${B}" stroke-width="3"/>`), label: 'a rejected point (its triangle dashed blue)' },
     { svg: svg(`<circle cx="11" cy="8" r="6.5" fill="none" stroke="${B}" stroke-width="1.5" stroke-dasharray="3 2"/>`), label: 'a concentric shell (§6.6)' },
@@ -118,10 +121,12 @@ export function drawStep(ctx, mesh, step, view, world, screen, px) {
   };
 
   const kind = events.kind[e];
+  // A curve's piece split: the stretch of curve, its chord and the chord's disk, instead of the subsegment's.
+  const curve = drawCurveSplit(ctx, p, events, e, step.context, STEP_COLOURS.step, world, screen, px);
   if (kind === EventKind.SEGMENT_SPLIT) {
-    subsegment(STEP_COLOURS.step);
+    if (!curve) subsegment(STEP_COLOURS.step);
     // A concentric-shell split (§6.6): the shell around the corner vertex, through the new vertex.
-    const shell = splitShell(events, e, p);
+    const shell = curve ? null : splitShell(events, e, p);
     if (shell !== null) circle(p[2 * shell.center], p[2 * shell.center + 1], shell.radius, STEP_COLOURS.stepSecondary);
     const by = events.by[e];
     if (by >= 0) marker(p[2 * by], p[2 * by + 1], STEP_COLOURS.stepSecondary, 5);  // the encroaching vertex
@@ -149,7 +154,7 @@ export function drawStep(ctx, mesh, step, view, world, screen, px) {
     ctx.strokeStyle = STEP_COLOURS.stepSecondary; ctx.lineWidth = 2; ctx.stroke();
   } else if (kind === EventKind.REJECTED) {
     triangle(STEP_COLOURS.stepSecondary);
-    subsegment(STEP_COLOURS.step);
+    if (!curve) subsegment(STEP_COLOURS.step);
     const q = view.toScreen(events.circumcenter[2 * e], events.circumcenter[2 * e + 1]);
     ctx.beginPath();
     ctx.moveTo(q.x - 6, q.y - 6); ctx.lineTo(q.x + 6, q.y + 6);

@@ -6,6 +6,7 @@
 import { EventKind } from '../../wasm/index.js';
 import { pointsAtStep, rejectedIsCircumcenter, splitShell } from '../geometry/event-geometry.js';
 import { EVENT_KIND_LABELS as L } from '../labels.js';
+import { describeCurveSplit } from './curve-events.js';
 
 const fmt = (v) => (Math.abs(v) >= 1e4 || (Math.abs(v) < 1e-3 && v !== 0) ? v.toExponential(3) : Number(v.toFixed(4)).toString());
 
@@ -61,6 +62,9 @@ export function describeEvent(events, e, context = null) {
     const word = /^(skinny|too large)/.exec(reason)?.[1];
     triangle = word ? `${word} triangle (${i}, ${j}, ${k}) ${reason.slice(word.length + 1)}` : `triangle (${i}, ${j}, ${k}) ${reason}`;
   }
+  // A split of a curve's piece (steps/curve-events.js) is told as such, whichever rule split it.
+  const curveSplit = describeCurveSplit(events, e, context, where, triangle);
+  if (curveSplit !== null) return curveSplit;
   switch (kind) {
     case EventKind.SEGMENT_SPLIT: {
       const by = events.by[e];

@@ -159,9 +159,11 @@ export function createStepsPanel({ app, renderer, meshPanel, scheduleDraw, write
     replay.reset(request.plc, request.options, app.stepMode ? mesh : null);
     const { minAngle, placement, maxArea, encroachment } = request.options;
     showStages(app.stepMode ? mesh.events : null);
-    showLegend(request.options);
+    showLegend({ ...request.options, curves: request.plc.curves });
+    // The curves and the final mesh's subsegments tell which splits were a curve's (steps/curve-events.js).
+    const curves = { curves: request.plc.curves ?? [], segmentCount: request.plc.segments.length / 2, segments: mesh.segments, segmentIds: mesh.segmentIds };
     stepper.setEvents(app.stepMode ? mesh.events : null,
-      { points: mesh.points, minAngle, placement, maxArea: maxArea ?? null, encroachment, regions: request.plc.regions });
+      { points: mesh.points, minAngle, placement, maxArea: maxArea ?? null, encroachment, regions: request.plc.regions, ...curves });
   }
 
   function clear() {
