@@ -127,4 +127,35 @@ CurvedShape crescent(double d, double r2) {
   return s;
 }
 
+CurvedShape gear(int teeth, double inner) {
+  // Per tooth, counter-clockwise: an arc of the outer circle (radius 1) over the tooth's top, a
+  // segment down to the root circle (radius inner), an arc of it over the gap, a segment up. The
+  // area: the polygon of those points plus, per arc, its circular segment r^2 / 2 (phi - sin phi).
+  CurvedShape s;
+  const double step = 2 * kPi / teeth, top = 0.4 * step, flank = 0.1 * step;
+  double area = 0;
+  auto segmentArea = [](double r, double phi) { return r * r / 2 * (phi - std::sin(phi)); };
+  for (int k = 0; k < teeth; ++k) {
+    const double a = k * step;
+    addPoint(s.plc, std::cos(a), std::sin(a));
+    addPoint(s.plc, std::cos(a + top), std::sin(a + top));
+    addPoint(s.plc, inner * std::cos(a + top + flank), inner * std::sin(a + top + flank));
+    addPoint(s.plc, inner * std::cos(a + step - flank), inner * std::sin(a + step - flank));
+    area += segmentArea(1, top) + segmentArea(inner, step - top - 2 * flank);
+  }
+  const std::uint32_t n = static_cast<std::uint32_t>(s.plc.points.size() / 2);
+  for (std::uint32_t k = 0; k < n; k += 4) {
+    addArc(s.plc, k, k + 1, 0, 0);
+    s.plc.segments.insert(s.plc.segments.end(), {k + 1, k + 2, k + 3, (k + 4) % n});
+    addArc(s.plc, k + 2, k + 3, 0, 0);
+  }
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const double* p = &s.plc.points[2 * i];
+    const double* q = &s.plc.points[2 * ((i + 1) % n)];
+    area += (p[0] * q[1] - q[0] * p[1]) / 2;
+  }
+  s.area = area;
+  return s;
+}
+
 }  // namespace ruppert_test

@@ -33,4 +33,8 @@ CurvedShape lens(double d);
 // meeting at two sharp tips.
 CurvedShape crescent(double d, double r2);
 
+// A gear of `teeth` teeth: arcs of the unit circle over their tops and of radius `inner` over the
+// gaps between them, joined by straight flanks.
+CurvedShape gear(int teeth, double inner);
+
 }  // namespace ruppert_test

@@ -81,6 +81,8 @@ TEST_CASE("generated curved shapes mesh on their curves within the tolerance", "
   for (double d : {0.3, 0.9, 0.97}) meshAndCheck(ruppert_test::lens(d), 30, 1e-3);
   for (double r2 : {0.75, 0.9}) meshAndCheck(ruppert_test::crescent(0.3, r2), 30, 1e-3);
   meshAndCheck(ruppert_test::crescent(0.3, 0.75), 33, 1e-4);
+  for (int teeth : {6, 12, 24}) meshAndCheck(ruppert_test::gear(teeth, 0.8), 30, 1e-3);
+  meshAndCheck(ruppert_test::gear(12, 0.8), 33, 1e-4);
 }
 
 TEST_CASE("curves hold under every variant, placement and encroachment rule", "[curves]") {
