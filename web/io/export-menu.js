@@ -43,7 +43,7 @@ export function createExportMenu({ meshed, drawing, renderer, draw, writeLink })
 
   // The drawing with its curves (which .poly cannot hold), in the JSON the file panel reads back.
   $('export-drawing-json').addEventListener('click', () => {
-    download(drawingJsonText(toPlc(app.drawing)), 'ruppert-drawing.json', 'json');
+    download(drawingJsonText(toPlc(drawing())), 'ruppert-drawing.json', 'json');
     setStatus('Exported ruppert-drawing.json (the drawing with its curves, not its mesh).', 'ok');
   });
 
