@@ -151,6 +151,27 @@ TEST_CASE("a curve inside a hole leaves no vertex of its own in the mesh", "[cur
   }
 }
 
+TEST_CASE("a curve and a hull edge between the same two points: shells from the nearer end", "[curves]") {
+  // A Bezier from (1, 35) to (0, 0) that meets the hull edge between them at 1.5 degrees at (1, 35)
+  // (found by fuzz_mesh). Its shortest edges near (1, 35) are seditious or not by their distances
+  // from (1, 35); from (0, 0) any two nearby vertices look like one shell, and a 29.56-degree
+  // triangle was left as seditious in a mesh called complete.
+  CurvedShape shape;
+  shape.plc.points = {0, 0, 1, 35};
+  ruppert::Curve c;
+  c.type = ruppert::CurveType::Bezier, c.from = 1, c.to = 0;
+  c.controls[0] = c.controls[1] = c.controls[2] = c.controls[3] = -1;
+  shape.plc.curves.push_back(c);
+  Options o;
+  o.minAngle = 30, o.curveTolerance = 0.0010685511108405516, o.maxSteiner = 1000;
+  const Mesh mesh = ruppert::triangulate(shape.plc, o);
+  REQUIRE(mesh.complete);
+  ruppert_test::ValidateOptions v;
+  v.input = &shape.plc, v.minAngle = 30;
+  v.angleExempt = ruppert_test::chapterExemptions(mesh, shape.plc);
+  REQUIRE_VALID(mesh, v);
+}
+
 TEST_CASE("curve pieces carry their curve's segmentId and marker", "[curves]") {
   CurvedShape shape = ruppert_test::quarterDisk();
   shape.plc.curves[0].marker = 7;

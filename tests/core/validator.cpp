@@ -963,10 +963,13 @@ std::function<bool(const Mesh&, std::uint32_t)> seditiousTest(const Mesh& mesh, 
     const double *a0 = end(su, 0), *a1 = end(su, 1), *b0 = end(sw, 0), *b1 = end(sw, 1);
     auto same = [](const double* x, const double* y) { return x[0] == y[0] && x[1] == y[1]; };
     double z[2];
-    if (same(a0, b0) || same(a0, b1)) {
-      z[0] = a0[0], z[1] = a0[1];
-    } else if (same(a1, b0) || same(a1, b1)) {
-      z[0] = a1[0], z[1] = a1[1];
+    const bool shares0 = same(a0, b0) || same(a0, b1), shares1 = same(a1, b0) || same(a1, b1);
+    const double* pu0 = &m.points[2 * std::size_t(u)];
+    auto d2 = [pu0](const double* x) { return (x[0] - pu0[0]) * (x[0] - pu0[0]) + (x[1] - pu0[1]) * (x[1] - pu0[1]); };
+    if (shares0 || shares1) {
+      // Sharing both ends (a curve and a segment between the same points): the end nearer u.
+      const double* apex = !shares1 || (shares0 && d2(a0) <= d2(a1)) ? a0 : a1;
+      z[0] = apex[0], z[1] = apex[1];
     } else {
       const double ax = a1[0] - a0[0], ay = a1[1] - a0[1], bx = b1[0] - b0[0], by = b1[1] - b0[1];
       const double den = ax * by - ay * bx;

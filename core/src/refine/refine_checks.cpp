@@ -192,10 +192,13 @@ bool Refiner::seditious(std::uint32_t s, const TriangleShape& sh) const {
   const std::uint32_t a0 = end(su, 0), a1 = end(su, 1);
   const std::uint32_t b0 = end(sw, 0), b1 = end(sw, 1);
   double z[2];
-  if (a0 == b0 || a0 == b1) {
-    z[0] = t_.xy[2 * a0], z[1] = t_.xy[2 * a0 + 1];
-  } else if (a1 == b0 || a1 == b1) {
-    z[0] = t_.xy[2 * a1], z[1] = t_.xy[2 * a1 + 1];
+  // Two pieces may share both ends (a curve and a segment or curve between the same points): the
+  // shells are those of the end nearer u. From the far end, two vertices near this one lie at
+  // nearly equal distances and would pass for one shell.
+  const bool shares0 = a0 == b0 || a0 == b1, shares1 = a1 == b0 || a1 == b1;
+  if (shares0 || shares1) {
+    const std::uint32_t apex = !shares1 || (shares0 && sq(t_.pt(u), t_.pt(a0)) <= sq(t_.pt(u), t_.pt(a1))) ? a0 : a1;
+    z[0] = t_.xy[2 * apex], z[1] = t_.xy[2 * apex + 1];
   } else if (!segmentsMeet(t_.pt(a0), t_.pt(a1), t_.pt(b0), t_.pt(b1), z)) {
     return false;
   }
