@@ -16,7 +16,7 @@ import { Editor } from './editing/editor.js';
 import { isEditable, isEmbedded, listenToHost, postError, postMesh, postReady } from './io/embed.js';
 import { createExportMenu } from './io/export-menu.js';
 import { createFilePanel } from './io/file-panel.js';
-import { parsePolyText } from './io/files.js';
+import { parseInput, parsePolyText } from './io/files.js';
 import { History } from './editing/history.js';
 import { createHoverInfo } from './panels/hover-info.js';
 import { createMeshPanel } from './panels/mesh-panel.js';
@@ -243,10 +243,12 @@ function meshSettled() {
 }
 
 listenToHost({
-  async onLoad({ poly, options, id }) {
+  async onLoad({ poly, json, options, id }) {
     const failed = loading();
     try {
-      const plc = await parsePolyText(poly, '<ruppert:load>');
+      const plc = json !== undefined
+        ? await parseInput(json, '<ruppert:load>.json')
+        : await parsePolyText(poly, '<ruppert:load>');
       presets.notPreset();
       meshing.forHost(id);
       setDrawing(fromPlc(plc, options));

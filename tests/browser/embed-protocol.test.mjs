@@ -131,6 +131,45 @@ test('ruppert:getMesh answers with the mesh the stats describe, markers and attr
   await page.close();
 });
 
+test('a load of JSON text with curves meshes them on the curve', async () => {
+  const { page, errors } = await openHost();
+  const from = await page.evaluate(() => window.replies.length);
+  // The unit square with a round hole of radius 0.25: two arcs and a hole seed.
+  const json = JSON.stringify({
+    points: [0, 0, 1, 0, 1, 1, 0, 1, 0.75, 0.5, 0.25, 0.5],
+    segments: [0, 1, 1, 2, 2, 3, 3, 0],
+    curves: [{ type: 'arc', from: 4, to: 5, center: [0.5, 0.5] }, { type: 'arc', from: 5, to: 4, center: [0.5, 0.5] }],
+    holes: [0.5, 0.5],
+  });
+  await page.evaluate((text) => {
+    window.send({ type: 'ruppert:load', id: 'plate', json: text, options: { minAngle: 30 } });
+    window.send({ type: 'ruppert:getMesh', id: 'plate-mesh' });
+  }, json);
+  await page.waitForFunction((n) => window.replies.slice(n).some((r) => r.type === 'ruppert:mesh'), from, { timeout: 20_000 });
+  const replies = await repliesSince(page, from);
+  const meshed = replies.find((r) => r.type === 'ruppert:meshed');
+  const mesh = replies.find((r) => r.type === 'ruppert:mesh');
+  assert.equal(meshed.id, 'plate');
+  assert.ok(meshed.stats.complete && meshed.stats.minAngle >= 30, JSON.stringify(meshed.stats));
+  // Vertices of the hole's boundary (the curves' pieces, segment ids 4 and 5) lie on the circle.
+  let onHole = 0;
+  for (let k = 0; k < mesh.segments.length / 2; ++k) {
+    for (const v of [mesh.segments[2 * k], mesh.segments[2 * k + 1]]) {
+      const r = Math.hypot(mesh.points[2 * v] - 0.5, mesh.points[2 * v + 1] - 0.5);
+      if (r < 0.4) {
+        onHole += 1;
+        assert.ok(Math.abs(r - 0.25) < 1e-12, `vertex ${v} at radius ${r}`);
+      }
+    }
+  }
+  assert.ok(onHole >= 24, `${onHole} hole vertex ends`);
+  // One of poly and json, not both.
+  const both = await ask(page, { type: 'ruppert:load', id: 'both', poly: RECTANGLE, json }, 'ruppert:error');
+  assert.equal(both.code, 'MALFORMED_MESSAGE');
+  assert.deepEqual(errors, []);
+  await page.close();
+});
+
 test('unknown options, unknown message types and malformed messages get ruppert:error', async () => {
   const { page, errors } = await openHost();
   const from = await page.evaluate(() => window.replies.length);

@@ -15,6 +15,8 @@
 //                 { type: 'ruppert:error', id, code, message }
 //                 a message that is unknown or malformed, an unknown option or preset, a failed load or mesh
 //   host -> page  { type: 'ruppert:load', id, poly: '<.poly text>', options }
+//                 or { type: 'ruppert:load', id, json: '<.json text>', options }, the package's JSON
+//                 input (curves included), e.g. the page's drawing .json
 //                 options: the package's names (OPTION_NAMES); those not given take the package's
 //                 defaults, whatever the page showed before
 //                 { type: 'ruppert:preset', id, name }   a preset of presets.js by its id ('figure-6-4')
@@ -152,7 +154,7 @@ export function loadOptions(given) {
 
 // The fields each message may carry (beyond type and id), and whether they are required.
 const MESSAGES = {
-  'ruppert:load': { poly: true, options: false },
+  'ruppert:load': { poly: false, json: false, options: false },
   'ruppert:preset': { name: true },
   'ruppert:step': { index: true },
   'ruppert:getMesh': {},
@@ -181,7 +183,11 @@ export function checkMessage(data) {
   for (const [key, required] of Object.entries(fields)) {
     if (required && data[key] === undefined) return malformed(`'${key}' is missing`);
   }
-  if (type === 'ruppert:load' && typeof data.poly !== 'string') return malformed("'poly' must be the text of a .poly file");
+  if (type === 'ruppert:load') {
+    if ((data.poly === undefined) === (data.json === undefined)) return malformed("give one of 'poly' (the text of a .poly file) and 'json' (the text of a .json input)");
+    if (data.poly !== undefined && typeof data.poly !== 'string') return malformed("'poly' must be the text of a .poly file");
+    if (data.json !== undefined && typeof data.json !== 'string') return malformed("'json' must be the text of a .json input");
+  }
   if (type === 'ruppert:preset' && typeof data.name !== 'string') return malformed("'name' must be a preset's name, a string");
   if (type === 'ruppert:step' && !(Number.isInteger(data.index) && data.index >= 0)) {
     return { code: 'INVALID_OPTION', message: `ruppert:step needs 'index', a whole number >= 0, got ${JSON.stringify(data.index)}` };
@@ -191,7 +197,7 @@ export function checkMessage(data) {
 
 /**
  * Listens to a host. Each valid message calls its handler with ({ ...message fields, id, source }):
- * onLoad({ poly, options, id }) with the options checked, onPreset({ name, id }), onStep({ index, id }),
+ * onLoad({ poly, json, options, id }) (one of poly and json) with the options checked, onPreset({ name, id }), onStep({ index, id }),
  * onGetMesh({ id, source }), onHello({ id, source }). Anything else addressed to the page (a type
  * starting with 'ruppert:') gets a 'ruppert:error' reply.
  */
@@ -215,7 +221,7 @@ export function listenToHost({ onLoad, onPreset, onStep, onGetMesh, onHello }) {
       case 'ruppert:load': {
         const { options, error } = loadOptions(data.options);
         if (error) postError({ code: 'INVALID_OPTION', message: `ruppert:load: ${error}` }, id, source);
-        else onLoad({ poly: data.poly, options, id });
+        else onLoad({ poly: data.poly, json: data.json, options, id });
         break;
       }
       case 'ruppert:preset': onPreset({ name: data.name, id, source }); break;
