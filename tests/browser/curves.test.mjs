@@ -7,6 +7,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { after, before, test } from 'node:test';
 import { SCREENSHOTS, clickCanvas, launch, moveOnCanvas, openPage, readStats, settle } from './harness.mjs';
+import { bezierAt, distanceToBezier } from '../package/bezier-math.mjs';
 
 let harness;
 let page;
@@ -40,24 +41,7 @@ async function dragOnCanvas(from, to) {
   await page.mouse.up();
 }
 
-/** The cubic's point at t; c = [x0, y0, x1, y1, x2, y2, x3, y3]. */
-function bezierAt(c, t) {
-  const s = 1 - t, w = [s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t];
-  return [0, 1].map((k) => w[0] * c[k] + w[1] * c[2 + k] + w[2] * c[4 + k] + w[3] * c[6 + k]);
-}
 
-/** Distance from q to the cubic: dense samples, then a ternary search around the best. */
-function distanceToBezier(c, q) {
-  const d2 = (t) => { const [x, y] = bezierAt(c, t); return (x - q[0]) ** 2 + (y - q[1]) ** 2; };
-  let best = 0;
-  for (let i = 1; i <= 4096; i++) if (d2(i / 4096) < d2(best)) best = i / 4096;
-  let lo = Math.max(0, best - 1 / 4096), hi = Math.min(1, best + 1 / 4096);
-  for (let k = 0; k < 200; k++) {
-    const m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
-    if (d2(m1) < d2(m2)) hi = m2; else lo = m1;
-  }
-  return Math.sqrt(d2((lo + hi) / 2));
-}
 
 /** The vertices of the exported mesh's subsegments that follow curve k (segmentIds = segments + k). */
 function curveVertices(mesh, segmentCount, k) {

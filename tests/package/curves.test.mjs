@@ -12,6 +12,7 @@ import { after, test } from 'node:test';
 import { fileURLToPath } from 'node:url';
 import { init, parseJson } from 'ruppert';
 import { triangleArea, validateMesh } from './validate-mesh.mjs';
+import { bezierAt, nearestT } from './bezier-math.mjs';
 
 const mesher = await init();
 
@@ -26,23 +27,7 @@ const quarterDisk = { points: [0, 0, 1, 0, 0, 1], segments: [0, 1, 2, 0], curves
 // Under the cubic from (1, 0) to (0, 0) with controls (1, 1) and (0, 1): y = 3 t (1 - t), area 0.6.
 const underBezier = { points: [0, 0, 1, 0], segments: [0, 1], curves: [{ type: 'bezier', from: 1, to: 0, controls: [1, 1, 0, 1] }] };
 
-function bezierAt(c, t) {
-  const s = 1 - t, w = [s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t];
-  return [0, 1].map((k) => w[0] * c[k] + w[1] * c[2 + k] + w[2] * c[4 + k] + w[3] * c[6 + k]);
-}
 
-// The nearest parameter of a Bézier to q: dense samples, then ternary search around the best.
-function nearestT(c, q) {
-  const d2 = (t) => { const [x, y] = bezierAt(c, t); return (x - q[0]) ** 2 + (y - q[1]) ** 2; };
-  let best = 0;
-  for (let i = 1; i <= 4096; i++) if (d2(i / 4096) < d2(best)) best = i / 4096;
-  let lo = Math.max(0, best - 1 / 4096), hi = Math.min(1, best + 1 / 4096);
-  for (let k = 0; k < 200; k++) {
-    const m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
-    if (d2(m1) < d2(m2)) hi = m2; else lo = m1;
-  }
-  return (lo + hi) / 2;
-}
 
 // Per curve piece: its ends' distance from the curve and its chord error; the pieces per curve.
 function curveChecks(plc, mesh, tolerance) {

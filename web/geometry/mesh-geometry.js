@@ -28,7 +28,10 @@ export function triangleShape(mesh, t) {
   return { vertices: [i, j, k], angles, area: doubleArea / 2, radiusEdge };
 }
 
-/** Smallest angle (degrees) of every triangle, for colouring. */
+/**
+ * Smallest angle (degrees) of every triangle, for colouring. minAngleOf's arithmetic written out
+ * in the loop: calling it per triangle took 172 ms instead of 120 ms on 1.5 M triangles (Node 20).
+ */
 export function minAngles(mesh) {
   const n = mesh.triangles.length / 3;
   const result = new Float32Array(n);
