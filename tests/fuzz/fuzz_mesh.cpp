@@ -162,6 +162,19 @@ void readCurves(Bytes& in, int encoding, double scale, ruppert::Plc& plc, rupper
   if (tolerance != 0) o.curveTolerance = std::ldexp(boxDiagonal(plc), -(tolerance % 24));
 }
 
+// A plain CDT of a PLC with curves: every new vertex is an end of a curve's piece or a crossing of
+// segments (the input's repair).
+void checkOnlyCurveVertices(const ruppert::Mesh& mesh, const ruppert::Plc& plc, std::vector<std::string>& problems) {
+  const std::size_t userPoints = plc.points.size() / 2, segments = plc.segments.size() / 2;
+  std::vector<bool> onCurve(mesh.points.size() / 2, false);
+  for (std::size_t k = 0; k < mesh.segmentIds.size(); ++k)
+    if (mesh.segmentIds[k] >= 0 && std::size_t(mesh.segmentIds[k]) >= segments)
+      onCurve[mesh.segments[2 * k]] = onCurve[mesh.segments[2 * k + 1]] = true;
+  for (std::size_t v = userPoints; v < onCurve.size(); ++v)
+    if (!onCurve[v] && mesh.vertexKinds[v] != static_cast<std::uint8_t>(ruppert::VertexKind::Intersection))
+      problems.push_back("vertex " + std::to_string(v) + " is new in a plain CDT but on no curve");
+}
+
 // With RUPPERT_FUZZ_DUMP=path set, every PLC is written there as .poly text before meshing, with
 // the options in a comment: running the target on one finding turns it into a fixture.
 void dumpPlc(const ruppert::Plc& plc, const ruppert::Options& o) {
@@ -239,6 +252,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!plc.curves.empty()) {
     const double tolerance = o.curveTolerance > 0 ? o.curveTolerance : 1e-3 * boxDiagonal(plc);
     for (std::string& p : ruppert_test::checkCurves(mesh, plc, tolerance, false).problems) problems.push_back(std::move(p));
+    if (o.minAngle == 0 && o.maxArea == 0) checkOnlyCurveVertices(mesh, plc, problems);
   }
   if (!problems.empty()) {
     std::fprintf(stderr, "minAngle %g maxArea %g placement %d convexHull %d autoHoles %d complete %d\n", o.minAngle,

@@ -14,9 +14,10 @@
 
 namespace ruppert_fuzz {
 
-// Plain CDT when nothing asks for refinement (ruppert.h, Options::minAngle).
+// Plain CDT when nothing asks for refinement (ruppert.h, Options::minAngle). Not with curves: their
+// pieces' ends are new vertices even then (fuzz_mesh checks they all lie on curves).
 inline bool isPlainCdt(const ruppert::Plc& plc, const ruppert::Options& o) {
-  if (o.minAngle > 0 || o.maxArea > 0 || o.sizeFunction) return false;
+  if (o.minAngle > 0 || o.maxArea > 0 || o.sizeFunction || !plc.curves.empty()) return false;
   for (const ruppert::Region& r : plc.regions)
     if (r.maxArea > 0) return false;
   return true;
