@@ -252,7 +252,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!plc.curves.empty()) {
     const double tolerance = o.curveTolerance > 0 ? o.curveTolerance : 1e-3 * boxDiagonal(plc);
     for (std::string& p : ruppert_test::checkCurves(mesh, plc, tolerance, false).problems) problems.push_back(std::move(p));
-    if (o.minAngle == 0 && o.maxArea == 0) checkOnlyCurveVertices(mesh, plc, problems);
+    if (ruppert_fuzz::asksNoRefinement(plc, o)) checkOnlyCurveVertices(mesh, plc, problems);
   }
   if (!problems.empty()) {
     std::fprintf(stderr, "minAngle %g maxArea %g placement %d convexHull %d autoHoles %d complete %d\n", o.minAngle,

@@ -14,13 +14,18 @@
 
 namespace ruppert_fuzz {
 
-// Plain CDT when nothing asks for refinement (ruppert.h, Options::minAngle). Not with curves: their
-// pieces' ends are new vertices even then (fuzz_mesh checks they all lie on curves).
-inline bool isPlainCdt(const ruppert::Plc& plc, const ruppert::Options& o) {
-  if (o.minAngle > 0 || o.maxArea > 0 || o.sizeFunction || !plc.curves.empty()) return false;
+// Whether nothing asks for refinement (ruppert.h, Options::minAngle).
+inline bool asksNoRefinement(const ruppert::Plc& plc, const ruppert::Options& o) {
+  if (o.minAngle > 0 || o.maxArea > 0 || o.sizeFunction) return false;
   for (const ruppert::Region& r : plc.regions)
     if (r.maxArea > 0) return false;
   return true;
+}
+
+// Plain CDT: no refinement asked for, and no curves, whose pieces' ends are new vertices even then
+// (fuzz_mesh checks that they all lie on curves).
+inline bool isPlainCdt(const ruppert::Plc& plc, const ruppert::Options& o) {
+  return asksNoRefinement(plc, o) && plc.curves.empty();
 }
 
 // Multiplies every coordinate (and area) by 2^shift: exact, and it leaves angles and topology alone.
