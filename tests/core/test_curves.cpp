@@ -210,6 +210,9 @@ TEST_CASE("bad curves are refused with the curve named", "[curves][errors]") {
   refused(p, ruppert::ErrorCode::MalformedInput, "curve 0: unknown type");
   p = quarter, p.curves[0].to = 1;
   refused(p, ruppert::ErrorCode::MalformedInput, "curve 0: from and to are the same point");
+  // Two points at one place are merged into one: a curve between them is closed too (fuzz_mesh).
+  p = quarter, p.points.insert(p.points.end(), {1, 0}), p.curves[0].to = 3;
+  refused(p, ruppert::ErrorCode::MalformedInput, "curve 0: from = 1 and to = 3 lie at the same place (1, 0)");
   // A segment across the arc, and a second arc crossing the first.
   p = quarter, p.points.insert(p.points.end(), {0.5, 0.5, 1, 1}), p.segments.insert(p.segments.end(), {3, 4});
   refused(p, ruppert::ErrorCode::MalformedInput, "curve 0 crosses or touches segment 2");

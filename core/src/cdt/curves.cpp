@@ -99,6 +99,10 @@ CurveShape shapeOf(const Plc& plc, std::size_t i) {
   if (cv.from == cv.to) fail(ErrorCode::MalformedInput, i, "from and to are the same point; a closed curve is two curves");
   const double* a = &plc.points[2 * std::size_t(cv.from)];
   const double* b = &plc.points[2 * std::size_t(cv.to)];
+  // Duplicates are merged before meshing: two points at one place are one point.
+  if (a[0] == b[0] && a[1] == b[1])
+    fail(ErrorCode::MalformedInput, i, "from = " + std::to_string(cv.from) + " and to = " + std::to_string(cv.to) + " lie at the same place (" +
+         formatNumber(a[0]) + ", " + formatNumber(a[1]) + "); a closed curve is two curves");
   CurveShape s;
   s.type = cv.type;
   if (cv.type == CurveType::Bezier) {
