@@ -30,12 +30,26 @@ export const MIN_ANGLE_RANGE = Object.freeze({ min: PACKAGE_OPTIONS.minAngle.min
 /** The package's option names, for hosts that pass options the page does not offer. */
 export const PACKAGE_OPTION_NAMES = Object.freeze(OPTIONS.map((option) => option.name));
 
+/** A page flag's option: its id in camel case ('size-measure' -> the package's option of that name). */
+export const flagOption = (id) => id.replace(/-([a-z])/g, (_, letter) => letter.toUpperCase());
+
+// The package's on/off options that the page offers, as the ids of their checkboxes in index.html
+// (the option's name in kebab case): the panel, links and the mesher's options handle them alike,
+// so that offering one more is one checkbox and one id here. In this order in links (one bit each).
+// The chapter's size measure (stats.lfsIntegral, §6.5) costs a pass over the mesh: on demand.
+export const PAGE_FLAGS = Object.freeze(['size-measure']);
+for (const id of PAGE_FLAGS) {
+  if (PACKAGE_OPTIONS[flagOption(id)]?.type !== 'boolean') throw new Error(`page flag ${id}: no such boolean option`);
+}
+
+/** Options that turn the page flags of those ids on, for presets. */
+export const flagOptions = (...ids) => Object.fromEntries(ids.map((id) => [flagOption(id), true]));
+
 // maxArea and maxSteiner: null (none, automatic) where the package's default means the same.
 export const DEFAULT_OPTIONS = Object.freeze({
   minAngle: PACKAGE_OPTIONS.minAngle.default, maxArea: null, placement: PACKAGE_OPTIONS.placement.default,
   maxSteiner: null, variant: PACKAGE_OPTIONS.variant.default, encroachment: PACKAGE_OPTIONS.encroachment.default,
-  // The chapter's size measure (stats.lfsIntegral, §6.5) costs a pass over the input per vertex: on demand.
-  sizeMeasure: PACKAGE_OPTIONS.sizeMeasure.default,
+  ...Object.fromEntries(PAGE_FLAGS.map((id) => [flagOption(id), PACKAGE_OPTIONS[flagOption(id)].default])),
   // Curves' largest distance from their boundary edges; 0: the core's automatic 1e-3 of the diagonal.
   curveTolerance: PACKAGE_OPTIONS.curveTolerance.default,
 });
@@ -92,7 +106,7 @@ export function toMeshOptions(d, { trace = false } = {}) {
   };
   if (o.maxArea > 0) options.maxArea = o.maxArea;
   if (Number.isInteger(o.maxSteiner) && o.maxSteiner >= 0) options.maxSteiner = o.maxSteiner;
-  if (o.sizeMeasure) options.sizeMeasure = true;
+  for (const id of PAGE_FLAGS) if (o[flagOption(id)] === true) options[flagOption(id)] = true;
   if (o.curveTolerance > 0) options.curveTolerance = o.curveTolerance;
   return options;
 }

@@ -2,8 +2,8 @@
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { init } from '../../wasm/index.js';
-import { toMeshOptions, toPlc } from '../../web/drawing.js';
-import { decodeDrawing } from '../../web/io/url-state.js';
+import { DEFAULT_OPTIONS, PAGE_FLAGS, emptyDrawing, flagOption, toMeshOptions, toPlc } from '../../web/drawing.js';
+import { decodeDrawing, encodeDrawing } from '../../web/io/url-state.js';
 import {
   SCREENSHOTS, canvasFingerprint, clickCanvas, launch, moveOnCanvas, openPage, readStats, settle,
 } from './harness.mjs';
@@ -229,6 +229,26 @@ test('a long meshing job shows progress and can be cancelled', async () => {
   await page.press('#max-area', 'Tab');
   assert.equal(await settle(page), 'done');
   assert.ok((await readStats(page)).triangles > 0);
+});
+
+test('page flags: each a checkbox bound to its package option, in links and in the mesher\'s options', async () => {
+  assert.ok(PAGE_FLAGS.length > 0);
+  for (const [k, id] of PAGE_FLAGS.entries()) {
+    const key = flagOption(id);
+    assert.equal(DEFAULT_OPTIONS[key], false, `${id} is off by default`);
+    assert.equal(await page.locator(`#${id}[type=checkbox]`).count(), 1, `${id} is a checkbox of the page`);
+    const on = emptyDrawing();
+    on.options[key] = true;
+    assert.equal(toMeshOptions(on)[key], true, `${id} on reaches the mesher as ${key}`);
+    assert.equal(key in toMeshOptions(emptyDrawing()), false, `${id} off is left to the package's default`);
+    const hash = `#${encodeDrawing(on)}`;
+    assert.equal(decodeDrawing(hash).options[key], true, `${id} survives a link`);
+    assert.equal(decodeDrawing(`#${encodeDrawing(emptyDrawing())}`).options[key], false);
+    // Links from before the flags were general carry the first flag as a 7th entry of 1.
+    const old = { v: 1, p: [0, 0, 1, 0, 0, 1], s: [0, 1, 1, 2, 2, 0], h: [], r: [], o: [30, 0, 't', -1, 'c', 'l', 1 << k] };
+    const encoded = Buffer.from(JSON.stringify(old)).toString('base64url');
+    assert.equal(decodeDrawing(`#d=${encoded}`).options[key], true, `bit ${k} of an older link is ${id}`);
+  }
 });
 
 test('no console errors', () => {

@@ -10,7 +10,7 @@
 // "c"/"b" = CDT / bounding-box variant, "l"/"d" = diametral lens / disk encroachment. The last two
 // were appended later: links without them (or with unknown values) get the defaults, CDT and lens;
 // so was the seventh, present only when the size measure is asked for.
-import { DEFAULT_OPTIONS, MIN_ANGLE_RANGE } from '../drawing.js';
+import { DEFAULT_OPTIONS, MIN_ANGLE_RANGE, PAGE_FLAGS, flagOption } from '../drawing.js';
 import { decodeCurves, encodeCurves } from '../editing/curve-data.js';
 
 /** Links longer than this are not written (browsers and chat apps truncate them). */
@@ -32,6 +32,9 @@ function fromBase64Url(text) {
 const PLACEMENT_CODES = new Map([['offcenter', 'o'], ['circumcenter', 'c'], ['petal', 'p'], ['optimal', 't']]);
 const PLACEMENT_NAMES = new Map([...PLACEMENT_CODES].map(([name, code]) => [code, name]));
 
+/** The page flags that are on in these options, as bits in PAGE_FLAGS' order (0: none). */
+const pageFlagBits = (options) => PAGE_FLAGS.reduce((bits, id, k) => (options[flagOption(id)] === true ? bits | (1 << k) : bits), 0);
+
 export function encodeDrawing(d) {
   const o = d.options;
   const compact = {
@@ -45,8 +48,9 @@ export function encodeDrawing(d) {
     o: [o.minAngle, o.maxArea > 0 ? o.maxArea : 0, PLACEMENT_CODES.get(o.placement) ?? 't',
       Number.isInteger(o.maxSteiner) ? o.maxSteiner : -1,
       o.variant === 'box' ? 'b' : 'c', o.encroachment === 'disk' ? 'd' : 'l',
-      // The size measure only when asked for (older links have no 7th entry: off).
-      ...(o.sizeMeasure ? [1] : [])],
+      // The page flags that are on, one bit each in PAGE_FLAGS' order; only when one is (older links
+      // have no 7th entry: all off).
+      ...(pageFlagBits(o) ? [pageFlagBits(o)] : [])],
     ...encodeCurves(d),
     ...(o.curveTolerance > 0 ? { t: o.curveTolerance } : {}),
   };
@@ -78,7 +82,7 @@ export function decodeDrawing(hash) {
     finiteArray(r, 'a region');
     return { x: r[0], y: r[1], attribute: r[2] ?? 0, maxArea: r[3] > 0 ? r[3] : null };
   });
-  const [minAngle, maxArea, placement, maxSteiner, variant, encroachment, sizeMeasure] = Array.isArray(data.o) ? data.o : [];
+  const [minAngle, maxArea, placement, maxSteiner, variant, encroachment, flagBits] = Array.isArray(data.o) ? data.o : [];
   const options = {
     minAngle: Number.isFinite(minAngle) ? Math.min(MIN_ANGLE_RANGE.max, Math.max(MIN_ANGLE_RANGE.min, minAngle))
       : DEFAULT_OPTIONS.minAngle,
@@ -87,7 +91,7 @@ export function decodeDrawing(hash) {
     maxSteiner: Number.isInteger(maxSteiner) && maxSteiner >= 0 ? maxSteiner : null,
     variant: variant === 'b' ? 'box' : 'cdt',
     encroachment: encroachment === 'd' ? 'disk' : 'lens',
-    sizeMeasure: sizeMeasure === 1,
+    ...Object.fromEntries(PAGE_FLAGS.map((id, k) => [flagOption(id), Number.isInteger(flagBits) && ((flagBits >> k) & 1) === 1])),
     // Only when the link has one (links without curves read as before; absent means automatic).
     ...(typeof data.t === 'number' && data.t > 0 && Number.isFinite(data.t) ? { curveTolerance: data.t } : {}),
   };

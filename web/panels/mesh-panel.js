@@ -15,9 +15,9 @@ export const REFERENCE_ANGLES = [20.7, 26.45, 28.6, 34];
 const format = (value, digits = 2) => (Number.isFinite(value) ? value.toFixed(digits) : '–');
 
 export function showStats(elements, mesh, bound = null) {
-  const { vertices, triangles, minAngle, maxAngle, complete, time, reasons, sizeMeasure } = elements;
+  const { vertices, triangles, minAngle, maxAngle, complete, time, reasons, lfsIntegral } = elements;
   if (!mesh) {
-    for (const el of [vertices, triangles, minAngle, maxAngle, complete, time, sizeMeasure]) el.textContent = '–';
+    for (const el of [vertices, triangles, minAngle, maxAngle, complete, time, lfsIntegral]) el.textContent = '–';
     reasons.replaceChildren();
     drawHistogram(elements.histogram, null, bound);
     return;
@@ -30,7 +30,7 @@ export function showStats(elements, mesh, bound = null) {
   complete.textContent = mesh.complete ? 'yes' : 'no';
   complete.className = mesh.complete ? 'good' : 'bad';
   time.textContent = `${format(s.milliseconds, 1)} ms`;
-  sizeMeasure.textContent = sizeMeasureText(s);
+  lfsIntegral.textContent = lfsIntegralText(s);
   reasons.replaceChildren(...mesh.reasons.map((r) => {
     const li = document.createElement('li');
     li.textContent = `${r.kind} ×${r.count}: ${r.message}`;
@@ -41,9 +41,10 @@ export function showStats(elements, mesh, bound = null) {
 
 /**
  * The size measure row: the integral of 1/lfs² (stats.lfsIntegral, present when the mesh was made
- * with sizeMeasure) and the triangles per unit of it, the ratio a size-optimal mesh keeps bounded.
+ * with the Size measure flag) and the triangles per unit of it, the ratio a size-optimal mesh keeps
+ * bounded.
  */
-export function sizeMeasureText(stats) {
+export function lfsIntegralText(stats) {
   const integral = stats.lfsIntegral;
   if (!(integral > 0)) return 'off (Parameters: Size measure)';
   return `∫1/lfs² = ${integral.toPrecision(4)}; ${(stats.triangles / integral).toPrecision(3)} triangles per unit`;
@@ -214,7 +215,7 @@ export function createMeshPanel() {
   const elements = {
     vertices: $('stat-vertices'), triangles: $('stat-triangles'), minAngle: $('stat-min-angle'),
     maxAngle: $('stat-max-angle'), complete: $('stat-complete'), time: $('stat-time'),
-    reasons: $('reasons'), histogram: $('histogram'), sizeMeasure: $('stat-size-measure'),
+    reasons: $('reasons'), histogram: $('histogram'), lfsIntegral: $('stat-size-measure'),
   };
 
   /** The triangles left skinny on purpose in the mesh, marked in the panel: the exemptions or null. */

@@ -2,7 +2,7 @@
 // encroachment, Steiner budget, the region seed fields (for new seeds, or the selected one) and the
 // selected segment's marker.
 // Each field writes app.drawing.options and reports the change; sync() shows a drawing's options.
-import { DEFAULT_OPTIONS, Item, MIN_ANGLE_RANGE, segmentMarkers } from '../drawing.js';
+import { DEFAULT_OPTIONS, Item, MIN_ANGLE_RANGE, PAGE_FLAGS, flagOption, segmentMarkers } from '../drawing.js';
 import { ENCROACHMENT_LABELS, PLACEMENT_LABELS, PRACTICAL_ANGLE, VARIANT_LABELS } from '../labels.js';
 import { setStatus } from './status-line.js';
 import { curveMarkerOf, setCurveMarker, syncCurveTolerance, watchCurveTolerance } from '../editing/curve-fields.js';
@@ -54,7 +54,7 @@ export function createParametersPanel({ app, editor, changed }) {
     $('max-steiner').value = Number.isInteger(o.maxSteiner) ? String(o.maxSteiner) : '';
     $('variant').value = o.variant ?? DEFAULT_OPTIONS.variant;
     $('encroachment').value = o.encroachment ?? DEFAULT_OPTIONS.encroachment;
-    $('size-measure').checked = Boolean(o.sizeMeasure);
+    for (const id of PAGE_FLAGS) $(id).checked = Boolean(o[flagOption(id)]);
     syncCurveTolerance(o);
   }
 
@@ -105,10 +105,12 @@ export function createParametersPanel({ app, editor, changed }) {
       changed(true);
     });
   }
-  $('size-measure').addEventListener('change', () => {
-    app.drawing.options.sizeMeasure = $('size-measure').checked;
-    changed(true);
-  });
+  for (const id of PAGE_FLAGS) {
+    $(id).addEventListener('change', () => {
+      app.drawing.options[flagOption(id)] = $(id).checked;
+      changed(true);
+    });
+  }
   watchCurveTolerance(app, changed);
   $('max-steiner').addEventListener('change', () => {
     const value = readNumber($('max-steiner'));

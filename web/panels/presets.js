@@ -4,6 +4,7 @@
 // open it in step-by-step mode, and `stages` (a function of the trace) to name the steps that
 // show a figure's snapshots.
 import { EventKind } from '../../wasm/index.js';
+import { flagOptions } from '../drawing.js';
 
 /** Adds a closed polygon (a ring of segments) and returns its first point index. */
 function ring(d, coordinates) {
@@ -225,7 +226,7 @@ export const PRESETS = [
   },
   {
     id: 'size-measure', name: 'The size measure: a small feature far from a large one', build: smallFeature,
-    options: { sizeMeasure: true },
+    options: flagOptions('size-measure'),
     caption: 'The size measure (§6.5): the local feature size is tiny near the small triangle and large far from it, ' +
       'and the triangles grow with it. Look at the grading, and at the Mesh panel\'s Size measure row: ' +
       'the integral of 1/lfs², to which a good mesh\'s triangle count is proportional.',

@@ -20,7 +20,39 @@ namespace ruppert {
 
 inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
-// triangulate()'s Options that the binding passes as numbers, in the heap table's order.
+// triangulate()'s Options that the binding passes as numbers, in the heap table's order; each is
+// the ruppert::Options member of that name, of its default's type. What they do, for C++ callers:
+//   minAngle     degrees in [low, high]; 0 with maxArea <= 0 and no size function: the plain CDT.
+//                Above ~34 completion is not guaranteed. Above 34 a caller gets: the mesh refined
+//                to minAngle directly, if that completes within sixteen times the triangles of the
+//                33-degree mesh, or (optimal placement, no maxArea) in three more attempts that,
+//                where no point meets the bound, insert the best point below it, the first two
+//                splitting the largest skinny triangles first, within 128 times (no more than about
+//                half a million triangles; not tried where that is under twice), the last the
+//                smallest first within sixteen times; else the best mesh of a push from the
+//                33-degree mesh, one degree at a time while it improves, with complete = false,
+//                ReasonKind::AngleUnreachable and the angle reached in Stats::reachedAngle: never
+//                below 33 degrees (outside the §6.6 exemptions) nor over four times the 33-degree
+//                mesh's triangles, whenever 33 degrees completes (else it refines as asked, as
+//                below 34). Above 34, vertices on segments may also slide along them
+//                (segment_slide.h). A miss costs the attempts up to their caps: on the generated
+//                shape families at 40 degrees at most 0.8 s natively.
+//   maxArea      <= 0: no global area bound.
+//   maxSteiner   kAutoSteinerBudget: no fixed count; refinement stops only once its vertices
+//                exceed a multiple of the chapter's size measure (§6.5), i.e. when it is not
+//                converging. Running out is not an error: complete becomes false.
+//   placement, encroachment, variant: the enums above.
+//   convexHull   mesh the whole convex hull, not only what segments enclose.
+//   autoHoles    with no hole seeds: regions at odd nesting depth are domain, even are holes.
+//   trace        record Mesh::events (every insertion, for step-by-step replay).
+//   sizeMeasure  compute Stats::lfsIntegral (§6.5; one shortest-path pass over the mesh).
+//   edges        fill Mesh::edges and Mesh::edgeMarkers (meshEdges), after Triangle's -e.
+//   noBoundarySteiner  no new vertex on a subsegment of the domain's boundary (Triangle's -Y).
+//   noSegmentSteiner   no new vertex on any subsegment (-YY); implies noBoundarySteiner.
+//   jettison     leave Unused input points out of Mesh::points (-j), see Mesh::inputToOutput.
+//   curveTolerance  Plc::curves: the largest distance from a boundary edge to the curve it
+//                follows (user units); <= 0: 1e-3 of the diagonal of the input points' bounding
+//                box. Pieces are split until each is within it.
 #define RUPPERT_MESH_OPTIONS(X)                                                                          \
   X(minAngle, "--min-angle DEG", 30.0, 0, 60, "degrees",                                                \
     "smallest angle to reach, {min}..{max} (default {default}); above 34, where out of reach: the best "  \

@@ -204,62 +204,18 @@ struct Progress {
   double worstAngle = 0;  // degrees: smallest angle among triangles still queued as bad
 };
 
+// One member per entry of option_table.h's RUPPERT_MESH_OPTIONS, of its default's type and value;
+// what each one does is written there, beside its name, default and range.
 struct Options {
-  // Every default and range here is option_table.h's (option::minAngle::fallback, ::low, ::high).
-  // Minimum angle in degrees, in [low, high]. 0 and maxArea <= 0 and no size function: plain CDT.
-  // Any angle in the range is accepted; above ~34 completion is not guaranteed. Above 34 a caller gets:
-  // the mesh refined to minAngle directly, if that completes within sixteen times the triangles of
-  // the 33-degree mesh, or (optimal placement, no maxArea) in three more attempts that, where no
-  // point meets the bound, insert the best point below it, the first two splitting the largest
-  // skinny triangles first, within 128 times (no more than about half a million triangles; not tried
-  // where that is under twice), the last the smallest first within sixteen times;
-  // else the best mesh of a push from the 33-degree mesh, one degree at a time while it improves,
-  // with complete = false, ReasonKind::AngleUnreachable and the angle reached in
-  // Stats::reachedAngle: never below 33 degrees (outside the §6.6 exemptions) nor over four times
-  // the 33-degree mesh's triangles, whenever 33 degrees completes (else it refines as asked, as
-  // below 34). Above 34, vertices on segments may also slide along them (segment_slide.h). A miss
-  // costs the attempts up to their caps: on the generated shape families at 40 degrees at most
-  // 0.8 s natively.
-  double minAngle = option::minAngle::fallback;
-  double maxArea = option::maxArea::fallback;  // <= 0: no global area bound
+#define RUPPERT_OPTION_MEMBER_(KEY, FLAG, FALLBACK, ...) std::decay_t<decltype(FALLBACK)> KEY = FALLBACK;
+  RUPPERT_MESH_OPTIONS(RUPPERT_OPTION_MEMBER_)
+#undef RUPPERT_OPTION_MEMBER_
   // Optional size field: max triangle area at (x, y); return <= 0 or +inf for "no bound here".
   std::function<double(double x, double y)> sizeFunction;
-  // Budget of Steiner vertices. kAutoSteinerBudget: no fixed count; refinement stops only once its
-  // vertices exceed a multiple of the chapter's size measure (§6.5), i.e. when it is not converging.
-  // Running out is not an error: complete becomes false.
-  std::uint64_t maxSteiner = option::maxSteiner::fallback;
-  Placement placement = option::placement::fallback;  // the fewest triangles, and 35-40 degrees
-  Encroachment encroachment = option::encroachment::fallback;
-  Variant variant = option::variant::fallback;
-  // Mesh the whole convex hull, not only what segments enclose.
-  bool convexHull = option::convexHull::fallback;
-  // With no hole seeds: regions at odd nesting depth are domain, even are holes.
-  bool autoHoles = option::autoHoles::fallback;
-  // Record Mesh::events (every insertion, for step-by-step replay).
-  bool trace = option::trace::fallback;
-  // Compute Stats::lfsIntegral (§6.5; one shortest-path pass over the mesh).
-  bool sizeMeasure = option::sizeMeasure::fallback;
   // Called every few thousand insertions; return false to stop early (complete=false, "cancelled").
   std::function<bool(const Progress&)> onProgress;
-  // Output and boundary (issue 16), after Triangle's -e, -Y, -YY and -j:
-  // Fill Mesh::edges and Mesh::edgeMarkers (meshEdges below).
-  bool edges = option::edges::fallback;
-  // No new vertex on a subsegment of the domain's boundary (-Y).
-  bool noBoundarySteiner = option::noBoundarySteiner::fallback;
-  // No new vertex on any subsegment (-YY); implies noBoundarySteiner.
-  bool noSegmentSteiner = option::noSegmentSteiner::fallback;
-  // Leave Unused input points out of Mesh::points (-j), see Mesh::inputToOutput.
-  bool jettison = option::jettison::fallback;
-  // Plc::curves: the largest distance from a boundary edge to the curve it follows (user units);
-  // <= 0: 1e-3 of the diagonal of the input points' bounding box. Pieces are split until each is
-  // within it.
-  double curveTolerance = option::curveTolerance::fallback;
 };
-// Every option of the table is a member of the table's type (the callbacks: a member at all).
-#define RUPPERT_OPTION_IS_MEMBER_(KEY, ...) \
-  static_assert(std::is_same_v<decltype(Options::KEY), std::decay_t<decltype(option::KEY::fallback)>>);
-RUPPERT_MESH_OPTIONS(RUPPERT_OPTION_IS_MEMBER_)
-#undef RUPPERT_OPTION_IS_MEMBER_
+// The table's callbacks are members too.
 #define RUPPERT_OPTION_IS_MEMBER_(KEY, ...) static_assert(sizeof(Options::KEY) > 0);
 RUPPERT_CALLBACK_OPTIONS(RUPPERT_OPTION_IS_MEMBER_)
 #undef RUPPERT_OPTION_IS_MEMBER_
@@ -360,7 +316,7 @@ struct Stats {
   std::uint64_t inputVertices = 0, segmentVertices = 0, interiorVertices = 0, offCenterVertices = 0,
                 intersectionVertices = 0;
   std::uint64_t rejectedCircumcenters = 0;
-  // Estimate of the integral of 1/lfs^2 over the domain (§6.5), with Options::sizeMeasure; else 0.
+  // Estimate of the integral of 1/lfs^2 over the domain (§6.5), with the size-measure option (option_table.h); else 0.
   // lfs is bounded from above from the mesh (see size_measure.cpp), so this tends to be low.
   double lfsIntegral = 0;
   double trianglesPerLfsIntegral = 0;
