@@ -213,6 +213,13 @@ TEST_CASE("bad curves are refused with the curve named", "[curves][errors]") {
   // Two points at one place are merged into one: a curve between them is closed too (fuzz_mesh).
   p = quarter, p.points.insert(p.points.end(), {1, 0}), p.curves[0].to = 3;
   refused(p, ruppert::ErrorCode::MalformedInput, "curve 0: from = 1 and to = 3 lie at the same place (1, 0)");
+  // The input's own checks come before the pieces' points are appended: a segment's index past the
+  // points would otherwise name one of them (fuzz_mesh).
+  REQUIRE(quarter.points.size() == 6);
+  p = quarter, p.segments.back() = 3;
+  refused(p, ruppert::ErrorCode::IndexOutOfRange, "refers to point 3 but there are 3 points");
+  p = quarter, p.points.push_back(2);
+  refused(p, ruppert::ErrorCode::MalformedInput, "points has odd length 7");
   // A segment across the arc, and a second arc crossing the first.
   p = quarter, p.points.insert(p.points.end(), {0.5, 0.5, 1, 1}), p.segments.insert(p.segments.end(), {3, 4});
   refused(p, ruppert::ErrorCode::MalformedInput, "curve 0 crosses or touches segment 2");

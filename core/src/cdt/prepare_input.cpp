@@ -91,8 +91,6 @@ void checkAttributes(const Plc& plc, std::size_t n) {
                                                formatNumber(a[i]) + " is not finite");
 }
 
-namespace {
-
 // The input's shape and values: lengths, finite coordinates, indices in range, sane regions.
 // Returns the largest coordinate magnitude, which sets the scale.
 double checkInput(const Plc& plc, const Options& options) {
@@ -147,6 +145,8 @@ double checkInput(const Plc& plc, const Options& options) {
 
   return maxAbs;
 }
+
+namespace {
 
 // Scales every coordinate by a power of two (exact) so that the largest magnitude lies in [1, 2):
 // sets out's exponent, holes, regions and area bound, and returns every input point, scaled, in
