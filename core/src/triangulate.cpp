@@ -52,6 +52,10 @@ Mesh triangulate(const Plc& userPlc, const Options& options) {
   using namespace detail;
   const auto start = std::chrono::steady_clock::now();
   const bool box = options.variant == Variant::BoundingBox;
+  // The caller's indices and markers, before curves' pieces add points: a segment's index past the
+  // input's points would name one of them (found by fuzz_mesh; tests/core/test_curves.cpp, "bad
+  // curves are refused with the curve named").
+  checkShape(userPlc);
   // Refining a mesh: its boundary edges join the segments, its triangles bound the domain and areas.
   Plc refining, withCurves;
   CurvePieces curves;

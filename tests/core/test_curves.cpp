@@ -220,6 +220,11 @@ TEST_CASE("bad curves are refused with the curve named", "[curves][errors]") {
   refused(p, ruppert::ErrorCode::IndexOutOfRange, "refers to point 3 but there are 3 points");
   p = quarter, p.points.push_back(2);
   refused(p, ruppert::ErrorCode::MalformedInput, "points has odd length 7");
+  // Markers one per point and per segment, or none: the pieces' points take theirs after the input's.
+  p = quarter, p.pointMarkers = {1};
+  refused(p, ruppert::ErrorCode::MalformedInput, "pointMarkers has length 1 for 3 points");
+  p = quarter, p.segmentMarkers = {1, 2, 3};
+  refused(p, ruppert::ErrorCode::MalformedInput, "segmentMarkers has length 3 for 2 segments");
   // A segment across the arc, and a second arc crossing the first.
   p = quarter, p.points.insert(p.points.end(), {0.5, 0.5, 1, 1}), p.segments.insert(p.segments.end(), {3, 4});
   refused(p, ruppert::ErrorCode::MalformedInput, "curve 0 crosses or touches segment 2");

@@ -41,10 +41,13 @@ test('the two-line example from the README meshes a square to the requested qual
 // Issue 45, curves (arcs and Béziers cut into pieces, split on the curve, beyond the chord where the
 // domain bulges; the checks naming the curve): 149,205 -> 155,492 bytes, with their code compiled for
 // size (cold_code.h) and kept out of the hot paths; the limit moved to 156 KB for it, openly.
+// Then the caller's input checked before curves' pieces go in (segment indices past the points,
+// found by fuzz_mesh, and one marker per point and segment or none): 155,880 -> 156,153 bytes;
+// 157 KB.
 const gzippedSize = (file) => gzipSync(readFileSync(new URL(`./node_modules/ruppert/wasm/dist/${file}`, import.meta.url)), { level: 9 }).length;
-test('the mesher .wasm is at most 156 KB gzipped, the text formats at most 60 KB', () => {
+test('the mesher .wasm is at most 157 KB gzipped, the text formats at most 60 KB', () => {
   const mesher = gzippedSize('ruppert.wasm'), formats = gzippedSize('ruppert-formats.wasm');
-  assert.ok(mesher <= 156000, `ruppert.wasm: ${mesher} bytes gzipped`);
+  assert.ok(mesher <= 157000, `ruppert.wasm: ${mesher} bytes gzipped`);
   assert.ok(formats <= 60000, `ruppert-formats.wasm: ${formats} bytes gzipped`);
 });
 

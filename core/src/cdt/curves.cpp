@@ -194,16 +194,10 @@ void addPieces(Plc& out, const CurveShape& s, const std::vector<double>& t, std:
 
 Plc withCurvePieces(const Plc& plc, const Options& options, CurvePieces& pieces) {
   if (!plc.triangles.empty()) throw Error(ErrorCode::MalformedInput, "curves cannot be given with triangles (refining a mesh)");
-  // Before the pieces' points are appended: a segment's index past the input's points would
-  // otherwise name one of them (found by fuzz_mesh; tests/core/test_curves.cpp, "bad curves are
-  // refused with the curve named").
-  checkInput(plc, options);
   if (std::isnan(options.curveTolerance) || std::isinf(options.curveTolerance))
     throw Error(ErrorCode::InvalidOption, "curveTolerance must be a finite number, not " + formatNumber(options.curveTolerance));
   const double tolerance = options.curveTolerance > 0 ? options.curveTolerance : defaultTolerance(plc);
   Plc out = plc;
-  // Markers are optional per point (missing ones are 0): the pieces' points get theirs after all.
-  if (!out.pointMarkers.empty()) out.pointMarkers.resize(plc.points.size() / 2, 0);
   const std::size_t userSegments = plc.segments.size() / 2;
   pieces.first = static_cast<std::int32_t>(userSegments);
   pieces.firstPoint = static_cast<std::uint32_t>(plc.points.size() / 2);

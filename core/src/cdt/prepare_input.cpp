@@ -91,16 +91,46 @@ void checkAttributes(const Plc& plc, std::size_t n) {
                                                formatNumber(a[i]) + " is not finite");
 }
 
-// The input's shape and values: lengths, finite coordinates, indices in range, sane regions.
-// Returns the largest coordinate magnitude, which sets the scale.
-double checkInput(const Plc& plc, const Options& options) {
-  checkOptions(options);
+namespace {
+
+// Even lengths of points and segments, and the segments' indices in range.
+void checkIndices(const Plc& plc) {
   if (plc.points.size() % 2 != 0)
     fail(ErrorCode::MalformedInput,
          "points has odd length " + std::to_string(plc.points.size()) + " (expected x0, y0, x1, y1, ...)");
   if (plc.segments.size() % 2 != 0)
     fail(ErrorCode::MalformedInput, "segments has odd length " + std::to_string(plc.segments.size()) +
                                         " (expected a0, b0, a1, b1, ...)");
+  const std::size_t n = plc.points.size() / 2;
+  for (std::size_t k = 0; k < plc.segments.size(); ++k) {
+    if (plc.segments[k] >= n)
+      fail(ErrorCode::IndexOutOfRange, "segments[" + std::to_string(k / 2) + "] refers to point " +
+                                           std::to_string(plc.segments[k]) + " but there are " +
+                                           std::to_string(n) + " points");
+  }
+}
+
+}  // namespace
+
+void checkShape(const Plc& plc) {
+  checkIndices(plc);
+  const std::size_t n = plc.points.size() / 2;
+  auto checkMarkers = [](const std::vector<std::int32_t>& markers, const char* name, std::size_t items, const char* what) {
+    if (!markers.empty() && markers.size() != items)
+      fail(ErrorCode::MalformedInput, std::string(name) + " has length " + std::to_string(markers.size()) + " for " +
+                                          std::to_string(items) + what + " (one each, or none)");
+  };
+  checkMarkers(plc.pointMarkers, "pointMarkers", n, " points");
+  checkMarkers(plc.segmentMarkers, "segmentMarkers", plc.segments.size() / 2, " segments");
+}
+
+namespace {
+
+// The input's shape and values: lengths, finite coordinates, indices in range, sane regions.
+// Returns the largest coordinate magnitude, which sets the scale.
+double checkInput(const Plc& plc, const Options& options) {
+  checkOptions(options);
+  checkIndices(plc);
   if (plc.holes.size() % 2 != 0)
     fail(ErrorCode::MalformedInput, "holes has odd length " + std::to_string(plc.holes.size()));
   const std::size_t n = plc.points.size() / 2;
@@ -122,12 +152,6 @@ double checkInput(const Plc& plc, const Options& options) {
     checkFinite(plc.points[2 * i + 1], "points", i, ".y");
   }
   checkAttributes(plc, n);
-  for (std::size_t k = 0; k < plc.segments.size(); ++k) {
-    if (plc.segments[k] >= n)
-      fail(ErrorCode::IndexOutOfRange, "segments[" + std::to_string(k / 2) + "] refers to point " +
-                                           std::to_string(plc.segments[k]) + " but there are " +
-                                           std::to_string(n) + " points");
-  }
   for (std::size_t i = 0; i < plc.holes.size() / 2; ++i) {
     checkFinite(plc.holes[2 * i], "holes", i, ".x");
     checkFinite(plc.holes[2 * i + 1], "holes", i, ".y");
@@ -145,8 +169,6 @@ double checkInput(const Plc& plc, const Options& options) {
 
   return maxAbs;
 }
-
-namespace {
 
 // Scales every coordinate by a power of two (exact) so that the largest magnitude lies in [1, 2):
 // sets out's exponent, holes, regions and area bound, and returns every input point, scaled, in

@@ -51,10 +51,11 @@ struct PreparedInput {
   double up_ = 1, down_ = 1;  // 2^exponent and 2^-exponent, or 0 where ldexp must be used
 };
 
-// The input's shape and values (lengths, finite coordinates, indices in range, sane regions and
-// options); throws ruppert::Error naming the offending item. Returns the largest magnitude of a
-// coordinate. prepareInput runs it; code that adds points first (curves' pieces) runs it before.
-double checkInput(const Plc& plc, const Options& options);
+// The caller's input's shape (even lengths, segments' indices in range, one marker per point and
+// per segment or none); throws ruppert::Error naming the offending item. triangulate() runs it
+// first: curves' pieces then add points, segments and per-curve segment markers, and prepareInput
+// checks lengths and indices again on what is meshed.
+void checkShape(const Plc& plc);
 
 // Throws ruppert::Error naming the offending item. Appends DuplicatePoint notices.
 PreparedInput prepareInput(const Plc& plc, const Options& options, std::vector<Notice>& notices);
