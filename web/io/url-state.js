@@ -3,13 +3,14 @@
 //   #d=<base64url of compact JSON>
 //   { "v": 1, "p": [x0, y0, ...], "s": [a0, b0, ...], "m": [marker per segment] (only if any), "h": [hx0, hy0, ...],
 //     "r": [[x, y, attribute, maxArea], ...],
-//     "o": [minAngle, maxArea, "o" | "c", maxSteiner, "c" | "b", "l" | "d", 1 (size measure, only if on)],
+//     "o": [minAngle, maxArea, "o" | "c", maxSteiner, "c" | "b", "l" | "d", page flag bits (only if any is on)],
 //     "c": [curve, ...] (only if any: editing/curve-data.js), "t": curveTolerance (only if not 0) }
 //
 // maxArea 0 = none, maxSteiner -1 = automatic, "o"/"c"/"p"/"t" = off-center / circumcenter / petal / optimal placement,
 // "c"/"b" = CDT / bounding-box variant, "l"/"d" = diametral lens / disk encroachment. The last two
 // were appended later: links without them (or with unknown values) get the defaults, CDT and lens;
-// so was the seventh, present only when the size measure is asked for.
+// so was the seventh, the page flags that are on (drawing.js's PAGE_FLAGS, one bit each), present
+// only when one is (older links wrote 1 for the size measure, the first flag).
 import { DEFAULT_OPTIONS, MIN_ANGLE_RANGE, PAGE_FLAGS, flagOption } from '../drawing.js';
 import { decodeCurves, encodeCurves } from '../editing/curve-data.js';
 
@@ -37,6 +38,7 @@ const pageFlagBits = (options) => PAGE_FLAGS.reduce((bits, id, k) => (options[fl
 
 export function encodeDrawing(d) {
   const o = d.options;
+  const flags = pageFlagBits(o);
   const compact = {
     v: 1,
     p: d.points,
@@ -48,9 +50,8 @@ export function encodeDrawing(d) {
     o: [o.minAngle, o.maxArea > 0 ? o.maxArea : 0, PLACEMENT_CODES.get(o.placement) ?? 't',
       Number.isInteger(o.maxSteiner) ? o.maxSteiner : -1,
       o.variant === 'box' ? 'b' : 'c', o.encroachment === 'disk' ? 'd' : 'l',
-      // The page flags that are on, one bit each in PAGE_FLAGS' order; only when one is (older links
-      // have no 7th entry: all off).
-      ...(pageFlagBits(o) ? [pageFlagBits(o)] : [])],
+      // Only when a page flag is on (older links have no 7th entry: all off).
+      ...(flags ? [flags] : [])],
     ...encodeCurves(d),
     ...(o.curveTolerance > 0 ? { t: o.curveTolerance } : {}),
   };
