@@ -64,6 +64,23 @@ TEST_CASE("a quarter disk under an area bound keeps its arc's vertices on the ar
   CHECK(m.curves.pieces[0] >= 50);
 }
 
+TEST_CASE("input points between an arc and its first chords are meshed once the chords reach them", "[curves]") {
+  // The quarter disk's arc bulges out of its chords: points just inside the arc lie beyond the first
+  // chords, outside the first triangles. Found by fuzz_mesh: such a point was dropped with the
+  // triangles outside, and a later split of the piece covered it with a triangle that did not use it.
+  for (double tolerance : {0.05, 1e-3}) {
+    CurvedShape shape = ruppert_test::quarterDisk();
+    for (double angle = 0.05; angle < 1.55; angle += 0.1) {
+      shape.plc.points.push_back(0.995 * std::cos(angle));
+      shape.plc.points.push_back(0.995 * std::sin(angle));
+    }
+    // The area bound splits every piece of the arc: the validator finds any input point inside a
+    // triangle that no triangle uses.
+    meshAndCheck(shape, 30, tolerance, 1e-3);
+    meshAndCheck(shape, 20, tolerance);
+  }
+}
+
 TEST_CASE("a region under a cubic Bezier meshes on the curve", "[curves]") {
   for (double h : {0.5, 1.0, 2.0}) {
     const CurvedShape shape = ruppert_test::underBezier(h);

@@ -3,12 +3,14 @@
 #include "cdt/curves.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <utility>
 
 #include "cdt/prepare_input.h"
 #include "cold_code.h"
+#include "mesh/predicates.h"
 
 // Curves are rare and their pieces few: the whole file is compiled for size (cold_code.h).
 RUPPERT_COLD_BEGIN
@@ -21,6 +23,9 @@ constexpr double kTwoPi = 6.28318530717958647692;
 constexpr double kArcPieceTurn = kTwoPi / 6;      // 60 degrees: well inside the chord's diametral disk
 constexpr std::size_t kMaxPieces = std::size_t(1) << 22;
 constexpr int kMaxBisections = 40;
+// Halvings of a piece for the input points inside its hull: a point on the curve itself stays inside
+// every piece that holds it, so this bounds the pieces such a point costs.
+constexpr int kMaxPointHalvings = 30;
 
 // Bernstein form of a cubic's coordinate k (0: x, 1: y) at t.
 double cubic(const double* p, int k, double t) {
@@ -72,6 +77,18 @@ bool CurveShape::withinDisk(double t0, double t1) const {
   // A control point sees the chord at 90 degrees or more.
   auto inDisk = [&](const double* p) { return (q[0] - p[0]) * (q[6] - p[0]) + (q[1] - p[1]) * (q[7] - p[1]) <= 0; };
   return inDisk(q + 2) && inDisk(q + 4);
+}
+
+void CurveShape::hull(double t0, double t1, double q[8]) const {
+  if (type == CurveType::Bezier) {
+    pieceControls(t0, t1, q);
+    return;
+  }
+  point(t0, q), point(t1, q + 6);
+  // The end tangents meet on the bisector at r / cos(half the turn); a piece turns by at most 60
+  // degrees, so the cosine is at least 0.866.
+  const double half = (t1 - t0) * c[4] / 2, mid = c[3] + t0 * c[4] + half, d = c[2] / std::cos(half);
+  q[2] = q[4] = c[0] + d * std::cos(mid), q[3] = q[5] = c[1] + d * std::sin(mid);
 }
 
 void CurveShape::scale(double factor) {
@@ -158,6 +175,62 @@ std::vector<double> cutPoints(const CurveShape& s, double tolerance, std::size_t
   return t;
 }
 
+using PointsByX = std::vector<std::array<double, 2>>;
+
+// The input's finite points sorted by x (the others are refused later by prepareInput).
+PointsByX pointsByX(const Plc& plc) {
+  PointsByX p;
+  for (std::size_t i = 0; i + 1 < plc.points.size(); i += 2)
+    if (std::isfinite(plc.points[i]) && std::isfinite(plc.points[i + 1])) p.push_back({plc.points[i], plc.points[i + 1]});
+  std::sort(p.begin(), p.end());
+  return p;
+}
+
+// Whether p lies strictly inside the convex hull of the four points q: inside one of the triangles
+// three of them make (a hull's corners and edges, a piece's ends among them, are not inside).
+bool strictlyInside(const double q[8], const double p[2]) {
+  static constexpr int kTriangles[4][3] = {{0, 1, 3}, {0, 2, 3}, {0, 1, 2}, {1, 2, 3}};
+  for (const auto& t : kTriangles) {
+    const double* a = q + 2 * t[0];
+    const double* b = q + 2 * t[1];
+    const double* c = q + 2 * t[2];
+    const double o1 = orient2d(a, b, p), o2 = orient2d(b, c, p), o3 = orient2d(c, a, p);
+    if ((o1 > 0 && o2 > 0 && o3 > 0) || (o1 < 0 && o2 < 0 && o3 < 0)) return true;
+  }
+  return false;
+}
+
+bool hullHoldsPoint(const CurveShape& s, double t0, double t1, const PointsByX& points) {
+  double q[8];
+  s.hull(t0, t1, q);
+  double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
+  for (int k = 0; k < 8; ++k) lo[k % 2] = std::min(lo[k % 2], q[k]), hi[k % 2] = std::max(hi[k % 2], q[k]);
+  auto it = std::lower_bound(points.begin(), points.end(), lo[0], [](const std::array<double, 2>& p, double x) { return p[0] < x; });
+  for (; it != points.end() && (*it)[0] <= hi[0]; ++it)
+    if ((*it)[1] >= lo[1] && (*it)[1] <= hi[1] && strictlyInside(q, it->data())) return true;
+  return false;
+}
+
+// The cut t with every piece halved while an input point lies strictly inside its hull (curves.h).
+std::vector<double> clearOfPoints(const CurveShape& s, const std::vector<double>& t, const PointsByX& points, std::size_t i) {
+  std::vector<double> out{t.front()};
+  for (std::size_t j = 1; j < t.size(); ++j) {
+    std::vector<std::pair<double, int>> ends{{t[j], 0}};
+    double from = t[j - 1];
+    while (!ends.empty()) {
+      const auto [to, depth] = ends.back();
+      if (depth == kMaxPointHalvings || !hullHoldsPoint(s, from, to, points)) {
+        out.push_back(to), from = to, ends.pop_back();
+        continue;
+      }
+      if (out.size() + ends.size() + t.size() > kMaxPieces) fail(ErrorCode::TooLarge, i, "the points near it ask for more than 2^22 pieces");
+      ends.back().second = depth + 1;
+      ends.push_back({(from + to) / 2, depth + 1});
+    }
+  }
+  return out;
+}
+
 double defaultTolerance(const Plc& plc) {
   double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
   for (std::size_t k = 0; k < plc.points.size(); ++k)
@@ -203,9 +276,11 @@ Plc withCurvePieces(const Plc& plc, const Options& options, CurvePieces& pieces)
   pieces.firstPoint = static_cast<std::uint32_t>(plc.points.size() / 2);
   pieces.tolerance = tolerance;
   bool marked = false;
+  const PointsByX points = pointsByX(plc);
   for (std::size_t i = 0; i < plc.curves.size(); ++i) {
     pieces.shapes.push_back(shapeOf(plc, i));
-    addPieces(out, pieces.shapes.back(), cutPoints(pieces.shapes.back(), tolerance, i), i, pieces);
+    const CurveShape& s = pieces.shapes.back();
+    addPieces(out, s, clearOfPoints(s, cutPoints(s, tolerance, i), points, i), i, pieces);
     marked = marked || plc.curves[i].marker != 0;
   }
   if (marked || !plc.segmentMarkers.empty()) {

@@ -10,6 +10,13 @@
 // segments), and refinement splits the piece before such a vertex can be left on the wrong side of
 // the curve. Refinement splits a piece at the curve point of its parameters' midpoint
 // (refine/refine_curve.cpp) and keeps the two tests on every new piece.
+//
+// An input point can lie in that sliver on the side where the domain has no triangle yet (the curve
+// bulges out of the domain's chords): it is dropped with the triangles outside, and a later split
+// would add the triangle (a, p, b) over it, leaving an input point inside the mesh unused. So the
+// first cut also halves a piece while an input point other than its ends lies strictly inside its
+// hull (CurveShape::hull); each new triangle of a split lies in its piece's hull, and a piece's
+// halves' hulls in its own, so no dropped point is ever covered.
 #pragma once
 
 #include <climits>
@@ -35,6 +42,9 @@ struct CurveShape {
   double chordError(double t0, double t1) const;
   // Whether the piece [t0, t1] lies in the closed diametral disk of its chord.
   bool withinDisk(double t0, double t1) const;
+  // Four points whose convex hull holds the piece [t0, t1], its ends first and last: a Bézier
+  // piece's control points, an arc piece's ends and the meeting point of its end tangents (twice).
+  void hull(double t0, double t1, double q[8]) const;
   void scale(double factor);  // by a power of two: exact
 };
 
