@@ -81,6 +81,25 @@ TEST_CASE("input points between an arc and its first chords are meshed once the 
   }
 }
 
+TEST_CASE("an input point on an arc where a piece would end becomes that piece's end", "[curves]") {
+  // The lower half of the circle of radius 2 around (-2, 0) passes through (-2, -2) at its
+  // parameter midpoint, where a halving of its pieces lands to rounding (x = -2 - 4e-16). Found by
+  // fuzz_mesh: the halving's own point there and the input point were near-duplicates joined by an
+  // edge; the piece now ends at the input point.
+  CurvedShape shape;
+  shape.plc.points = {-4, 0, 0, 0, -2, -2};
+  shape.plc.segments = {1, 0};
+  ruppert::Curve c;
+  c.type = ruppert::CurveType::Arc, c.from = 0, c.to = 1, c.center[0] = -2, c.center[1] = 0;
+  shape.plc.curves.push_back(c);
+  shape.area = 2 * std::acos(-1.0);
+  // 1e-3: a first cut of 50 pieces ends one there; 1: a halving of the middle one of three does.
+  for (double tolerance : {1e-3, 1.0}) {
+    const Meshed m = meshAndCheck(shape, 30, tolerance);
+    CHECK(std::count(m.mesh.triangles.begin(), m.mesh.triangles.end(), 2u) > 0);
+  }
+}
+
 TEST_CASE("a region under a cubic Bezier meshes on the curve", "[curves]") {
   for (double h : {0.5, 1.0, 2.0}) {
     const CurvedShape shape = ruppert_test::underBezier(h);

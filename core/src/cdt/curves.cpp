@@ -175,16 +175,29 @@ std::vector<double> cutPoints(const CurveShape& s, double tolerance, std::size_t
   return t;
 }
 
-using PointsByX = std::vector<std::array<double, 2>>;
+// The input's finite points sorted by x (the others are refused later by prepareInput), with their
+// indices, for the pieces' hull tests.
+struct PointsByX {
+  std::vector<std::array<double, 3>> p;  // x, y, index
+  double nearby = 0;                     // closer than this, a new point would duplicate an input point
 
-// The input's finite points sorted by x (the others are refused later by prepareInput).
-PointsByX pointsByX(const Plc& plc) {
-  PointsByX p;
-  for (std::size_t i = 0; i + 1 < plc.points.size(); i += 2)
-    if (std::isfinite(plc.points[i]) && std::isfinite(plc.points[i + 1])) p.push_back({plc.points[i], plc.points[i + 1]});
-  std::sort(p.begin(), p.end());
-  return p;
-}
+  explicit PointsByX(const Plc& plc) {
+    double largest = 0;
+    for (std::size_t i = 0; i + 1 < plc.points.size(); i += 2) {
+      const double x = plc.points[i], y = plc.points[i + 1];
+      if (!std::isfinite(x) || !std::isfinite(y)) continue;
+      p.push_back({x, y, double(i / 2)});
+      largest = std::max({largest, std::fabs(x), std::fabs(y)});
+    }
+    std::sort(p.begin(), p.end());
+    // 2^-40 of the largest magnitude: what the validator calls near-duplicates.
+    nearby = 0x1p-40 * largest;
+  }
+  // The first point at or right of x.
+  auto from(double x) const {
+    return std::lower_bound(p.begin(), p.end(), x, [](const std::array<double, 3>& q, double v) { return q[0] < v; });
+  }
+};
 
 // Whether p lies strictly inside the convex hull of the four points q: inside one of the triangles
 // three of them make (a hull's corners and edges, a piece's ends among them, are not inside).
@@ -205,29 +218,50 @@ bool hullHoldsPoint(const CurveShape& s, double t0, double t1, const PointsByX& 
   s.hull(t0, t1, q);
   double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
   for (int k = 0; k < 8; ++k) lo[k % 2] = std::min(lo[k % 2], q[k]), hi[k % 2] = std::max(hi[k % 2], q[k]);
-  auto it = std::lower_bound(points.begin(), points.end(), lo[0], [](const std::array<double, 2>& p, double x) { return p[0] < x; });
-  for (; it != points.end() && (*it)[0] <= hi[0]; ++it)
+  for (auto it = points.from(lo[0]); it != points.p.end() && (*it)[0] <= hi[0]; ++it)
     if ((*it)[1] >= lo[1] && (*it)[1] <= hi[1] && strictlyInside(q, it->data())) return true;
   return false;
 }
 
+// The input point within `nearby` of the curve's point at t, if any: a point on the curve there.
+std::uint32_t inputPointAt(const CurveShape& s, double t, const PointsByX& points) {
+  double c[2];
+  s.point(t, c);
+  for (auto it = points.from(c[0] - points.nearby); it != points.p.end() && (*it)[0] <= c[0] + points.nearby; ++it)
+    if (std::fabs((*it)[1] - c[1]) <= points.nearby) return std::uint32_t((*it)[2]);
+  return UINT32_MAX;
+}
+
+// A curve's cut: the parameters of its pieces' ends, and per inner end the input point that is
+// there (on the curve to rounding) or UINT32_MAX for a new point.
+struct Cut {
+  std::vector<double> t;
+  std::vector<std::uint32_t> inputPoint;
+};
+
 // The cut t with every piece halved while an input point lies strictly inside its hull (curves.h).
-std::vector<double> clearOfPoints(const CurveShape& s, const std::vector<double>& t, const PointsByX& points, std::size_t i) {
-  std::vector<double> out{t.front()};
+// A halving that lands on an input point ends its pieces there instead of duplicating it.
+Cut clearOfPoints(const CurveShape& s, const std::vector<double>& t, const PointsByX& points, std::size_t i) {
+  Cut out{{t.front()}, {UINT32_MAX}};
+  auto end = [&](double to, std::uint32_t point) { out.t.push_back(to), out.inputPoint.push_back(point); };
   for (std::size_t j = 1; j < t.size(); ++j) {
-    std::vector<std::pair<double, int>> ends{{t[j], 0}};
+    std::vector<std::pair<double, std::uint32_t>> ends{{t[j], inputPointAt(s, t[j], points)}};
+    std::vector<int> depths{0};
     double from = t[j - 1];
     while (!ends.empty()) {
-      const auto [to, depth] = ends.back();
+      const auto [to, point] = ends.back();
+      const int depth = depths.back();
       if (depth == kMaxPointHalvings || !hullHoldsPoint(s, from, to, points)) {
-        out.push_back(to), from = to, ends.pop_back();
+        end(to, point), from = to, ends.pop_back(), depths.pop_back();
         continue;
       }
-      if (out.size() + ends.size() + t.size() > kMaxPieces) fail(ErrorCode::TooLarge, i, "the points near it ask for more than 2^22 pieces");
-      ends.back().second = depth + 1;
-      ends.push_back({(from + to) / 2, depth + 1});
+      if (out.t.size() + ends.size() + t.size() > kMaxPieces) fail(ErrorCode::TooLarge, i, "the points near it ask for more than 2^22 pieces");
+      const double mid = (from + to) / 2;
+      depths.back() = depth + 1;
+      ends.push_back({mid, inputPointAt(s, mid, points)}), depths.push_back(depth + 1);
     }
   }
+  out.inputPoint.back() = UINT32_MAX;  // the curve's own end
   return out;
 }
 
@@ -239,13 +273,17 @@ double defaultTolerance(const Plc& plc) {
 }
 
 // Curve i's pieces into out (points and segments) and pieces.
-void addPieces(Plc& out, const CurveShape& s, const std::vector<double>& t, std::size_t i, CurvePieces& pieces) {
+void addPieces(Plc& out, const CurveShape& s, const Cut& cut, std::size_t i, CurvePieces& pieces) {
   const Curve& cv = out.curves[i];
   const std::uint32_t k = out.attributesPerPoint;
+  const std::vector<double>& t = cut.t;
   std::uint32_t previous = cv.from;
   for (std::size_t j = 1; j < t.size(); ++j) {
     std::uint32_t next = cv.to;
-    if (j + 1 < t.size()) {
+    const std::uint32_t there = cut.inputPoint[j];
+    if (j + 1 < t.size() && there != UINT32_MAX && there != previous && there != cv.from && there != cv.to) {
+      next = there;
+    } else if (j + 1 < t.size()) {
       double p[2];
       s.point(t[j], p);
       next = static_cast<std::uint32_t>(out.points.size() / 2);
@@ -276,7 +314,7 @@ Plc withCurvePieces(const Plc& plc, const Options& options, CurvePieces& pieces)
   pieces.firstPoint = static_cast<std::uint32_t>(plc.points.size() / 2);
   pieces.tolerance = tolerance;
   bool marked = false;
-  const PointsByX points = pointsByX(plc);
+  const PointsByX points(plc);
   for (std::size_t i = 0; i < plc.curves.size(); ++i) {
     pieces.shapes.push_back(shapeOf(plc, i));
     const CurveShape& s = pieces.shapes.back();

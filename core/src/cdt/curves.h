@@ -16,7 +16,9 @@
 // would add the triangle (a, p, b) over it, leaving an input point inside the mesh unused. So the
 // first cut also halves a piece while an input point other than its ends lies strictly inside its
 // hull (CurveShape::hull); each new triangle of a split lies in its piece's hull, and a piece's
-// halves' hulls in its own, so no dropped point is ever covered.
+// halves' hulls in its own, so no dropped point is ever covered. A cut that lands on an input point
+// (within 2^-40 of the largest coordinate, the validator's near-duplicates) ends its pieces at that
+// point rather than beside it.
 #pragma once
 
 #include <climits>
