@@ -43,11 +43,13 @@ test('the two-line example from the README meshes a square to the requested qual
 // size (cold_code.h) and kept out of the hot paths; the limit moved to 156 KB for it, openly.
 // Then the caller's input checked before curves' pieces go in (segment indices past the points,
 // found by fuzz_mesh, and one marker per point and segment or none): 155,880 -> 156,153 bytes;
-// 157 KB.
+// 157 KB. Then a curve's first pieces halved while an input point lies inside one's hull, over a
+// grid of the input points (two fuzz_mesh findings: a dropped point covered by a later split, a
+// piece point a hair beside an input point on the curve): 156,153 -> 157,554 bytes; 158 KB.
 const gzippedSize = (file) => gzipSync(readFileSync(new URL(`./node_modules/ruppert/wasm/dist/${file}`, import.meta.url)), { level: 9 }).length;
-test('the mesher .wasm is at most 157 KB gzipped, the text formats at most 60 KB', () => {
+test('the mesher .wasm is at most 158 KB gzipped, the text formats at most 60 KB', () => {
   const mesher = gzippedSize('ruppert.wasm'), formats = gzippedSize('ruppert-formats.wasm');
-  assert.ok(mesher <= 157000, `ruppert.wasm: ${mesher} bytes gzipped`);
+  assert.ok(mesher <= 158000, `ruppert.wasm: ${mesher} bytes gzipped`);
   assert.ok(formats <= 60000, `ruppert-formats.wasm: ${formats} bytes gzipped`);
 });
 

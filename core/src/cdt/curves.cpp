@@ -3,7 +3,6 @@
 #include "cdt/curves.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -175,30 +174,6 @@ std::vector<double> cutPoints(const CurveShape& s, double tolerance, std::size_t
   return t;
 }
 
-// The input's finite points sorted by x (the others are refused later by prepareInput), with their
-// indices, for the pieces' hull tests.
-struct PointsByX {
-  std::vector<std::array<double, 3>> p;  // x, y, index
-  double nearby = 0;                     // closer than this, a new point would duplicate an input point
-
-  explicit PointsByX(const Plc& plc) {
-    double largest = 0;
-    for (std::size_t i = 0; i + 1 < plc.points.size(); i += 2) {
-      const double x = plc.points[i], y = plc.points[i + 1];
-      if (!std::isfinite(x) || !std::isfinite(y)) continue;
-      p.push_back({x, y, double(i / 2)});
-      largest = std::max({largest, std::fabs(x), std::fabs(y)});
-    }
-    std::sort(p.begin(), p.end());
-    // 2^-40 of the largest magnitude: what the validator calls near-duplicates.
-    nearby = 0x1p-40 * largest;
-  }
-  // The first point at or right of x.
-  auto from(double x) const {
-    return std::lower_bound(p.begin(), p.end(), x, [](const std::array<double, 3>& q, double v) { return q[0] < v; });
-  }
-};
-
 // Whether p lies strictly inside the convex hull of the four points q: inside one of the triangles
 // three of them make (a hull's corners and edges, a piece's ends among them, are not inside).
 bool strictlyInside(const double q[8], const double p[2]) {
@@ -213,23 +188,80 @@ bool strictlyInside(const double q[8], const double p[2]) {
   return false;
 }
 
-bool hullHoldsPoint(const CurveShape& s, double t0, double t1, const PointsByX& points) {
+// The input's finite points bucketed on a grid over their bounding box (a counting sort: no
+// comparison sort, whose code the size-compiled wasm would carry), for the pieces' hull tests.
+class PointGrid {
+ public:
+  explicit PointGrid(const Plc& plc) : xy_(plc.points) {
+    const std::size_t n = xy_.size() / 2;
+    double hi[2] = {-HUGE_VAL, -HUGE_VAL}, largest = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (finite(i))
+        for (int k = 0; k < 2; ++k) {
+          const double v = xy_[2 * i + k];
+          lo_[k] = std::fmin(lo_[k], v), hi[k] = std::fmax(hi[k], v), largest = std::fmax(largest, std::fabs(v));
+        }
+    // 2^-40 of the largest magnitude: what the validator calls near-duplicates.
+    nearby = 0x1p-40 * largest;
+    side_ = std::uint32_t(std::fmin(1024, std::ceil(std::sqrt(double(n)))));
+    if (side_ == 0) return;
+    cell_ = std::fmax(hi[0] - lo_[0], hi[1] - lo_[1]) / side_;
+    if (!(cell_ > 0 && std::isfinite(cell_))) cell_ = 1;
+    // Counts, then their running sums (each cell's end), then each point placed before its cell's
+    // end, which leaves start_[c] at cell c's first entry.
+    start_.assign(std::size_t(side_) * side_ + 1, 0);
+    for (std::size_t i = 0; i < n; ++i)
+      if (finite(i)) ++start_[cellOf(i)];
+    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+    order_.resize(start_.back());
+    for (std::size_t i = 0; i < n; ++i)
+      if (finite(i)) order_[--start_[cellOf(i)]] = std::uint32_t(i);
+  }
+
+  // The first input point in the box [lo, hi] strictly inside the convex hull of the four points
+  // `hull` (strictlyInside), or in it at all without one; UINT32_MAX if none.
+  std::uint32_t find(const double lo[2], const double hi[2], const double* hull) const {
+    if (side_ == 0) return UINT32_MAX;
+    const std::uint32_t x0 = coordinate(lo[0], 0), x1 = coordinate(hi[0], 0), y0 = coordinate(lo[1], 1), y1 = coordinate(hi[1], 1);
+    for (std::uint32_t y = y0; y <= y1; ++y)
+      for (std::uint32_t x = x0; x <= x1; ++x)
+        for (std::uint32_t k = start_[y * side_ + x]; k < start_[y * side_ + x + 1]; ++k) {
+          const double* p = &xy_[2 * std::size_t(order_[k])];
+          if (p[0] >= lo[0] && p[0] <= hi[0] && p[1] >= lo[1] && p[1] <= hi[1] && (!hull || strictlyInside(hull, p))) return order_[k];
+        }
+    return UINT32_MAX;
+  }
+
+  double nearby = 0;  // closer than this, a new point would duplicate an input point
+
+ private:
+  bool finite(std::size_t i) const { return std::isfinite(xy_[2 * i]) && std::isfinite(xy_[2 * i + 1]); }
+  std::uint32_t coordinate(double v, int k) const {
+    const double c = std::floor((v - lo_[k]) / cell_);
+    return c > 0 ? std::uint32_t(std::fmin(c, side_ - 1)) : 0;  // NaN and below go to 0
+  }
+  std::size_t cellOf(std::size_t i) const { return std::size_t(coordinate(xy_[2 * i + 1], 1)) * side_ + coordinate(xy_[2 * i], 0); }
+
+  const std::vector<double>& xy_;
+  double lo_[2] = {HUGE_VAL, HUGE_VAL}, cell_ = 1;
+  std::uint32_t side_ = 0;
+  std::vector<std::uint32_t> start_, order_;  // per cell, its first entry in order_; point indices by cell
+};
+
+bool hullHoldsPoint(const CurveShape& s, double t0, double t1, const PointGrid& points) {
   double q[8];
   s.hull(t0, t1, q);
   double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
-  for (int k = 0; k < 8; ++k) lo[k % 2] = std::min(lo[k % 2], q[k]), hi[k % 2] = std::max(hi[k % 2], q[k]);
-  for (auto it = points.from(lo[0]); it != points.p.end() && (*it)[0] <= hi[0]; ++it)
-    if ((*it)[1] >= lo[1] && (*it)[1] <= hi[1] && strictlyInside(q, it->data())) return true;
-  return false;
+  for (int k = 0; k < 8; ++k) lo[k % 2] = std::fmin(lo[k % 2], q[k]), hi[k % 2] = std::fmax(hi[k % 2], q[k]);
+  return points.find(lo, hi, q) != UINT32_MAX;
 }
 
 // The input point within `nearby` of the curve's point at t, if any: a point on the curve there.
-std::uint32_t inputPointAt(const CurveShape& s, double t, const PointsByX& points) {
+std::uint32_t inputPointAt(const CurveShape& s, double t, const PointGrid& points) {
   double c[2];
   s.point(t, c);
-  for (auto it = points.from(c[0] - points.nearby); it != points.p.end() && (*it)[0] <= c[0] + points.nearby; ++it)
-    if (std::fabs((*it)[1] - c[1]) <= points.nearby) return std::uint32_t((*it)[2]);
-  return UINT32_MAX;
+  const double lo[2] = {c[0] - points.nearby, c[1] - points.nearby}, hi[2] = {c[0] + points.nearby, c[1] + points.nearby};
+  return points.find(lo, hi, nullptr);
 }
 
 // A curve's cut: the parameters of its pieces' ends, and per inner end the input point that is
@@ -241,24 +273,23 @@ struct Cut {
 
 // The cut t with every piece halved while an input point lies strictly inside its hull (curves.h).
 // A halving that lands on an input point ends its pieces there instead of duplicating it.
-Cut clearOfPoints(const CurveShape& s, const std::vector<double>& t, const PointsByX& points, std::size_t i) {
+Cut clearOfPoints(const CurveShape& s, const std::vector<double>& t, const PointGrid& points, std::size_t i) {
   Cut out{{t.front()}, {UINT32_MAX}};
-  auto end = [&](double to, std::uint32_t point) { out.t.push_back(to), out.inputPoint.push_back(point); };
   for (std::size_t j = 1; j < t.size(); ++j) {
-    std::vector<std::pair<double, std::uint32_t>> ends{{t[j], inputPointAt(s, t[j], points)}};
-    std::vector<int> depths{0};
+    // Depth first, as cutPoints: (parameter, halvings) of the ends still ahead, and their points.
+    std::vector<std::pair<double, int>> ends{{t[j], 0}};
+    std::vector<std::uint32_t> there{inputPointAt(s, t[j], points)};
     double from = t[j - 1];
     while (!ends.empty()) {
-      const auto [to, point] = ends.back();
-      const int depth = depths.back();
+      const auto [to, depth] = ends.back();
       if (depth == kMaxPointHalvings || !hullHoldsPoint(s, from, to, points)) {
-        end(to, point), from = to, ends.pop_back(), depths.pop_back();
+        out.t.push_back(to), out.inputPoint.push_back(there.back()), from = to, ends.pop_back(), there.pop_back();
         continue;
       }
       if (out.t.size() + ends.size() + t.size() > kMaxPieces) fail(ErrorCode::TooLarge, i, "the points near it ask for more than 2^22 pieces");
       const double mid = (from + to) / 2;
-      depths.back() = depth + 1;
-      ends.push_back({mid, inputPointAt(s, mid, points)}), depths.push_back(depth + 1);
+      ends.back().second = depth + 1;
+      ends.push_back({mid, depth + 1}), there.push_back(inputPointAt(s, mid, points));
     }
   }
   out.inputPoint.back() = UINT32_MAX;  // the curve's own end
@@ -314,7 +345,7 @@ Plc withCurvePieces(const Plc& plc, const Options& options, CurvePieces& pieces)
   pieces.firstPoint = static_cast<std::uint32_t>(plc.points.size() / 2);
   pieces.tolerance = tolerance;
   bool marked = false;
-  const PointsByX points(plc);
+  const PointGrid points(plc);
   for (std::size_t i = 0; i < plc.curves.size(); ++i) {
     pieces.shapes.push_back(shapeOf(plc, i));
     const CurveShape& s = pieces.shapes.back();
