@@ -6,6 +6,7 @@
 //
 // Usage: node tests/bench/coarsening-probe.mjs [--cli build-native/core/ruppert] [--angle 40] FILE.poly...
 import { execFileSync } from 'node:child_process';
+import { cornerDegrees } from './mesh-exemptions.mjs';
 
 const args = process.argv.slice(2);
 const option = (name, fallback) => {
@@ -29,10 +30,7 @@ function inCircle(a, b, c, d) {
     (cx * cx + cy * cy) * (ax * by - bx * ay);
 }
 function smallestAngle(a, b, c) {
-  const at = (p, q, r) => {
-    const ux = q[0] - p[0], uy = q[1] - p[1], vx = r[0] - p[0], vy = r[1] - p[1];
-    return (Math.atan2(Math.abs(ux * vy - uy * vx), ux * vx + uy * vy) * 180) / Math.PI;
-  };
+  const at = (p, q, r) => cornerDegrees(p[0], p[1], q[0], q[1], r[0], r[1]);
   return Math.min(at(a, b, c), at(b, c, a), at(c, a, b));
 }
 

@@ -10,7 +10,7 @@
 const SEGMENT_SPLIT = 1;  // VertexKind.SegmentSplit in ruppert.h
 
 // Angle at p of the corner q-p-r, in degrees (atan2 keeps digits near 0 and 180).
-function cornerDegrees(px, py, qx, qy, rx, ry) {
+export function cornerDegrees(px, py, qx, qy, rx, ry) {
   const ux = qx - px, uy = qy - py, vx = rx - px, vy = ry - py;
   return (Math.atan2(Math.abs(ux * vy - uy * vx), ux * vx + uy * vy) * 180) / Math.PI;
 }
