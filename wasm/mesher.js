@@ -51,7 +51,8 @@ export function createMesher(mesher, formats, cli = false) {
     // The wrappers never throw into wasm (that would skip the core's destructors): they keep the
     // first error and tell the binding to unwind (NaN / -1), and we rethrow it below.
     let callbackError = null;
-    const native = { ...opts, sizeFunction: undefined, onProgress: undefined };
+    // checkOptions' result is this call's own object: the callbacks' wrappers replace the user's in it.
+    const native = opts;
     if (opts.sizeFunction) {
       const user = opts.sizeFunction;
       native.sizeFunction = (x, y) => {
