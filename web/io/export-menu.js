@@ -1,6 +1,7 @@
 // The export buttons: the mesh in each of the package's formats or as a PNG of the canvas, the
 // drawing itself as a .poly, and the link to the page as it is.
 import { toPlc } from '../drawing.js';
+import { curveToleranceOf, flattenCurves } from './flatten-curves.js';
 import { canvasBlob, download, drawingPolyText, exportText } from './files.js';
 import { setStatus } from '../panels/status-line.js';
 import { drawingJsonText } from '../editing/curve-data.js';
@@ -12,10 +13,11 @@ const FORMATS = ['poly', 'json', 'svg', 'png', 'node', 'ele', 'msh', 'vtu', 'geo
  * @param {() => {mesh: object|null, plc: object|null}} meshed the latest mesh and the input it was made from
  * @param {() => object} drawing the drawing on the canvas
  * @param {object} renderer the Renderer (its snapshot for PNG)
- * @param {() => void} draw draws the frame now (PNG)
+ * @param {() => void} drawForPrint draws the frame now without the editing aids (PNG)
+ * @param {() => void} redraw draws the frame as the page shows it again
  * @param {() => boolean} writeLink writes the link into the URL; false when the drawing is too large for one
  */
-export function createExportMenu({ meshed, drawing, renderer, draw, writeLink }) {
+export function createExportMenu({ meshed, drawing, renderer, drawForPrint, redraw, writeLink }) {
   async function exportAs(format) {
     const { mesh, plc } = meshed();
     if (mesh === null) {
@@ -24,8 +26,11 @@ export function createExportMenu({ meshed, drawing, renderer, draw, writeLink })
     }
     try {
       if (format === 'png') {
-        draw();
-        download(await canvasBlob(renderer.snapshot()), 'ruppert-mesh.png', 'png');
+        drawForPrint();
+        const picture = renderer.snapshot();
+        const blob = canvasBlob(picture);
+        redraw();
+        download(await blob, 'ruppert-mesh.png', 'png');
       } else {
         download(await exportText(format, mesh, plc), `ruppert-mesh.${format}`, format);
       }
@@ -35,10 +40,19 @@ export function createExportMenu({ meshed, drawing, renderer, draw, writeLink })
     }
   }
   for (const format of FORMATS) $(`export-${format}`).addEventListener('click', () => exportAs(format));
-  // The drawing needs no mesh: what was drawn, as a .poly another program can mesh.
+  // The drawing needs no mesh: what was drawn, as a .poly another program can mesh. A .poly holds
+  // no curves: each is cut into segments within the curve tolerance (flatten-curves.js), and the
+  // status line says so.
   $('export-drawing').addEventListener('click', () => {
-    download(drawingPolyText(toPlc(drawing())), 'ruppert-drawing.poly', 'poly');
-    setStatus('Exported ruppert-drawing.poly (the drawing, not its mesh).', 'ok');
+    const d = drawing();
+    const plc = toPlc(d);
+    const flat = flattenCurves(plc, d.options.curveTolerance);
+    download(drawingPolyText(flat), 'ruppert-drawing.poly', 'poly');
+    const curves = plc.curves?.length ?? 0;
+    setStatus(curves === 0 ? 'Exported ruppert-drawing.poly (the drawing, not its mesh).'
+      : `Exported ruppert-drawing.poly (the drawing, not its mesh): a .poly holds no curves, so its ${curves} ` +
+        `curve${curves === 1 ? ' is' : 's are'} ${(flat.segments.length - plc.segments.length) / 2} segments within ` +
+        `${Number(curveToleranceOf(plc, d.options.curveTolerance).toPrecision(3))} of ${curves === 1 ? 'it' : 'them'}; drawing .json keeps the curves.`, 'ok');
   });
 
   // The drawing with its curves (which .poly cannot hold), in the JSON the file panel reads back.
@@ -46,6 +60,17 @@ export function createExportMenu({ meshed, drawing, renderer, draw, writeLink })
     download(drawingJsonText(toPlc(drawing())), 'ruppert-drawing.json', 'json');
     setStatus('Exported ruppert-drawing.json (the drawing with its curves, not its mesh).', 'ok');
   });
+
+  // The menu closes once an export is chosen, on Escape and on a click elsewhere.
+  const menu = $('export-menu');
+  menu.addEventListener('click', (event) => { if (event.target.closest('.menu-items button')) menu.open = false; });
+  menu.addEventListener('keydown', (event) => {
+    if (event.key === 'Escape' && menu.open) {
+      menu.open = false;
+      menu.querySelector('summary').focus();
+    }
+  });
+  document.addEventListener('pointerdown', (event) => { if (menu.open && !menu.contains(event.target)) menu.open = false; });
 
   $('copy-link').addEventListener('click', async () => {
     if (!writeLink()) {
