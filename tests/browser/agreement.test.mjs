@@ -38,24 +38,50 @@ test('the option fields refuse what the package refuses, in its words, and keep 
     ['#curve-tolerance', 'curveTolerance', '-0.1'], ['#curve-tolerance', 'curveTolerance', '0.01'],
   ];
   for (const [field, name, text] of cases) {
+    assert.equal(await settle(page), 'done');
     const before = await readStats(page);
-    await page.fill(field, text);
-    await page.locator(field).dispatchEvent('change');
+    // Set and read back in one task: no mesh can arrive in between and rewrite the status line.
+    const shown = await page.evaluate(([selector, value]) => {
+      const input = document.querySelector(selector);
+      input.value = value;
+      input.dispatchEvent(new Event('change'));
+      const status = document.getElementById('status');
+      return { text: status.textContent, kind: status.dataset.kind, invalid: input.getAttribute('aria-invalid') };
+    }, [field, text]);
     const said = packageSays(name, Number(text));
     if (said === null) {
-      assert.equal(await page.getAttribute(field, 'aria-invalid'), null, `${name} = ${text} is taken`);
+      assert.equal(shown.invalid, null, `${name} = ${text} is taken`);
       assert.equal(await settle(page), 'done');
     } else {
-      assert.equal(await page.getAttribute(field, 'aria-invalid'), 'true', `${name} = ${text} is refused`);
-      const status = await page.locator('#status').textContent();
-      assert.ok(status.includes(said), `the page says "${status}", the package "${said}"`);
-      assert.equal(await page.getAttribute('#status', 'data-kind'), 'error');
+      assert.equal(shown.invalid, 'true', `${name} = ${text} is refused`);
+      assert.ok(shown.text.includes(said), `the page says "${shown.text}", the package "${said}"`);
+      assert.equal(shown.kind, 'error');
       assert.deepEqual(await readStats(page), before, 'the mesh is kept');
     }
     await page.fill(field, '');
     await page.locator(field).dispatchEvent('change');
     assert.equal(await settle(page), 'done');
   }
+  assert.deepEqual(errors, []);
+  await page.close();
+});
+
+test('points alone: the page says it meshed their convex hull, as the package does', async () => {
+  const { page, errors } = await openPage(harness.context, `${harness.baseUrl}/web/`);
+  assert.equal(await settle(page), 'done');
+  const node = '5 2 0 0\n0 0 0\n1 4 0\n2 4 3\n3 0 3\n4 1 1\n';
+  await page.setInputFiles('#file-input', { name: 'points.node', mimeType: 'text/plain', buffer: Buffer.from(node) });
+  assert.equal(await settle(page), 'done');
+  assert.match(await page.locator('#status').textContent(), /^Meshed the convex hull of the 5 points \(the drawing has no segments/);
+  // The package meshes the same hull (4 x 3) without segments.
+  const mesh = mesher.triangulate({ points: [0, 0, 4, 0, 4, 3, 0, 3, 1, 1] });
+  let area = 0;
+  for (let t = 0; t < mesh.triangles.length; t += 3) {
+    const [a, b, c] = [2 * mesh.triangles[t], 2 * mesh.triangles[t + 1], 2 * mesh.triangles[t + 2]];
+    const p = mesh.points;
+    area += ((p[b] - p[a]) * (p[c + 1] - p[a + 1]) - (p[c] - p[a]) * (p[b + 1] - p[a + 1])) / 2;
+  }
+  assert.ok(Math.abs(area - 12) < 1e-9, `the package meshes the hull: area ${area}`);
   assert.deepEqual(errors, []);
   await page.close();
 });
