@@ -232,6 +232,24 @@ test('the .png export has the mesh without the grid, the seeds or the handles', 
   assert.ok(counts.grid < counts.pixels * 0.002, `${counts.grid} grid pixels of ${counts.pixels}`);
 });
 
+test('.poly, .json and .geojson open again to the same mesh; .node and .ele say what they cannot hold', async () => {
+  for (const format of ['poly', 'json', 'geojson']) {
+    await page.setInputFiles('#file-input', { name: 'pentagon-with-hole.poly', mimeType: 'text/plain', buffer: Buffer.from(PENTAGON) });
+    assert.equal(await settle(page), 'done');
+    const before = await readStats(page);
+    const exported = await exportFile(`#export-${format}`);
+    assert.match(await page.locator('#status').textContent(), /Open file reads it back to the same mesh/, format);
+    await page.setInputFiles('#file-input', { name: `again.${format}`, mimeType: 'text/plain', buffer: exported.bytes });
+    assert.equal(await settle(page), 'done', format);
+    assert.deepEqual(await readStats(page), before, `${format} opens again to the same mesh`);
+  }
+  await exportFile('#export-node');
+  assert.match(await page.locator('#status').textContent(), /vertices only: a \.node holds no segments, holes or triangles/);
+  assert.equal(await page.getAttribute('#status', 'data-kind'), 'warn');
+  await exportFile('#export-ele');
+  assert.match(await page.locator('#status').textContent(), /triangles only.*an \.ele holds no coordinates/);
+});
+
 test('exports .node, .ele, .msh, .vtu and .geojson downloads whose headers match the mesh', async () => {
   await page.setInputFiles('#file-input', { name: 'pentagon-with-hole.poly', mimeType: 'text/plain', buffer: Buffer.from(PENTAGON) });
   assert.equal(await settle(page), 'done');

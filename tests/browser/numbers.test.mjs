@@ -35,3 +35,21 @@ test('step numbers are grouped: "Step 0 of 49,880"', () => {
   stepper.setEvents({ count: 49880 });
   assert.match(el.info.textContent, /^Step 0 of 49,880: /);
 });
+
+test('crowded vertex labels move to a free corner or are left out, never drawn over each other', async () => {
+  const { placeLabels } = await import('../../web/steps/step-overlay.js');
+  const size = { width: 14, height: 12 };
+  // Five vertices within a few pixels of one another, and one far away.
+  const labels = [[100, 100], [102, 101], [99, 103], [101, 99], [100, 102], [300, 300]].map(([x, y]) => ({ x, y, ...size }));
+  const placed = placeLabels(labels);
+  assert.deepEqual(placed[0], { x: 105, y: 96 }, 'the first keeps the usual place, above right');
+  assert.notEqual(placed[5], null, 'a label with room is drawn');
+  const boxes = placed.filter(Boolean).map(({ x, y }) => ({ left: x, right: x + 14, top: y - 12, bottom: y }));
+  for (let i = 0; i < boxes.length; i++) {
+    for (let j = i + 1; j < boxes.length; j++) {
+      const [a, b] = [boxes[i], boxes[j]];
+      assert.ok(!(a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom), `labels ${i} and ${j} overlap`);
+    }
+  }
+  assert.ok(placed.slice(0, 5).some((p) => p === null), 'five labels in one spot cannot all be drawn');
+});

@@ -8,6 +8,20 @@ import { drawingJsonText } from '../editing/curve-data.js';
 
 const $ = (id) => document.getElementById(id);
 const FORMATS = ['poly', 'json', 'svg', 'png', 'node', 'ele', 'msh', 'vtu', 'geojson'];
+// What each mesh export holds, said on the status line: those that open again to the same mesh
+// (Open file), and what the others cannot hold. [text, status kind]
+const OPENS_AGAIN = 'the whole domain (vertices, subsegments with their markers, holes); Open file reads it back to the same mesh';
+const FORMAT_NOTES = {
+  poly: [OPENS_AGAIN, 'ok'],
+  json: [`the whole mesh; ${OPENS_AGAIN}`, 'ok'],
+  geojson: [`a polygon per triangle; ${OPENS_AGAIN}`, 'ok'],
+  node: ['the vertices only: a .node holds no segments, holes or triangles (the triangles are in .ele; the whole domain in .poly or .json)', 'warn'],
+  ele: ['the triangles only, as numbers of the vertices of the .node exported with them: an .ele holds no coordinates', 'warn'],
+  msh: ['the whole mesh for Gmsh (a physical group per boundary marker); the page does not read .msh back (use .poly or .json)', 'ok'],
+  vtu: ['the whole mesh for ParaView; the page does not read .vtu back (use .poly or .json)', 'ok'],
+  svg: ['a picture of the mesh; to mesh it again, export .poly or .json', 'ok'],
+  png: ['the canvas as a reader would print it; to mesh it again, export .poly or .json', 'ok'],
+};
 
 /**
  * @param {() => {mesh: object|null, plc: object|null}} meshed the latest mesh and the input it was made from
@@ -34,7 +48,8 @@ export function createExportMenu({ meshed, drawing, renderer, drawForPrint, redr
       } else {
         download(await exportText(format, mesh, plc), `ruppert-mesh.${format}`, format);
       }
-      setStatus(`Exported ruppert-mesh.${format}.`, 'ok');
+      const [note, kind] = FORMAT_NOTES[format];
+      setStatus(`Exported ruppert-mesh.${format}: ${note}.`, kind);
     } catch (error) {
       setStatus(`Export failed: ${error.message}`, 'error');
     }
