@@ -36,6 +36,7 @@ function measure(frame) {
 }
 
 function checkFits(m, share, what) {
+  console.log(`${what}: canvas ${Math.round(m.canvas.height)} of ${m.height} px (${Math.round(100 * m.canvas.height / m.height)}%)`);
   assert.ok(m.canvas.height >= share * m.height, `${what}: canvas ${m.canvas.height} px of ${m.height} (wanted ${share * 100}%)`);
   assert.ok(m.canvas.top >= 0 && m.canvas.bottom <= m.height && m.canvas.left >= 0 && m.canvas.right <= m.width,
     `${what}: the canvas is wholly visible: ${JSON.stringify(m.canvas)}`);
