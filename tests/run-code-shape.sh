@@ -38,7 +38,7 @@ if ! command -v clang-tidy >/dev/null 2>&1; then
   exit 1
 fi
 if [[ ! -f "$build/compile_commands.json" ]]; then
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_EXPORT_COMPILE_COMMANDS=ON >/dev/null
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DRUPPERT_BUILD_TESTS=ON >/dev/null
 fi
 
 config="{Checks: '-*,readability-function-size', CheckOptions: [{key: readability-function-size.LineThreshold, value: $max_function_lines}]}"

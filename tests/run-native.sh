@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Native build and tests: configure + build (Release) into build-native, run ctest, then run the CLI
+# Native build and tests: configure + build (Release, the test suite turned on) into build-native, run ctest, then run the CLI
 # on every real PLC of the shared data folder when it is present. Exits non-zero on any failure.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build-native"
 
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRUPPERT_BUILD_TESTS=ON
 cmake --build "$build" -j2
 # Keep going when ctest fails: the CLI run below may tell more; the exit status reports both.
 ctest_status=0

@@ -4,7 +4,8 @@
 //
 // Why here and not only in C++: embind would silently coerce a string or a sparse array into
 // numbers (NaN, 0), and a fractional index would be truncated into a different, valid-looking
-// vertex. Every message names the item and its value, e.g. "segments[7] = 2.5 is not an integer".
+// vertex. Every message names the item and its value, e.g. "segments[3] = (1, 2.5): 2.5 is not an
+// integer" (items, not flat positions, as the core's messages).
 // Value checks that need geometry (non-finite coordinates, duplicate points, hole placement) stay
 // in the core, which reports them with the same codes.
 import { NAMES, OPTIONS } from './dist/names.js';
@@ -80,8 +81,24 @@ function isNumericTypedArray(value) {
     !(value instanceof BigInt64Array) && !(value instanceof BigUint64Array);
 }
 
+// Messages name items, as the core does (docs/usage.md, "Indices in messages"): point i's
+// coordinates are points[i].x and points[i].y, segment k is segments[k] = (a, b), triangle t is
+// triangles[t] = (a, b, c); arrays of one value per item are indexed as they are.
+const coordinateName = (name, i) => `${name}[${i >> 1}].${i & 1 ? 'y' : 'x'}`;
+
+/** Item i / stride of a flat index array with its values: "segments[4] = (1, 2.5)". */
+function tupleName(name, value, i, stride) {
+  const first = i - (i % stride);
+  const parts = [];
+  for (let j = first; j < first + stride; j++) {
+    parts.push(j >= value.length ? '…' : typeof value[j] === 'number' ? String(value[j]) : describe(value[j]));
+  }
+  return stride === 1 ? `${name}[${i}] = ${parts[0]}` : `${name}[${first / stride}] = (${parts.join(', ')})`;
+}
+
 // Any array-like of numbers -> Float64Array (a copy only when the input is not one already).
 function toFloat64(value, name, { pairs }) {
+  const at = (i) => (pairs ? coordinateName(name, i) : `${name}[${i}]`);
   let out;
   if (value instanceof Float64Array) {
     out = value;
@@ -92,11 +109,11 @@ function toFloat64(value, name, { pairs }) {
     for (let i = 0; i < value.length; i++) {
       const v = value[i];
       if (typeof v !== 'number') {
-        if (v === undefined && !(i in value)) throw invalid(`${name}[${i}] is missing (sparse array)`);
+        if (v === undefined && !(i in value)) throw invalid(`${at(i)} is missing (sparse array)`);
         if (Array.isArray(v) && pairs) {
-          throw invalid(`${name}[${i}] is an array: ${name} must be flat [x0, y0, x1, y1, ...]`);
+          throw invalid(`${at(i)} is an array: ${name} must be flat [x0, y0, x1, y1, ...]`);
         }
-        throw invalid(`${name}[${i}] = ${describe(v)} is not a number`);
+        throw invalid(`${at(i)} = ${describe(v)} is not a number`);
       }
       out[i] = v;
     }
@@ -109,11 +126,12 @@ function toFloat64(value, name, { pairs }) {
   return out;
 }
 
-// Array-like of indices -> Uint32Array, each an integer in [0, limit).
-function toIndices(value, name, limit, what) {
+// Array-like of indices -> Uint32Array, each an integer in [0, limit); `stride` indices an item.
+function toIndices(value, name, limit, what, stride) {
+  const item = (i) => tupleName(name, value, i, stride);
   const outOfRange = (i, v) => new MeshError('INDEX_OUT_OF_RANGE',
-    v < 0 ? `${name}[${i}] = ${v} is negative`
-      : `${name}[${i}] = ${v} refers to ${what} ${v}, but there are only ${limit}`);
+    v < 0 ? `${item(i)}: ${v} is negative`
+      : `${item(i)}: ${v} refers to ${what} ${v}, but there are only ${limit}`);
   if (value instanceof Uint32Array) {
     for (let i = 0; i < value.length; i++) if (value[i] >= limit) throw outOfRange(i, value[i]);
     return value;
@@ -126,10 +144,10 @@ function toIndices(value, name, limit, what) {
   for (let i = 0; i < value.length; i++) {
     const v = value[i];
     if (typeof v !== 'number') {
-      if (v === undefined && !(i in value)) throw invalid(`${name}[${i}] is missing (sparse array)`);
-      throw invalid(`${name}[${i}] = ${describe(v)} is not a number`);
+      if (v === undefined && !(i in value)) throw invalid(`${item(i)}: an index is missing (sparse array)`);
+      throw invalid(`${item(i)}: ${describe(v)} is not a number`);
     }
-    if (!Number.isInteger(v)) throw invalid(`${name}[${i}] = ${v} is not an integer`);
+    if (!Number.isInteger(v)) throw invalid(`${item(i)}: ${v} is not an integer`);
     if (v < 0 || v >= limit || v > MAX_UINT32) throw outOfRange(i, v);
     out[i] = v;
   }
@@ -163,7 +181,7 @@ function regionNumber(region, i, key, fallback) {
 // Issue 16, refining a mesh: triangles (3 point indices each) and triangleMaxArea (one per triangle,
 // <= 0: none); the core checks the geometry (zero-area triangles) and NaN bounds.
 function oldMesh(plc, pointCount) {
-  const triangles = plc.triangles == null ? NO_INDICES : toIndices(plc.triangles, 'triangles', pointCount, 'point');
+  const triangles = plc.triangles == null ? NO_INDICES : toIndices(plc.triangles, 'triangles', pointCount, 'point', 3);
   if (triangles.length % 3 !== 0) {
     throw invalid(`triangles has length ${triangles.length}: a triangle is three point indices`);
   }
@@ -216,7 +234,7 @@ export function checkPlc(plc) {
   const points = toFloat64(plc.points, 'points', { pairs: true });
   const pointCount = points.length / 2;
   const segments = plc.segments == null ? NO_INDICES
-    : toIndices(plc.segments, 'segments', pointCount, 'point');
+    : toIndices(plc.segments, 'segments', pointCount, 'point', 2);
   if (segments.length % 2 !== 0) {
     throw invalid(`segments has odd length ${segments.length}: a segment is a pair of point indices`);
   }
@@ -394,9 +412,9 @@ export function checkMesh(mesh) {
   }
   const points = toFloat64(mesh.points ?? [], 'mesh.points', { pairs: true });
   const n = points.length / 2;
-  const triangles = toIndices(mesh.triangles ?? [], 'mesh.triangles', n, 'point');
+  const triangles = toIndices(mesh.triangles ?? [], 'mesh.triangles', n, 'point', 3);
   if (triangles.length % 3 !== 0) throw invalid(`mesh.triangles has length ${triangles.length}, not a multiple of 3`);
-  const segments = toIndices(mesh.segments ?? [], 'mesh.segments', n, 'point');
+  const segments = toIndices(mesh.segments ?? [], 'mesh.segments', n, 'point', 2);
   if (segments.length % 2 !== 0) throw invalid(`mesh.segments has odd length ${segments.length}`);
   const neighbors = toMarkers(mesh.neighbors, 'mesh.neighbors');
   const segmentIds = toMarkers(mesh.segmentIds, 'mesh.segmentIds');
@@ -406,12 +424,12 @@ export function checkMesh(mesh) {
     : toFloat64(mesh.triangleAttributes, 'mesh.triangleAttributes', { pairs: false });
   const indexBase = mesh.indexBase ?? 0;
   if (indexBase !== 0 && indexBase !== 1) throw invalid(`mesh.indexBase = ${describe(indexBase)} must be 0 or 1`);
-  const triangles6 = mesh.triangles6 == null ? new Uint32Array(0) : toIndices(mesh.triangles6, 'mesh.triangles6', n, 'point');
+  const triangles6 = mesh.triangles6 == null ? new Uint32Array(0) : toIndices(mesh.triangles6, 'mesh.triangles6', n, 'point', 6);
   if (triangles6.length !== 0 && triangles6.length !== 2 * triangles.length) {
     throw invalid(`mesh.triangles6 has length ${triangles6.length}, not 6 per triangle`);
   }
   const segmentMarkers = toMarkers(mesh.segmentMarkers, 'mesh.segmentMarkers');
-  const edges = toIndices(mesh.edges ?? [], 'mesh.edges', n, 'point');
+  const edges = toIndices(mesh.edges ?? [], 'mesh.edges', n, 'point', 2);
   if (edges.length % 2 !== 0) throw invalid(`mesh.edges has odd length ${edges.length}`);
   const edgeMarkers = toMarkers(mesh.edgeMarkers, 'mesh.edgeMarkers');
   const { pointAttributes, attributesPerPoint } = checkAttributes(

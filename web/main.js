@@ -57,6 +57,8 @@ let meshArrivedAt = null;
 if (bench) window.ruppertBench = { view, renderer, draw: () => draw(), exemptions: () => app.exemptions };
 const embedded = isEmbedded();
 if (embedded) document.body.classList.add('embed');
+// A small frame needs its height for the canvas: the step legend starts closed there.
+if (embedded) $('step-legend-box').open = false;
 const readOnly = !isEditable();
 // `&edit=1`: the reader draws, so the embed shows the drawing tools and the edit buttons too.
 if (embedded && !readOnly) document.body.classList.add('editable');
@@ -106,23 +108,30 @@ function scheduleDraw() {
   });
 }
 
-function draw() {
+/**
+ * Draws the frame. `print`: the picture a reader would print (the .png export): the mesh, the
+ * drawing's lines and points and the step overlay, without the editing aids (grid, seeds,
+ * handles, selection, hover, the polyline being drawn, the keyboard cursor).
+ */
+function draw({ print = false } = {}) {
   if (app.viewMoved) link.writeSoon();
   const step = app.stepMode && app.mesh?.events
     ? { final: app.mesh, events: app.mesh.events, index: steps.index, shown: app.stepMesh, stage: steps.stage, context: steps.context }
     : null;
+  const aid = (value, none) => (print ? none : value);
   renderer.draw({
     view,
-    drawing: app.drawing,
+    drawing: aid(app.drawing, { ...app.drawing, holes: [], regions: [] }),
     colorMode: app.colorMode,
     snap: app.snap,
-    selection: editor.selection,
-    hoverItem: editor.hoverItem,
-    hoverTriangle: app.hoverTriangle,
-    pendingChain: editor.pendingChain(),
-    curvePreview: editor.curveTools.preview(),
-    curveHandles: !readOnly,
-    keyCursor: editor.keyCursor,
+    grid: !print,
+    selection: aid(editor.selection, null),
+    hoverItem: aid(editor.hoverItem, null),
+    hoverTriangle: aid(app.hoverTriangle, -1),
+    pendingChain: aid(editor.pendingChain(), null),
+    curvePreview: aid(editor.curveTools.preview(), null),
+    curveHandles: !readOnly && !print,
+    keyCursor: aid(editor.keyCursor, null),
     notices: app.notices,
     step,
     exemptions: app.exemptions,
@@ -197,7 +206,11 @@ function restore(drawing) {
 // ---------------------------------------------------------------- the panels
 const link = createPageLink({ app, view, stepIndex: () => steps.index, onLinkChanged: (drawing) => setDrawing(drawing) });
 const hover = createHoverInfo({ app, scheduleDraw });
-const parameters = createParametersPanel({ app, editor, changed });
+// A changed option makes the drawing no longer the preset: its caption and stages speak of the
+// preset's options (the side-by-side comparison stays, meshed with the new ones).
+const parameters = createParametersPanel({
+  app, editor, changed: (commit) => { presets.notPreset({ keepCompare: true }); changed(commit); },
+});
 const display = createDisplayPanel({ app, scheduleDraw, writeLink: link.write });
 const meshPanel = createMeshPanel();
 const steps = createStepsPanel({
@@ -220,7 +233,8 @@ const presets = createPresetBox({
 });
 createFilePanel({ drawingOptions: () => app.drawing.options, setDrawing, notPreset: presets.notPreset });
 createExportMenu({
-  meshed: () => ({ mesh: app.mesh, plc: app.meshedPlc }), drawing: () => app.drawing, renderer, draw, writeLink: link.write,
+  meshed: () => ({ mesh: app.mesh, plc: app.meshedPlc }), drawing: () => app.drawing, renderer,
+  drawForPrint: () => draw({ print: true }), redraw: () => draw(), writeLink: link.write,
 });
 createStartHere({ embedded });
 
@@ -250,6 +264,7 @@ listenToHost({
         ? await parseInput(json, '<ruppert:load>.json')
         : await parsePolyText(poly, '<ruppert:load>');
       presets.notPreset();
+      steps.leave();
       meshing.forHost(id);
       setDrawing(fromPlc(plc, options));
     } catch (error) {

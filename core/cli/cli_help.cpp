@@ -149,7 +149,8 @@ const std::vector<Entry>& entries() {
 // Each example runs as written from the top of a source tree (tests/readme checks them), the
 // inputs being the ones in docs/examples.
 const char* const kExamplesHelp =
-    "Examples (the inputs ship in the source tree's docs/examples):\n"
+    "Examples, run where docs/examples is: the top of the source tree, or\n"
+    "node_modules/ruppert in a project that installed the npm package:\n"
     "  ruppert docs/examples/lake.poly\n"
     "      the summary of a 30-degree mesh; nothing written\n"
     "  ruppert --min-angle 33 --max-area 0.5 -o lake docs/examples/lake.poly\n"

@@ -191,3 +191,18 @@ test('"Start here" shows on a first visit, stays away once dismissed, and shows 
   }
   assert.deepEqual(errors, []);
 });
+
+test('a preset\'s caption goes when its options are changed', async () => {
+  const { page, errors } = await openPage(harness.context, `${harness.baseUrl}/web/`);
+  assert.equal(await settle(page), 'done');
+  await page.selectOption('#preset', 'lake');
+  assert.equal(await settle(page), 'done');
+  assert.match(await page.locator('#preset-caption').textContent(), /no angle under 30°/);
+  await page.fill('#min-angle', '25');
+  await page.locator('#min-angle').dispatchEvent('change');
+  assert.equal(await settle(page), 'done');
+  assert.equal(await page.locator('#preset-caption').isHidden(), true, 'the caption of 30° is gone at 25°');
+  assert.equal(await page.inputValue('#preset'), '');
+  assert.deepEqual(errors, []);
+  await page.close();
+});

@@ -6,7 +6,7 @@
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { after, before, test } from 'node:test';
-import { SCREENSHOTS, clickCanvas, launch, moveOnCanvas, openPage, readStats, settle } from './harness.mjs';
+import { SCREENSHOTS, clickCanvas, launch, moveOnCanvas, openPage, readStats, settle, openExportMenu } from './harness.mjs';
 import { bezierAt, distanceToBezier } from '../package/bezier-math.mjs';
 
 let harness;
@@ -28,6 +28,7 @@ const linked = () => page.evaluate(async () => (await import('./io/url-state.js'
 const toScreen = (x, y) => page.evaluate(([wx, wy]) => window.ruppertBench.view.toScreen(wx, wy), [x, y]);
 
 async function exportFile(button) {
+  if (button.startsWith('#export-')) await openExportMenu(page);
   const [download] = await Promise.all([page.waitForEvent('download'), page.click(button)]);
   return readFileSync(await download.path(), 'utf8');
 }

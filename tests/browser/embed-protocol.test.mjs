@@ -236,3 +236,27 @@ test('ruppert:preset opens a preset the same way after another drawing as on a f
   await fresh.page.close();
   await page.close();
 });
+
+test('a load after a stepping preset shows its final mesh, out of step mode', async () => {
+  const { page, errors } = await openHost();
+  await ask(page, { type: 'ruppert:preset', id: 'fig', name: 'figure-6-4' }, 'ruppert:meshed');
+  const frame = page.frameLocator('#f');
+  assert.match(await frame.locator('#step-info').textContent(), /^Step 0 of/);
+  const meshed = await ask(page, { type: 'ruppert:load', id: 'after', poly: RECTANGLE, options: { maxArea: 0.05, minAngle: 20 } }, 'ruppert:meshed');
+  const expected = mesher.triangulate(RECTANGLE_PLC, { maxArea: 0.05, minAngle: 20 });
+  assert.equal(meshed.stats.triangles, expected.stats.triangles);
+  // The frame shows what a fresh frame shows for that load: the final mesh, no stepper, no caption.
+  await frame.locator('body[data-mesh-state="done"]').waitFor({ state: 'attached' });
+  assert.equal(await frame.locator('#step-mode').isChecked(), false);
+  assert.equal(await frame.locator('#stepper').isHidden(), true);
+  assert.equal(await frame.locator('#preset-caption').isHidden(), true);
+  assert.equal(await frame.locator('#stats-title').textContent(), 'Mesh');
+  assert.equal(Number((await frame.locator('#stat-triangles').textContent()).replace(/,/g, '')), expected.stats.triangles);
+  assert.equal(await frame.locator('#stat-complete').textContent(), 'yes');
+  // A step asked for afterwards turns step mode on again.
+  const stepped = await ask(page, { type: 'ruppert:step', id: 's', index: 3 }, 'ruppert:stepped');
+  assert.equal(stepped.index, 3);
+  assert.equal(await frame.locator('#step-mode').isChecked(), true);
+  assert.deepEqual(errors, []);
+  await page.close();
+});

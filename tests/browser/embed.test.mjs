@@ -128,7 +128,7 @@ test('the embed shows the step controls, the legend and a link to the full page 
   const { page: full, errors: fullErrors } = await openPage(harness.context, new URL(link, framed.url()).href);
   assert.equal(await settle(full), 'done');
   await full.waitForFunction(() => document.body.dataset.stepShown === '2');
-  assert.match(await full.locator('#step-info').textContent(), /^Step 2 of \d+/);
+  assert.match(await full.locator('#step-info').textContent(), /^Step 2 of [\d,]+/);
   assert.equal(await full.locator('#topbar').isVisible(), true);
   await framed.screenshot({ path: `${SCREENSHOTS}embed-stepping.png` });
   assert.deepEqual([...own, ...fullErrors], []);
@@ -142,7 +142,7 @@ test('the link keeps the step, the colouring and the view', async () => {
   const { page: opened, errors: own } = await openPage(harness.context, url);
   assert.equal(await settle(opened), 'done');
   await opened.waitForFunction(() => document.body.dataset.stepShown === '7');
-  assert.match(await opened.locator('#step-info').textContent(), /^Step 7 of \d+/);
+  assert.match(await opened.locator('#step-info').textContent(), /^Step 7 of [\d,]+/);
   assert.equal(await opened.locator('#color-mode').inputValue(), 'region');
   await opened.waitForTimeout(400);
   const hash = await opened.evaluate(() => location.hash);

@@ -53,7 +53,13 @@ test('each figure preset names its figure, applies its options and meshes comple
       assert.equal(Number(await page.inputValue('#min-angle')), preset.options.minAngle, preset.id);
     }
     if (preset.options?.variant) assert.equal(await page.inputValue('#variant'), preset.options.variant, preset.id);
-    if (preset.steps) assert.equal(await page.isChecked('#step-mode'), true, `${preset.id} opens in step mode`);
+    if (preset.steps) {
+      assert.equal(await page.isChecked('#step-mode'), true, `${preset.id} opens in step mode`);
+      // The panel describes the step on screen: the final mesh is the last step.
+      await page.click('#step-last');
+      const last = Number(/ of ([\d,]+)/.exec(await page.locator('#step-info').textContent())[1].replace(/,/g, ''));
+      await page.waitForFunction((k) => document.body.dataset.stepShown === String(k), last);
+    }
     const stats = await readStats(page);
     assert.equal(stats.complete, 'yes', preset.id);
     await page.screenshot({ path: `${SCREENSHOTS}figure-${preset.id}.png` });

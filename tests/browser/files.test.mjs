@@ -3,7 +3,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { after, before, test } from 'node:test';
 import { PRESETS } from '../../web/panels/presets.js';
-import { SCREENSHOTS, launch, openPage, readStats, settle } from './harness.mjs';
+import { SCREENSHOTS, launch, openPage, readStats, settle, openExportMenu } from './harness.mjs';
 
 let harness;
 let page;
@@ -124,6 +124,7 @@ test('a .json file dropped on the canvas is loaded', async () => {
 });
 
 async function exportFile(button) {
+  if (button.startsWith('#export-')) await openExportMenu(page);
   const [download] = await Promise.all([page.waitForEvent('download'), page.click(button)]);
   return { name: download.suggestedFilename(), bytes: readFileSync(await download.path()) };
 }
@@ -168,6 +169,85 @@ test('exports the drawing itself as a .poly that reads back to the same drawing'
   assert.deepEqual(after.points, before.points);
   assert.deepEqual(after.segments, before.segments);
   assert.deepEqual(after.holes, before.holes);
+});
+
+/** The area of a mesh's triangles, and whether any triangle's centroid lies within r of (cx, cy). */
+function meshArea(mesh, cx, cy, r) {
+  let area = 0;
+  let inside = false;
+  const p = mesh.points;
+  for (let t = 0; t < mesh.triangles.length; t += 3) {
+    const [a, b, c] = [2 * mesh.triangles[t], 2 * mesh.triangles[t + 1], 2 * mesh.triangles[t + 2]];
+    area += ((p[b] - p[a]) * (p[c + 1] - p[a + 1]) - (p[c] - p[a]) * (p[b + 1] - p[a + 1])) / 2;
+    const gx = (p[a] + p[b] + p[c]) / 3, gy = (p[a + 1] + p[b + 1] + p[c + 1]) / 3;
+    if (Math.hypot(gx - cx, gy - cy) < r) inside = true;
+  }
+  return { area, inside };
+}
+
+test('a curved drawing\'s "drawing .poly" opens again as the same domain: its area and its hole', async () => {
+  await page.selectOption('#preset', 'plate-round-hole');
+  assert.equal(await settle(page), 'done');
+  const curved = meshArea(JSON.parse((await exportFile('#export-json')).bytes.toString('utf8')), 0.5, 0.5, 0.24);
+  const exported = await exportFile('#export-drawing');
+  assert.match(await page.locator('#status').textContent(), /holds no curves.*2 curves are \d+ segments within/);
+  const text = exported.bytes.toString('utf8');
+  await page.setInputFiles('#file-input', { name: 'plate.poly', mimeType: 'text/plain', buffer: exported.bytes });
+  assert.equal(await settle(page), 'done', text);
+  const again = meshArea(JSON.parse((await exportFile('#export-json')).bytes.toString('utf8')), 0.5, 0.5, 0.24);
+  // The unit square less a disk of radius 0.25, both meshes to the curve tolerance (1e-3 of the
+  // diagonal: the chords cut at most perimeter x tolerance off the hole).
+  const exact = 1 - Math.PI * 0.25 ** 2;
+  const slack = 2 * Math.PI * 0.25 * Math.SQRT2 * 1e-3;
+  assert.equal(again.inside, false, 'the hole is still a hole');
+  assert.ok(Math.abs(again.area - exact) <= slack, `area ${again.area}, exact ${exact}`);
+  assert.ok(Math.abs(again.area - curved.area) <= slack, `area ${again.area}, curved drawing's ${curved.area}`);
+});
+
+test('the .png export has the mesh without the grid, the seeds or the handles', async () => {
+  await page.selectOption('#preset', 'plate-round-hole');
+  assert.equal(await settle(page), 'done');
+  await page.check('#snap');
+  const png = await exportFile('#export-png');
+  await page.uncheck('#snap');
+  // Pixels of the hole seed's red and of the grid's lines, counted in the page from the PNG.
+  const counts = await page.evaluate(async (base64) => {
+    const image = new Image();
+    image.src = `data:image/png;base64,${base64}`;
+    await image.decode();
+    const canvas = document.createElement('canvas');
+    canvas.width = image.width; canvas.height = image.height;
+    const ctx = canvas.getContext('2d');
+    ctx.drawImage(image, 0, 0);
+    const data = ctx.getImageData(0, 0, image.width, image.height).data;
+    const near = (i, [r, g, b]) => Math.abs(data[i] - r) + Math.abs(data[i + 1] - g) + Math.abs(data[i + 2] - b) < 12;
+    let seed = 0, grid = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      if (near(i, [0xc9, 0x2a, 0x2a])) seed++;
+      if (near(i, [0xd9, 0xdd, 0xe6]) || near(i, [0xee, 0xf0, 0xf4])) grid++;
+    }
+    return { seed, grid, pixels: data.length / 4 };
+  }, png.bytes.toString('base64'));
+  assert.equal(counts.seed, 0, 'no hole seed drawn');
+  assert.ok(counts.grid < counts.pixels * 0.002, `${counts.grid} grid pixels of ${counts.pixels}`);
+});
+
+test('.poly, .json and .geojson open again to the same mesh; .node and .ele say what they cannot hold', async () => {
+  for (const format of ['poly', 'json', 'geojson']) {
+    await page.setInputFiles('#file-input', { name: 'pentagon-with-hole.poly', mimeType: 'text/plain', buffer: Buffer.from(PENTAGON) });
+    assert.equal(await settle(page), 'done');
+    const before = await readStats(page);
+    const exported = await exportFile(`#export-${format}`);
+    assert.match(await page.locator('#status').textContent(), /Open file reads it back to the same mesh/, format);
+    await page.setInputFiles('#file-input', { name: `again.${format}`, mimeType: 'text/plain', buffer: exported.bytes });
+    assert.equal(await settle(page), 'done', format);
+    assert.deepEqual(await readStats(page), before, `${format} opens again to the same mesh`);
+  }
+  await exportFile('#export-node');
+  assert.match(await page.locator('#status').textContent(), /vertices only: a \.node holds no segments, holes or triangles/);
+  assert.equal(await page.getAttribute('#status', 'data-kind'), 'warn');
+  await exportFile('#export-ele');
+  assert.match(await page.locator('#status').textContent(), /triangles only.*an \.ele holds no coordinates/);
 });
 
 test('exports .node, .ele, .msh, .vtu and .geojson downloads whose headers match the mesh', async () => {

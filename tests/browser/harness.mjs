@@ -102,6 +102,11 @@ export async function openPage(context, url, { width = 1280, height = 800, start
   return { page, errors };
 }
 
+/** Opens the toolbar's Export menu (its buttons are visible, and clickable, only when it is open). */
+export async function openExportMenu(page) {
+  if (!(await page.evaluate(() => document.getElementById('export-menu').open))) await page.click('#export-menu > summary');
+}
+
 const SETTLED = ['done', 'error', 'cancelled', 'empty'];
 
 /**

@@ -48,7 +48,7 @@ test('at 390 x 844 the canvas comes right after the tools, before the toolbar\'s
   const canvas = await box(page, '#canvas-wrap');
   const tools = await box(page, '[data-tool="select"]');
   assert.ok(tools.y + tools.height <= canvas.y, 'the tool buttons above the canvas');
-  for (const id of ['#undo', '#fit', '#preset', '#export-poly', '#copy-link']) {
+  for (const id of ['#undo', '#fit', '#preset', '#export-menu', '#copy-link']) {
     const control = await box(page, id);
     assert.ok(control.y >= canvas.y + canvas.height, `${id} under the canvas (y ${control.y}, canvas ends at ${canvas.y + canvas.height})`);
   }
@@ -96,7 +96,7 @@ test('keyboard only: tools, zoom, step mode, and a visible focus ring', async ()
   await page.keyboard.press('s');
   assert.equal(await page.isChecked('#step-mode'), true);
   assert.equal(await settle(page), 'done');
-  assert.match(await page.locator('#step-info').textContent(), /^Step 0 of \d+: .*before refinement|No refinement events/);
+  assert.match(await page.locator('#step-info').textContent(), /^Step 0 of [\d,]+: .*before refinement|No refinement events/);
   await page.keyboard.press('s');
   assert.equal(await page.isChecked('#step-mode'), false);
   await page.keyboard.press('g');

@@ -5,7 +5,7 @@
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { after, before, test } from 'node:test';
-import { SCREENSHOTS, launch, openPage, settle } from './harness.mjs';
+import { SCREENSHOTS, launch, openPage, settle, openExportMenu } from './harness.mjs';
 
 let harness;
 let page;
@@ -45,6 +45,7 @@ const MARKED = `8 2 0 0
 `;
 
 async function exportFile(button) {
+  if (button.startsWith('#export-')) await openExportMenu(page);
   const [download] = await Promise.all([page.waitForEvent('download'), page.click(button)]);
   return readFileSync(await download.path(), 'utf8');
 }

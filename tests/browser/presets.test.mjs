@@ -24,7 +24,7 @@ async function presetState(page, id) {
   assert.equal(await settle(page), 'done', id);
   // In step mode the Mesh panel shows the step's mesh, which arrives after the final one.
   if (await page.locator('#stepper').isVisible()) {
-    const index = Number(/^Step (\d+)/.exec(await page.locator('#step-info').textContent())?.[1]);
+    const index = Number(/^Step ([\d,]+)/.exec(await page.locator('#step-info').textContent())?.[1].replace(/,/g, ''));
     await page.waitForFunction((k) => document.body.dataset.stepShown === String(k), index);
   }
   return {
@@ -69,7 +69,7 @@ test('a preset opens the same after other options and a replay step as on a fres
       const { stepMode: freshMode, stepInfo: freshInfo, ...freshRest } = expected[id];
       assert.deepEqual(rest, freshRest, id);
       assert.equal(stepMode, true, id);
-      assert.match(stepInfo, /^Step (\d+) of \1: /, `${id} opens at the final mesh`);
+      assert.match(stepInfo, /^Step ([\d,]+) of \1: /, `${id} opens at the final mesh`);
     }
   }
   await page.screenshot({ path: `${SCREENSHOTS}preset-after-other-state.png` });

@@ -123,3 +123,21 @@ test('the embedding example of the site works from the same folder', async () =>
   assert.deepEqual(errors, []);
   await page.close();
 });
+
+test('opened from disk (file://), the page says it must be served over http, with the command', async () => {
+  const { page } = await openPage(harness.context, `file://${join(served, FOLDER)}index.html`);
+  const note = page.locator('#served-note');
+  await note.waitFor({ state: 'visible', timeout: 10_000 });
+  const text = await note.textContent();
+  assert.match(text, /must be served over http/);
+  assert.match(text, new RegExp(`python3 -m http\\.server 8000 --directory "${join(served, FOLDER).replace(/[.*+?^${}()|[\]\\]/g, '\\$&')}"`));
+  const box = await note.boundingBox();
+  assert.ok(box.y < 50 && box.height > 20, `the note is at the top: ${JSON.stringify(box)}`);
+  await page.screenshot({ path: `${SCREENSHOTS}site-from-disk.png` });
+  await page.close();
+  // Served over http, there is no such note.
+  const { page: served2 } = await openPage(harness.context, `${siteUrl}index.html`);
+  assert.equal(await settle(served2), 'done');
+  assert.equal(await served2.locator('#served-note').count(), 0);
+  await served2.close();
+});

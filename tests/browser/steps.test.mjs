@@ -25,9 +25,10 @@ after(async () => {
 const stepInfo = () => page.locator('#step-info').textContent();
 
 function parseStep(text) {
-  const match = /^Step (\d+) of (\d+): (.*)$/.exec(text);
+  const match = /^Step ([\d,]+) of ([\d,]+): (.*)$/.exec(text);
   assert.ok(match, `step text: ${text}`);
-  return { index: Number(match[1]), count: Number(match[2]), what: match[3] };
+  const number = (digits) => Number(digits.replace(/,/g, ''));
+  return { index: number(match[1]), count: number(match[2]), what: match[3] };
 }
 
 test('step mode records the events and steps through them', async () => {
@@ -152,7 +153,7 @@ test('play advances on its own and pause stops it', async () => {
   await page.click('#step-first');
   await page.click('#step-play');
   assert.equal(await page.getAttribute('#step-play', 'aria-label'), 'Pause');
-  await page.waitForFunction(() => /^Step (\d+)/.exec(document.getElementById('step-info').textContent)[1] > 5);
+  await page.waitForFunction(() => Number(/^Step ([\d,]+)/.exec(document.getElementById('step-info').textContent)[1].replace(/,/g, '')) > 5);
   await page.click('#step-play');
   assert.equal(await page.getAttribute('#step-play', 'aria-label'), 'Play');
   const paused = parseStep(await stepInfo()).index;
@@ -191,6 +192,35 @@ test('each kind of event is described with its geometry', async () => {
   for (const kind of ['split', 'shell split', 'triangle', 'optimal point', 'relocated vertex', 'rejected off-center', 'rejected circumcenter']) {
     assert.ok(seen.has(kind), `${kind} not seen among ${[...seen].join(', ')}`);
   }
+});
+
+test('an intermediate step is a step, not a failed run: no "Complete: no", no budget warning', async () => {
+  // lake: step mode turned on by the reader; figure-6-4: a preset that opens at step 0.
+  for (const [preset, k] of [['lake', 5], ['figure-6-4', 0]]) {
+    await page.selectOption('#preset', preset);
+    assert.equal(await settle(page), 'done');
+    if (!(await page.isChecked('#step-mode'))) {
+      await page.check('#step-mode');
+      assert.equal(await settle(page), 'done');
+    }
+    const { count } = parseStep(await stepInfo());
+    assert.ok(count > k, `${preset}: ${count} steps`);
+    await page.fill('#step-scrub', String(k));
+    await shownStep(k);
+    const complete = await page.locator('#stat-complete').textContent();
+    assert.match(complete, new RegExp(`^step ${k} of ${count.toLocaleString('en-US')}`), `${preset} step ${k}`);
+    assert.notEqual(await page.getAttribute('#stat-complete', 'class'), 'bad');
+    assert.equal(await page.locator('#reasons li').count(), 0, `${preset} step ${k}: reasons listed`);
+    const text = await page.locator('body').innerText();
+    assert.doesNotMatch(text, /STEINER_BUDGET|budget of \d+ vertices was reached/i, `${preset} step ${k}`);
+    assert.equal(await page.getAttribute('#status', 'data-kind'), 'info');
+    // The final step is the mesh itself, complete as it is.
+    await page.fill('#step-scrub', String(count));
+    await shownStep(count);
+    assert.equal(await page.locator('#stat-complete').textContent(), 'yes');
+  }
+  await page.uncheck('#step-mode');
+  assert.equal(await settle(page), 'done');
 });
 
 test('leaving step mode hides the stepper', async () => {

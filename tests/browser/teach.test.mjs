@@ -55,7 +55,7 @@ test("Fig. 6.4 replays its six stages with the book's settings and captions", as
   const pictures = new Set();
   for (const [label, caption] of FIGURE_STAGES) {
     await page.click(`#step-stages button[data-label="${label}"]`);
-    const index = Number(/^Step (\d+)/.exec(await text('step-info'))[1]);
+    const index = Number(/^Step ([\d,]+)/.exec(await text('step-info'))[1].replace(/,/g, ''));
     await stepShown(index);
     await page.waitForTimeout(50);
     const stage = await text('step-stage');
@@ -124,7 +124,7 @@ test('the overlay has a legend, its encroachment region as in force, and precise
   // (e): the rejected circumcenter of a skinny triangle, with the values that decided it.
   await page.click('#step-stages button[data-label="(e)"]');
   assert.match(await text('step-info'), /of skinny triangle \(\d+, \d+, \d+\) \(smallest angle [\d.]+° < bound 30°\) encroached subsegment/);
-  const { index } = { index: Number(/^Step (\d+)/.exec(await text('step-info'))[1]) };
+  const { index } = { index: Number(/^Step ([\d,]+)/.exec(await text('step-info'))[1].replace(/,/g, '')) };
   await stepShown(index);
   await page.waitForTimeout(50);
   const disk = await canvasFingerprint(page);
@@ -132,7 +132,7 @@ test('the overlay has a legend, its encroachment region as in force, and precise
   await page.selectOption('#encroachment', 'lens');
   assert.equal(await settle(page), 'done');
   assert.match(await text('step-legend'), /diametral lens \(encroachment: lens, angle ≥ 120°\)/);
-  const lensStep = Number(/^Step (\d+)/.exec(await text('step-info'))[1]);
+  const lensStep = Number(/^Step ([\d,]+)/.exec(await text('step-info'))[1].replace(/,/g, ''));
   await stepShown(lensStep);
   await page.waitForTimeout(50);
   assert.notEqual(await canvasFingerprint(page), disk, 'the lens is drawn, not the disk');
@@ -143,7 +143,7 @@ test('the overlay has a legend, its encroachment region as in force, and precise
   await page.fill('#max-area', '2');
   await page.locator('#max-area').dispatchEvent('change');
   assert.equal(await settle(page), 'done');
-  const count = Number(/^Step \d+ of (\d+)/.exec(await text('step-info'))[1]);
+  const count = Number(/^Step [\d,]+ of ([\d,]+)/.exec(await text('step-info'))[1].replace(/,/g, ''));
   let large = null;
   for (let k = 1; k <= count && large === null; k++) {
     await page.fill('#step-scrub', String(k));
@@ -179,7 +179,7 @@ test('one preset per idea, each with a caption, screenshot and its options', asy
   // The shells preset splits on a concentric shell somewhere in its replay.
   await page.selectOption('#preset', 'shells');
   assert.equal(await settle(page), 'done');
-  const count = Number(/^Step \d+ of (\d+)/.exec(await text('step-info'))[1]);
+  const count = Number(/^Step [\d,]+ of ([\d,]+)/.exec(await text('step-info'))[1].replace(/,/g, ''));
   let shell = false;
   for (let k = 1; k <= count && !shell; k++) {
     await page.fill('#step-scrub', String(k));

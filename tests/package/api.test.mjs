@@ -264,13 +264,13 @@ test('JavaScript-side validation names the offending item', async () => {
     [() => mesher.triangulate({ points: '0 0 1 0 0 1' }), 'MALFORMED_INPUT', /points must be an array/],
     [() => mesher.triangulate({ points: [0, 0, 1, 0, 0] }), 'MALFORMED_INPUT', /odd length 5/],
     // eslint-disable-next-line no-sparse-arrays
-    [() => mesher.triangulate({ points: [0, 0, 1, , 0, 1] }), 'MALFORMED_INPUT', /points\[3\] is missing/],
-    [() => mesher.triangulate({ points: [0, 0, 1, '0', 0, 1] }), 'MALFORMED_INPUT', /points\[3\] = "0" is not a number/],
-    [() => mesher.triangulate({ points: [[0, 0], [1, 0], [0, 1]] }), 'MALFORMED_INPUT', /points\[0\] is an array/],
+    [() => mesher.triangulate({ points: [0, 0, 1, , 0, 1] }), 'MALFORMED_INPUT', /points\[1\]\.y is missing/],
+    [() => mesher.triangulate({ points: [0, 0, 1, '0', 0, 1] }), 'MALFORMED_INPUT', /points\[1\]\.y = "0" is not a number/],
+    [() => mesher.triangulate({ points: [[0, 0], [1, 0], [0, 1]] }), 'MALFORMED_INPUT', /points\[0\]\.x is an array/],
     [() => mesher.triangulate({ ...square, segments: [0, 1, 1, 2, 2, 3, 3, 0, 1, 2.5] }), 'MALFORMED_INPUT',
-      /segments\[9\] = 2.5 is not an integer/],
-    [() => mesher.triangulate({ ...square, segments: [0, 1, 1, 4] }), 'INDEX_OUT_OF_RANGE', /segments\[3\] = 4/],
-    [() => mesher.triangulate({ ...square, segments: new Int32Array([0, -1]) }), 'INDEX_OUT_OF_RANGE', /segments\[1\] = -1 is negative/],
+      /segments\[4\] = \(1, 2\.5\): 2\.5 is not an integer/],
+    [() => mesher.triangulate({ ...square, segments: [0, 1, 1, 4] }), 'INDEX_OUT_OF_RANGE', /segments\[1\] = \(1, 4\): 4 refers to point 4/],
+    [() => mesher.triangulate({ ...square, segments: new Int32Array([0, -1]) }), 'INDEX_OUT_OF_RANGE', /segments\[0\] = \(0, -1\): -1 is negative/],
     [() => mesher.triangulate({ ...square, segments: [0, 1, 2] }), 'MALFORMED_INPUT', /segments has odd length 3/],
     [() => mesher.triangulate({ ...square, holes: [0.5] }), 'MALFORMED_INPUT', /holes has odd length/],
     [() => mesher.triangulate({ ...square, regions: [{ x: 0.5 }] }), 'MALFORMED_INPUT', /regions\[0\]\.y = undefined/],
@@ -301,7 +301,7 @@ test('every error code of the core is reachable from JavaScript', async () => {
   reach(() => mesher.triangulate({ points: [0, 0, 1, 0, NaN, 1] }, q), 'NON_FINITE_COORDINATE', /points\[2\]/);
   // The core rescales, so only a range over 2^128 between coordinates is out of reach.
   reach(() => mesher.triangulate({ points: [0, 0, 1, 0, 0, 1, 1e-50, 0.5] }, q), 'COORDINATE_RANGE', /points\[3\]\.x/);
-  reach(() => mesher.triangulate({ ...square, segments: [0, 9] }, q), 'INDEX_OUT_OF_RANGE', /segments\[1\] = 9/);
+  reach(() => mesher.triangulate({ ...square, segments: [0, 9] }, q), 'INDEX_OUT_OF_RANGE', /segments\[0\] = \(0, 9\): 9 refers/);
   reach(() => mesher.triangulate({ points: [0, 0, 1, 1, 2, 2] }, q), 'DEGENERATE_INPUT');
   reach(() => mesher.triangulate({ ...square, holes: [0.5, 0] }, q), 'HOLE_ON_SEGMENT', /holes\[0\]/);
   reach(() => mesher.triangulate({ ...square, regions: [{ x: 0.5, y: 0.5, maxArea: NaN }] }, q), 'INVALID_REGION', /regions\[0\]/);

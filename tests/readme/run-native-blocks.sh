@@ -4,7 +4,8 @@
 # 1. Every ```sh block of README.md runs line by line with bash in a scratch folder that holds
 #    links to docs/ and to BUILD_DIR as build-native (so `build-native/core/ruppert` is the binary
 #    under test), with HOME in the scratch folder (so `cmake --install ... --prefix "$HOME/.local"`
-#    installs there). The ```cpp block is written to example.cpp first, for the lines that build it.
+#    installs there). The ```cpp block is written to out/example.cpp first, for the lines that build
+#    it. Everything the commands write must land in out/ (ignored by git): the clone stays clean.
 #    Lines for npm and npx are the package tests' (tests/package/readme.test.mjs); the build line
 #    must be package.json's build:native script, which tests/run-native.sh has just run.
 # 2. The usage block of README.md is the program's own usage line.
@@ -34,7 +35,8 @@ ln -s "$root/docs" "$work/run/docs"
 ln -s "$build" "$work/run/build-native"
 cpp_blocks=("$work"/blocks/*.cpp)
 [[ ${#cpp_blocks[@]} -eq 1 && -f "${cpp_blocks[0]}" ]] || fail "expected one cpp block, found ${#cpp_blocks[@]}"
-cp "${cpp_blocks[0]}" "$work/run/example.cpp"
+mkdir -p "$work/run/out"
+cp "${cpp_blocks[0]}" "$work/run/out/example.cpp"
 
 build_line="$(node -e 'process.stdout.write(require(process.argv[1]).scripts["build:native"])' "$root/package.json")"
 ran=0
@@ -60,9 +62,13 @@ done
 # What the commands must have made.
 [[ $ran -ge 7 ]] || fail "only $ran commands ran: the README's blocks were not found"
 for file in lake.ele lake.node lake.poly plate.vtu park.svg example; do
-  [[ -s "$work/run/$file" ]] || fail "the README's commands did not write $file"
+  [[ -s "$work/run/out/$file" ]] || fail "the README's commands did not write out/$file"
 done
-grep -q '^\$MeshFormat' "$work/run/park.msh" || fail "park.msh is not a Gmsh file"
+grep -q '^\$MeshFormat' "$work/run/out/park.msh" || fail "out/park.msh is not a Gmsh file"
+# The examples leave the clone clean: everything they write is in out/, which git ignores.
+stray="$(cd "$work/run" && find . -mindepth 1 -maxdepth 1 ! -name out ! -name docs ! -name build-native)"
+[[ -z "$stray" ]] || fail "the README's commands wrote outside out/: $stray"
+git -C "$root" check-ignore -q out/lake.ele || fail "out/ is not ignored by git (.gitignore)"
 "$work/home/.local/bin/ruppert" --version | grep -q '^ruppert ' || fail "the installed ruppert does not run"
 [[ -f "$work/home/.local/include/ruppert/ruppert.h" && -f "$work/home/.local/lib/libruppert_core.a" ]] ||
   fail "cmake --install did not install the header and the library"

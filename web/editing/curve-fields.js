@@ -10,22 +10,6 @@ export function syncCurveTolerance(options) {
   $('curve-tolerance').value = options.curveTolerance > 0 ? String(options.curveTolerance) : '';
 }
 
-/** Writes the field into the drawing's options on change (an undo step), refusing negatives. */
-export function watchCurveTolerance(app, changed) {
-  const field = $('curve-tolerance');
-  field.addEventListener('change', () => {
-    const text = field.value.trim();
-    const value = text === '' ? 0 : Number(text);
-    if (!Number.isFinite(value) || value < 0) {
-      field.setAttribute('aria-invalid', 'true');
-      return;
-    }
-    field.removeAttribute('aria-invalid');
-    app.drawing.options.curveTolerance = value;
-    changed(true);
-  });
-}
-
 const curveOf = (d, item) => ((item?.kind === CurveItem.CURVE || item?.kind === CurveItem.HANDLE) ? d.curves?.[item.index] ?? null : null);
 
 /** The marker of the selected curve (0: none), or null when no curve is selected. */

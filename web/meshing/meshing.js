@@ -51,6 +51,12 @@ export function createMeshing({ app, renderer, meshPanel, display, steps, schedu
         `min angle ${s.minAngle.toFixed(2)}° in ${s.milliseconds.toFixed(1)} ms`;
       if (mesh.notices.length) setStatus(`Meshed with ${mesh.notices.length} repair(s) of the input: ${summary}.`, 'warn');
       else if (!mesh.complete) setStatus(`Meshed, not complete (see Mesh panel): ${summary}.`, 'warn');
+      // Points alone: the package meshes their convex hull (an open polyline gets NOTHING_ENCLOSED
+      // instead); say so rather than leave a hull no one drew unexplained.
+      else if (request.plc.segments.length === 0) {
+        setStatus(`Meshed the convex hull of the ${(request.plc.points.length / 2).toLocaleString('en-US')} points ` +
+          `(the drawing has no segments; add some to bound the domain): ${summary}.`, 'info');
+      }
       else setStatus(`Meshed: ${summary}.`, 'ok');
       // A result that a newer, still debounced request will replace is shown, but not 'done'.
       document.body.dataset.meshState = scheduler.queued ? 'queued' : 'done';

@@ -14,7 +14,12 @@ export const REFERENCE_ANGLES = [20.7, 26.45, 28.6, 34];
 
 const format = (value, digits = 2) => (Number.isFinite(value) ? value.toFixed(digits) : '–');
 
-export function showStats(elements, mesh, bound = null) {
+/**
+ * The rows of a mesh. `step` ({ k, count }) marks an intermediate step of a replay: refinement
+ * stopped there on purpose, so its completeness is the step itself, neutral, with no reasons (the
+ * budget that stopped it is the replay's, not the reader's).
+ */
+export function showStats(elements, mesh, bound = null, step = null) {
   const { vertices, triangles, minAngle, maxAngle, complete, time, reasons, lfsIntegral } = elements;
   if (!mesh) {
     for (const el of [vertices, triangles, minAngle, maxAngle, complete, time, lfsIntegral]) el.textContent = '–';
@@ -27,11 +32,12 @@ export function showStats(elements, mesh, bound = null) {
   triangles.textContent = s.triangles.toLocaleString('en-US');
   minAngle.textContent = `${format(s.minAngle)}°`;
   maxAngle.textContent = `${format(s.maxAngle)}°`;
-  complete.textContent = mesh.complete ? 'yes' : 'no';
-  complete.className = mesh.complete ? 'good' : 'bad';
+  complete.textContent = step ? `step ${step.k.toLocaleString('en-US')} of ${step.count.toLocaleString('en-US')}: refinement goes on`
+    : mesh.complete ? 'yes' : 'no';
+  complete.className = step ? 'step' : mesh.complete ? 'good' : 'bad';
   time.textContent = `${format(s.milliseconds, 1)} ms`;
   lfsIntegral.textContent = lfsIntegralText(s);
-  reasons.replaceChildren(...mesh.reasons.map((r) => {
+  reasons.replaceChildren(...(step ? [] : mesh.reasons).map((r) => {
     const li = document.createElement('li');
     li.textContent = `${r.kind} ×${r.count}: ${r.message}`;
     return li;
@@ -79,7 +85,15 @@ export function drawHistogram(canvas, histogram, bound = null) {
   const ctx = canvas.getContext('2d');
   ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
   ctx.clearRect(0, 0, cssWidth, cssHeight);
-  const left = 34;      // room for the count labels
+  ctx.font = '10px system-ui, sans-serif';
+  let countMax = 0;
+  if (histogram && histogram.length) {
+    for (const count of histogram) countMax = Math.max(countMax, count);
+    countMax = niceCeiling(countMax);
+  }
+  // Room for the widest count label ("100,000" on a big mesh) and its tick.
+  const left = Math.max(34, Math.ceil(ctx.measureText(countMax.toLocaleString('en-US')).width) + 8);
+  canvas.dataset.axisLeft = String(left);
   const top = 12;       // room for the bound's label
   const bottom = cssHeight - 16;
   const width = cssWidth - left - 6;
@@ -87,10 +101,7 @@ export function drawHistogram(canvas, histogram, bound = null) {
 
   ctx.fillStyle = '#f7f8fa';
   ctx.fillRect(left, top, width, bottom - top);
-  let countMax = 0;
   if (histogram && histogram.length) {
-    for (const count of histogram) countMax = Math.max(countMax, count);
-    countMax = niceCeiling(countMax);
     ctx.fillStyle = HISTOGRAM_COLOURS.bar;
     for (let bin = 0; bin < histogram.length; bin++) {
       if (!histogram[bin]) continue;
@@ -250,12 +261,12 @@ export function createMeshPanel() {
      */
     showStep(mesh, k = 0, count = 0) {
       if (mesh === null || mesh === final) {
-        title(mesh === null ? 'Mesh' : `Mesh at step ${k} of ${count} (the final mesh)`);
+        title(mesh === null ? 'Mesh' : `Mesh at step ${k.toLocaleString('en-US')} of ${count.toLocaleString('en-US')} (the final mesh)`);
         showStats(elements, final, bound);
         return;
       }
-      title(`Mesh at step ${k} of ${count}`);
-      showStats(elements, mesh, bound);
+      title(`Mesh at step ${k.toLocaleString('en-US')} of ${count.toLocaleString('en-US')}`);
+      showStats(elements, mesh, bound, { k, count });
     },
     clear() {
       final = null;

@@ -5,7 +5,8 @@
 import { DEFAULT_OPTIONS, Item, MIN_ANGLE_RANGE, PAGE_FLAGS, flagOption, segmentMarkers } from '../drawing.js';
 import { ENCROACHMENT_LABELS, PLACEMENT_LABELS, PRACTICAL_ANGLE, VARIANT_LABELS } from '../labels.js';
 import { setStatus } from './status-line.js';
-import { curveMarkerOf, setCurveMarker, syncCurveTolerance, watchCurveTolerance } from '../editing/curve-fields.js';
+import { curveMarkerOf, setCurveMarker, syncCurveTolerance } from '../editing/curve-fields.js';
+import { checkOptions } from '../../wasm/input-checks.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -14,6 +15,23 @@ function readNumber(input) {
   if (input.value.trim() === '') return null;
   const value = Number(input.value);
   return Number.isFinite(value) ? value : null;
+}
+
+/**
+ * A field of a package option, read as the package reads that option: { value } (null when empty:
+ * the default, none or automatic), or { error }, the package's own message for that value, so that
+ * the page refuses exactly what triangulate() refuses.
+ */
+export function readOption(input, name) {
+  const text = input.value.trim();
+  if (text === '') return { value: null };
+  const value = Number(text);
+  try {
+    checkOptions({ [name]: value });
+  } catch (error) {
+    return { error: `${error.message} (${error.code ?? 'INVALID_OPTION'})` };
+  }
+  return { value };
 }
 
 /** Whether the min angle is past what the placement usually reaches (the warning under the slider). */
@@ -50,6 +68,7 @@ export function createParametersPanel({ app, editor, changed }) {
     minAngleNumber.value = String(o.minAngle);
     $('min-angle-warning').hidden = !pastPractical(o);
     $('max-area').value = o.maxArea > 0 ? String(o.maxArea) : '';
+    for (const id of ['max-area', 'max-steiner', 'curve-tolerance']) $(id).removeAttribute('aria-invalid');
     $('placement').value = o.placement;
     $('max-steiner').value = Number.isInteger(o.maxSteiner) ? String(o.maxSteiner) : '';
     $('variant').value = o.variant ?? DEFAULT_OPTIONS.variant;
@@ -93,11 +112,28 @@ export function createParametersPanel({ app, editor, changed }) {
   });
   minAngleNumber.addEventListener('change', () => setMinAngle(readNumber(minAngleNumber), true));
 
-  $('max-area').addEventListener('change', () => {
-    const value = readNumber($('max-area'));
-    app.drawing.options.maxArea = value !== null && value > 0 ? value : null;
-    changed(true);
-  });
+  /**
+   * The option fields: a value the package refuses is marked and named on the status line, and
+   * the drawing keeps its last valid value (nothing is meshed with a value silently changed).
+   */
+  const OPTION_FIELDS = [
+    ['max-area', 'maxArea', 'Max area', (v) => (v > 0 ? v : null)],
+    ['max-steiner', 'maxSteiner', 'Steiner budget', (v) => v],
+    ['curve-tolerance', 'curveTolerance', 'Curve tolerance', (v) => v ?? 0],
+  ];
+  for (const [id, name, label, stored] of OPTION_FIELDS) {
+    $(id).addEventListener('change', () => {
+      const { value, error } = readOption($(id), name);
+      if (error) {
+        $(id).setAttribute('aria-invalid', 'true');
+        setStatus(`${label}: ${error}; the mesh keeps the last valid value.`, 'error');
+        return;
+      }
+      $(id).removeAttribute('aria-invalid');
+      app.drawing.options[name] = stored(value);
+      changed(true);
+    });
+  }
   for (const name of ['placement', 'variant', 'encroachment']) {
     $(name).addEventListener('change', () => {
       app.drawing.options[name] = $(name).value;
@@ -111,12 +147,6 @@ export function createParametersPanel({ app, editor, changed }) {
       changed(true);
     });
   }
-  watchCurveTolerance(app, changed);
-  $('max-steiner').addEventListener('change', () => {
-    const value = readNumber($('max-steiner'));
-    app.drawing.options.maxSteiner = value !== null && value >= 0 ? Math.floor(value) : null;
-    changed(true);
-  });
 
   /** The region seed fields' values: those of a new seed. */
   function regionSeed() {

@@ -59,12 +59,15 @@ export function createPresetBox({ drawingOptions, setDrawing, restartSteps, setS
     return true;
   }
 
-  /** The drawing is no longer a preset (edited, a file, a message): the box and caption say so. */
-  function notPreset() {
+  /**
+   * The drawing is no longer a preset (edited, a file, a message, an option changed): the box and
+   * caption say so. `keepCompare`: the side-by-side view stays (it meshes whatever options are set).
+   */
+  function notPreset({ keepCompare = false } = {}) {
     $('preset').value = '';
     showCaption('');
     setStages(null);
-    compare.hide();
+    if (!keepCompare) compare.hide();
   }
 
   // The corpus of real PLCs beside the repository (../shared/data), when the server offers it:

@@ -200,8 +200,10 @@ export class Renderer {
       for (let y = Math.ceil(b.minY / every) * every; y <= b.maxY; y += every) xy.push(b.minX, y, b.maxX, y);
       grid.push({ lines: new Float32Array(xy), colour });
     };
-    if (s.snap) lines(step, COLOURS.grid);
-    lines(step * 5, COLOURS.gridStrong);
+    if (s.grid !== false) {
+      if (s.snap) lines(step, COLOURS.grid);
+      lines(step * 5, COLOURS.gridStrong);
+    }
     const alpha = this.mesh && s.step && !showsStep(s.step, this.mesh) ? 0.35 : 1;
     this.gl.draw(view, this.dpr, { background: COLOURS.background, grid, edgeColour: COLOURS.edge, alpha });
   }
@@ -254,7 +256,7 @@ export class Renderer {
 
   /**
    * @param {object} s what to draw:
-   *   view, drawing, colorMode, snap (the fine grid too), selection, hoverItem, hoverTriangle,
+   *   view, drawing, colorMode, snap (the fine grid too), grid (false: none), selection, hoverItem, hoverTriangle,
    *   pendingChain: { from: pointIndex, to: {x,y}, first } | null, keyCursor: {x,y} | null (keyboard cursor),
    *   notices, step: { final, events, index, shown } | null: `final` the full mesh (its points
    *   number every vertex of every step), `index` the step wanted, `shown` the mesh on screen;
@@ -272,7 +274,7 @@ export class Renderer {
       ctx.fillRect(0, 0, this.canvas.width, this.canvas.height);
     }
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-    if (!this.gl) this.drawGrid(view, s.snap);
+    if (!this.gl && s.grid !== false) this.drawGrid(view, s.snap);
 
     const px = 1 / view.scale;  // one CSS pixel in world units
     const world = () => ctx.setTransform(...view.matrix(dpr));

@@ -166,20 +166,50 @@ export function drawStep(ctx, mesh, step, view, world, screen, px) {
   const named = kind === EventKind.SEGMENT_SPLIT ? [events.a[e], events.b[e], events.by[e]]
     : [events.triangle[3 * e], events.triangle[3 * e + 1], events.triangle[3 * e + 2],
       ...(kind === EventKind.REJECTED ? [events.a[e], events.b[e]] : [])];
-  labelVertices(ctx, [...named, events.vertex[e]].filter((v) => v >= 0), p, view);
+  // The new vertex first: where labels crowd, its number is the one kept.
+  labelVertices(ctx, [events.vertex[e], ...named].filter((v) => v >= 0), p, view);
 }
 
-/** Vertex numbers beside the given vertices (a white halo keeps them legible over any colour). */
+/**
+ * Where labels of the given size go beside their points: for each { x, y, width, height }, the
+ * first of four corners (above right, above left, below right, below left) whose box overlaps no
+ * label already placed, or null when all four do (a crowded label is left out rather than drawn
+ * over another). Returns [{ x, y } (the box's left and bottom) | null], in the given order.
+ */
+export function placeLabels(labels, gap = 4) {
+  const placed = [];
+  const overlaps = (a, b) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+  return labels.map(({ x, y, width, height }) => {
+    for (const [dx, dy] of [[gap + 1, -gap], [-gap - width, -gap], [gap + 1, gap + height], [-gap - width, gap + height]]) {
+      const box = { left: x + dx, right: x + dx + width, bottom: y + dy, top: y + dy - height };
+      if (placed.some((other) => overlaps(box, other))) continue;
+      placed.push(box);
+      return { x: box.left, y: box.bottom };
+    }
+    return null;
+  });
+}
+
+/**
+ * Vertex numbers beside the given vertices (a white halo keeps them legible over any colour), the
+ * first given first; where they crowd, a later one moves to another corner or is left out.
+ */
 function labelVertices(ctx, ids, p, view) {
   ctx.font = 'bold 12px system-ui, sans-serif';
   ctx.textAlign = 'left';
   ctx.textBaseline = 'bottom';
   ctx.lineJoin = 'round';
-  for (const v of new Set(ids)) {
+  const unique = [...new Set(ids)];
+  const labels = unique.map((v) => {
     const q = view.toScreen(p[2 * v], p[2 * v + 1]);
-    ctx.strokeStyle = '#fff'; ctx.lineWidth = 3; ctx.strokeText(String(v), q.x + 5, q.y - 4);
-    ctx.fillStyle = '#111827'; ctx.fillText(String(v), q.x + 5, q.y - 4);
-  }
+    return { x: q.x, y: q.y, width: ctx.measureText(String(v)).width, height: 12 };
+  });
+  placeLabels(labels).forEach((at, i) => {
+    if (at === null) return;
+    const text = String(unique[i]);
+    ctx.strokeStyle = '#fff'; ctx.lineWidth = 3; ctx.strokeText(text, at.x, at.y);
+    ctx.fillStyle = '#111827'; ctx.fillText(text, at.x, at.y);
+  });
 }
 
 /**

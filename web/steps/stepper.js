@@ -10,6 +10,19 @@ import { describeCurveSplit } from './curve-events.js';
 
 const fmt = (v) => (Math.abs(v) >= 1e4 || (Math.abs(v) < 1e-3 && v !== 0) ? v.toExponential(3) : Number(v.toFixed(4)).toString());
 
+/**
+ * a and b, each as fmt gives it, with more digits when fewer would make a > b read as equal (or
+ * reversed): "area 0.0010004 > max 0.001", never "area 0.001 > max 0.001".
+ */
+export function fmtCompared(a, b) {
+  if (a === b) return [fmt(a), fmt(b)];
+  for (let digits = 4; digits <= 17; digits++) {
+    const [fa, fb] = [fmt(a), fmt(b)].map((text, i) => (digits === 4 ? text : Number([a, b][i].toPrecision(digits)).toString()));
+    if (Math.sign(Number(fa) - Number(fb)) === Math.sign(a - b)) return [fa, fb];
+  }
+  return [String(a), String(b)];
+}
+
 /** The smallest angle, in degrees, of the triangle of vertices i, j, k of points. */
 function smallestAngle(points, i, j, k) {
   const corner = (a, b, c) => {
@@ -18,6 +31,12 @@ function smallestAngle(points, i, j, k) {
     return Math.atan2(Math.abs(ux * vy - uy * vx), ux * vx + uy * vy);
   };
   return Math.min(corner(i, j, k), corner(j, k, i), corner(k, i, j)) * 180 / Math.PI;
+}
+
+/** An angle under the bound to two decimals, or more when two would round it up to the bound. */
+function angleBelow(angle, bound) {
+  for (let digits = 2; digits <= 12; digits++) if (Number(angle.toFixed(digits)) < bound) return angle.toFixed(digits);
+  return String(angle);
 }
 
 /** The area of the triangle of vertices i, j, k of points. */
@@ -35,9 +54,12 @@ function area(points, i, j, k) {
 export function splitReason(points, i, j, k, context) {
   const angle = smallestAngle(points, i, j, k);
   const bound = context?.minAngle ?? 0;
-  if (angle < bound) return `skinny (smallest angle ${angle.toFixed(2)}° < bound ${bound}°)`;
+  if (angle < bound) return `skinny (smallest angle ${angleBelow(angle, bound)}° < bound ${bound}°)`;
   const a = area(points, i, j, k);
-  if (context?.maxArea > 0 && a > context.maxArea) return `too large (area ${fmt(a)} > max ${fmt(context.maxArea)})`;
+  if (context?.maxArea > 0 && a > context.maxArea) {
+    const [area, max] = fmtCompared(a, context.maxArea);
+    return `too large (area ${area} > max ${max})`;
+  }
   if (context?.regions?.some((r) => r.maxArea > 0)) return `too large for its region's max area (area ${fmt(a)}; smallest angle ${angle.toFixed(2)}°)`;
   return `(smallest angle ${angle.toFixed(2)}°)`;
 }
@@ -139,7 +161,7 @@ export class Stepper {
     this.el.scrub.value = String(this.index);
     this.el.info.textContent = count === 0
       ? 'No refinement events: the input already meets the bounds.'
-      : `Step ${this.index} of ${count}: ${this.index === 0
+      : `Step ${this.index.toLocaleString('en-US')} of ${count.toLocaleString('en-US')}: ${this.index === 0
         ? 'the constrained Delaunay triangulation of the input, before refinement.'
         : describeEvent(this.events, this.index - 1, this.context)}`;
     if (notify) this.onChange(this.index);

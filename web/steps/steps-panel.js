@@ -36,10 +36,11 @@ export function createStepsPanel({ app, renderer, meshPanel, scheduleDraw, write
     const { vertices, triangles, minAngle, maxAngle } = mesh.stats;
     const summary = `${vertices.toLocaleString('en-US')} vertices, ` +
       `${triangles.toLocaleString('en-US')} triangles, smallest angle ${minAngle.toFixed(2)}°`;
-    $('step-mesh').textContent = `Mesh at step ${k}: ${summary}`;
+    const at = k.toLocaleString('en-US');
+    $('step-mesh').textContent = `Mesh at step ${at}: ${summary}`;
     // The panel and the status line speak of the mesh on screen: this step's.
     meshPanel.showStep(mesh, k, stepper.count);
-    setStatus(`Step ${k} of ${stepper.count}: ${summary}${k === stepper.count ? ' (the final mesh)' : ''}.`, 'info');
+    setStatus(`Step ${at} of ${stepper.count.toLocaleString('en-US')}: ${summary}${k === stepper.count ? ' (the final mesh)' : ''}.`, 'info');
     document.body.dataset.stepShown = String(k);
     const events = app.mesh.events;
     let id = null;
@@ -62,7 +63,7 @@ export function createStepsPanel({ app, renderer, meshPanel, scheduleDraw, write
     stageWanted = null;
     delete document.body.dataset.stepShown;
     writeLinkSoon();
-    $('step-mesh').textContent = `Mesh at step ${k}: meshing…`;
+    $('step-mesh').textContent = `Mesh at step ${k.toLocaleString('en-US')}: meshing…`;
     replay.show(k);
     scheduleDraw();
   });
@@ -154,6 +155,16 @@ export function createStepsPanel({ app, renderer, meshPanel, scheduleDraw, write
     hostRequest = null;
   }
 
+  /**
+   * A drawing the host sent (ruppert:load): step mode off, whatever an earlier preset or step
+   * left, so that a load gives the same page on every frame; a later ruppert:step turns it on.
+   * Meshing again is the caller's.
+   */
+  function leave() {
+    setMode(false);
+    restart(false);
+  }
+
   /** A new mesh (with its trace in step mode) of the request's input and options. */
   function meshed(mesh, request) {
     replay.reset(request.plc, request.options, app.stepMode ? mesh : null);
@@ -217,6 +228,6 @@ export function createStepsPanel({ app, renderer, meshPanel, scheduleDraw, write
     get context() { return stepper.context; },
     /** The preset's stages (a function of the trace, presets.js), or null. */
     setStages(fn) { stagesOf = fn; },
-    turnOn, restart, meshed, clear, showPending, hostStep, shortcut,
+    turnOn, restart, leave, meshed, clear, showPending, hostStep, shortcut,
   };
 }
