@@ -99,6 +99,13 @@ export interface TriangulateOptions {
    * triangles of the same PLC's 33-degree mesh (native CLI, the same PLCs).
    */
   minAngle?: number;
+  /**
+   * Largest angle in degrees, in [0, 180]: 0 or absent for none, else above 60 and below 180 (any
+   * such value goes with any minAngle). Default 0. No triangle gets a larger angle outside the
+   * chapter's exemptions (in small input angles, on seditious edges); where refinement stops short,
+   * complete is false and reasons say what remains.
+   */
+  maxAngle?: number;
   /** Global upper bound on triangle area; 0 or absent: none. */
   maxArea?: number;
   /** Budget of Steiner vertices; default automatic. Running out sets complete = false. */

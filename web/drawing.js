@@ -11,8 +11,8 @@
 //                                every export; absent from older drawings (all 0)
 //   curves   [{ type: 'arc' | 'bezier', from, to, center | controls, marker? }]  (editing/curve-data.js;
 //            absent from older drawings: none)
-//   options  { minAngle, maxArea, placement, maxSteiner, variant, encroachment }
-//            maxArea/maxSteiner: null = none/automatic; variant 'cdt' | 'box'; encroachment 'lens' | 'disk'
+//   options  { minAngle, maxAngle, maxArea, placement, maxSteiner, variant, encroachment }
+//            maxAngle/maxArea/maxSteiner: null = none/automatic; variant 'cdt' | 'box'; encroachment 'lens' | 'disk'
 import { OPTIONS } from '../wasm/dist/names.js';
 import { boundsOf, hasBounds, includePoint } from './geometry/bounds.js';
 import {
@@ -45,9 +45,9 @@ for (const id of PAGE_FLAGS) {
 /** Options that turn the page flags of those ids on, for presets. */
 export const flagOptions = (...ids) => Object.fromEntries(ids.map((id) => [flagOption(id), true]));
 
-// maxArea and maxSteiner: null (none, automatic) where the package's default means the same.
+// maxAngle, maxArea and maxSteiner: null (none, automatic) where the package's default means the same.
 export const DEFAULT_OPTIONS = Object.freeze({
-  minAngle: PACKAGE_OPTIONS.minAngle.default, maxArea: null, placement: PACKAGE_OPTIONS.placement.default,
+  minAngle: PACKAGE_OPTIONS.minAngle.default, maxAngle: null, maxArea: null, placement: PACKAGE_OPTIONS.placement.default,
   maxSteiner: null, variant: PACKAGE_OPTIONS.variant.default, encroachment: PACKAGE_OPTIONS.encroachment.default,
   ...Object.fromEntries(PAGE_FLAGS.map((id) => [flagOption(id), PACKAGE_OPTIONS[flagOption(id)].default])),
   // Curves' largest distance from their boundary edges; 0: the core's automatic 1e-3 of the diagonal.
@@ -105,6 +105,7 @@ export function toMeshOptions(d, { trace = false } = {}) {
     trace,
   };
   if (o.maxArea > 0) options.maxArea = o.maxArea;
+  if (o.maxAngle > 0) options.maxAngle = o.maxAngle;
   if (Number.isInteger(o.maxSteiner) && o.maxSteiner >= 0) options.maxSteiner = o.maxSteiner;
   for (const id of PAGE_FLAGS) if (o[flagOption(id)] === true) options[flagOption(id)] = true;
   if (o.curveTolerance > 0) options.curveTolerance = o.curveTolerance;

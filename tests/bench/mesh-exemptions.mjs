@@ -5,7 +5,8 @@
 //   * seditious: its shortest edge joins two vertices inserted on two different input segments that
 //     meet (at a shared endpoint or where they cross) at under 45 degrees, at the same distance from
 //     where they meet (one concentric shell).
-// nonExemptMinAngle() returns the smallest angle over the other triangles: what the bound must hold on.
+// nonExemptMinAngle() returns the smallest angle over the other triangles: what the bound must hold on
+// (and the largest angle over them, for maxAngle, which has the same exemptions).
 
 const SEGMENT_SPLIT = 1;  // VertexKind.SegmentSplit in ruppert.h
 
@@ -75,8 +76,9 @@ class ExemptionJudge {
 }
 
 // mesh: { points, triangles, segments, segmentIds, vertexKinds }; plc: { points, segments } (the
-// input, unrepaired: the families need no repair). Returns { minAngle, exempt } where minAngle is
-// the smallest angle of a non-exempt triangle (180 when there is none) and exempt counts the others.
+// input, unrepaired: the families need no repair). Returns { minAngle, maxAngle, exempt } where
+// minAngle and maxAngle are the smallest and largest angles of non-exempt triangles (180 and 0 when
+// there is none) and exempt counts the others.
 export function nonExemptMinAngle(mesh, plc) {
   const judge = new ExemptionJudge(mesh, plc);
   const t = mesh.triangles;
@@ -84,6 +86,7 @@ export function nonExemptMinAngle(mesh, plc) {
   const v = [0, 0, 0];
   const xy = new Float64Array(6);
   let minAngle = 180;
+  let maxAngle = 0;
   let exempt = 0;
   for (let k = 0; k < t.length; k += 3) {
     for (let i = 0; i < 3; i++) {
@@ -93,13 +96,15 @@ export function nonExemptMinAngle(mesh, plc) {
     }
     let corner = 0;
     let smallest = 180;
+    let largest = 0;
     for (let i = 0; i < 3; i++) {
       const a = (i + 1) % 3, b = (i + 2) % 3;
       const angle = cornerDegrees(xy[2 * i], xy[2 * i + 1], xy[2 * a], xy[2 * a + 1], xy[2 * b], xy[2 * b + 1]);
       if (angle < smallest) { smallest = angle; corner = i; }
+      largest = Math.max(largest, angle);
     }
     if (judge.nestled(corner, v) || judge.seditious(v, xy)) exempt++;
-    else if (smallest < minAngle) minAngle = smallest;
+    else minAngle = Math.min(minAngle, smallest), maxAngle = Math.max(maxAngle, largest);
   }
-  return { minAngle, exempt };
+  return { minAngle, maxAngle, exempt };
 }

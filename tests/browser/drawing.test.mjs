@@ -251,6 +251,27 @@ test('page flags: each a checkbox bound to its package option, in links and in t
   }
 });
 
+test('max angle: a field of the Parameters panel, in links and in the mesher\'s options', async () => {
+  assert.equal(DEFAULT_OPTIONS.maxAngle, null, 'none by default');
+  assert.equal('maxAngle' in toMeshOptions(emptyDrawing()), false, 'none is left to the package\'s default');
+  const bounded = emptyDrawing();
+  bounded.options.maxAngle = 100;
+  assert.equal(toMeshOptions(bounded).maxAngle, 100);
+  assert.equal(decodeDrawing(`#${encodeDrawing(bounded)}`).options.maxAngle, 100, 'it survives a link');
+  assert.equal(decodeDrawing(`#${encodeDrawing(emptyDrawing())}`).options.maxAngle, null);
+  // A value the mesher refuses is not taken: the field says so and the option stays as it was.
+  await page.fill('#max-angle', '50');
+  await page.locator('#max-angle').dispatchEvent('change');
+  assert.equal(await page.getAttribute('#max-angle', 'aria-invalid'), 'true');
+  await page.fill('#max-angle', '100');
+  await page.locator('#max-angle').dispatchEvent('change');
+  assert.equal(await page.getAttribute('#max-angle', 'aria-invalid'), null);
+  assert.equal(await settle(page), 'done');
+  await page.fill('#max-angle', '');
+  await page.locator('#max-angle').dispatchEvent('change');
+  assert.equal(await settle(page), 'done');
+});
+
 test('no console errors', () => {
   assert.deepEqual(errors, []);
 });

@@ -788,6 +788,12 @@ void checkMeasures(const Scaled& s, const ValidateOptions& o, Problems& out) {
         out.add("triangle ", t, " (", s.v(t, 0), ", ", s.v(t, 1), ", ", s.v(t, 2), ") has a ", fmt(angle),
                 " degree angle < ", o.minAngle);
     }
+    if (o.maxAngle > 0) {
+      const double angle = triangleMaxAngleDeg(m, std::uint32_t(t));
+      if (angle > o.maxAngle + o.angleTolDeg && !(o.angleExempt && o.angleExempt(m, std::uint32_t(t))))
+        out.add("triangle ", t, " (", s.v(t, 0), ", ", s.v(t, 1), ", ", s.v(t, 2), ") has a ", fmt(angle),
+                " degree angle > ", o.maxAngle);
+    }
     if (o.maxArea > 0) {
       const double area = triangleArea(m, t);
       if (area > o.maxArea * (1 + o.areaRelTol) && !(o.areaExempt && o.areaExempt(m, std::uint32_t(t))))
@@ -871,6 +877,14 @@ double triangleMinAngleDeg(const Mesh& mesh, std::uint32_t t) {
   double smallest = 180;
   for (int i = 0; i < 3; ++i) smallest = std::min(smallest, cornerAngle(p[i], p[(i + 1) % 3], p[(i + 2) % 3]));
   return smallest * 180 / kPi;
+}
+
+double triangleMaxAngleDeg(const Mesh& mesh, std::uint32_t t) {
+  const double* p[3];
+  for (int i = 0; i < 3; ++i) p[i] = &mesh.points[2 * std::size_t(mesh.triangles[3 * std::size_t(t) + i])];
+  double largest = 0;
+  for (int i = 0; i < 3; ++i) largest = std::max(largest, cornerAngle(p[i], p[(i + 1) % 3], p[(i + 2) % 3]));
+  return largest * 180 / kPi;
 }
 
 bool nestledInInputAngle(const Mesh& mesh, std::uint32_t t) {

@@ -40,6 +40,9 @@ struct ValidateOptions {
   double minAngle = 0;
   double angleTolDeg = 1e-7;
   std::function<bool(const ruppert::Mesh&, std::uint32_t triangle)> angleExempt;
+  // When > 0: every triangle's largest angle must be <= maxAngle degrees (plus angleTolDeg), unless
+  // angleExempt(mesh, t) says so (the same exemptions as for minAngle).
+  double maxAngle = 0;
 
   // When > 0: every triangle's area must be <= maxArea * (1 + areaRelTol), unless areaExempt says so.
   double maxArea = 0;
@@ -66,6 +69,7 @@ std::vector<std::string> findNearDuplicates(const ruppert::Mesh& mesh, const Val
 // Helpers used by tests.
 double meshArea(const ruppert::Mesh& mesh);                           // sum of triangle areas
 double triangleMinAngleDeg(const ruppert::Mesh& mesh, std::uint32_t t);  // smallest angle of t
+double triangleMaxAngleDeg(const ruppert::Mesh& mesh, std::uint32_t t);  // largest angle of t
 // §6.6, judged from the output alone: t's smallest angle sits between two subsegments meeting at
 // its vertex (an input angle or a crossing), so no Steiner point can improve it.
 bool nestledInInputAngle(const ruppert::Mesh& mesh, std::uint32_t t);

@@ -1,7 +1,8 @@
 // libFuzzer target: bytes -> a small PLC and options -> triangulate -> the validator.
 //
 // Input layout (missing bytes read as 0, so every byte string is an input):
-//   byte 0   minimum angle: value % 46 degrees (0..45)
+//   byte 0   minimum angle: value % 46 degrees (0..45); maximum angle: kMaxAngles[value / 46]
+//            (none below 46, so inputs written before it keep their meaning)
 //   byte 1   global max area: 0 = none, else (bounding-box area) / value
 //   byte 2   flags: bit 0 circumcenter placement, bit 1 convex hull, bit 2 auto holes,
 //            bit 3 petal placement (unless bit 0), bit 7 off-centers (unless bits 0, 3; else the
@@ -35,6 +36,10 @@
 #include "plc_invariants.h"
 
 namespace {
+
+// Options::maxAngle by byte 0 / 46: none, then bounds from acute (hard: the Steiner budget ends
+// many runs) to loose.
+constexpr double kMaxAngles[6] = {0, 80, 90, 100, 120, 150};
 
 // 3000, not more: the judge's overlap check slows down on meshes full of flat needles (a refinement
 // stopped at its budget in fans around collinear vertices). At 5000 one such mesh took 3.3 s to make
@@ -182,8 +187,8 @@ void dumpPlc(const ruppert::Plc& plc, const ruppert::Options& o) {
   if (!path) return;
   std::FILE* f = std::fopen(path, "w");
   if (!f) return;
-  std::fprintf(f, "# options: minAngle %.17g maxArea %.17g placement %s convexHull %d autoHoles %d maxSteiner %llu\n",
-               o.minAngle, o.maxArea, ruppert::enumName(o.placement),
+  std::fprintf(f, "# options: minAngle %.17g maxAngle %.17g maxArea %.17g placement %s convexHull %d autoHoles %d maxSteiner %llu\n",
+               o.minAngle, o.maxAngle, o.maxArea, ruppert::enumName(o.placement),
                o.convexHull, o.autoHoles, static_cast<unsigned long long>(o.maxSteiner));
   std::fprintf(f, "%zu 2 0 0\n", plc.points.size() / 2);
   for (std::size_t i = 0; i < plc.points.size() / 2; ++i)
@@ -210,7 +215,9 @@ void dumpPlc(const ruppert::Plc& plc, const ruppert::Options& o) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   Bytes in(data, size);
   ruppert::Options o;
-  o.minAngle = in.byte() % 46;
+  const std::uint8_t angleByte = in.byte();
+  o.minAngle = angleByte % 46;
+  o.maxAngle = kMaxAngles[angleByte / 46];
   const std::uint8_t areaSelector = in.byte();
   const std::uint8_t flags = in.byte();
   const double scale = std::ldexp(1.0, static_cast<std::int8_t>(in.byte()));
@@ -255,8 +262,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (ruppert_fuzz::asksNoRefinement(plc, o)) checkOnlyCurveVertices(mesh, plc, problems);
   }
   if (!problems.empty()) {
-    std::fprintf(stderr, "minAngle %g maxArea %g placement %d convexHull %d autoHoles %d complete %d\n", o.minAngle,
-                 o.maxArea, static_cast<int>(o.placement), o.convexHull, o.autoHoles, mesh.complete);
+    std::fprintf(stderr, "minAngle %g maxAngle %g maxArea %g placement %d convexHull %d autoHoles %d complete %d\n",
+                 o.minAngle, o.maxAngle, o.maxArea, static_cast<int>(o.placement), o.convexHull, o.autoHoles, mesh.complete);
     std::fprintf(stderr, "%s\n", ruppert_test::describeProblems(problems).c_str());
     ruppert_fuzz::finding("invalid mesh");
   }

@@ -16,7 +16,7 @@ namespace ruppert_fuzz {
 
 // Whether nothing asks for refinement (ruppert.h, Options::minAngle).
 inline bool asksNoRefinement(const ruppert::Plc& plc, const ruppert::Options& o) {
-  if (o.minAngle > 0 || o.maxArea > 0 || o.sizeFunction) return false;
+  if (o.minAngle > 0 || o.maxAngle > 0 || o.maxArea > 0 || o.sizeFunction) return false;
   for (const ruppert::Region& r : plc.regions)
     if (r.maxArea > 0) return false;
   return true;
@@ -59,7 +59,7 @@ inline std::vector<std::string> judgeMesh(const ruppert::Mesh& original, const r
   ruppert::Mesh mesh = original;
   ruppert::Plc plc = input;
   ruppert::Options o;
-  o.minAngle = options.minAngle, o.maxArea = options.maxArea;
+  o.minAngle = options.minAngle, o.maxAngle = options.maxAngle, o.maxArea = options.maxArea;
   scaleBy(unitScaleShift(mesh), mesh, plc, o);
   ruppert_test::ValidateOptions v;
   v.input = &plc;
@@ -70,10 +70,10 @@ inline std::vector<std::string> judgeMesh(const ruppert::Mesh& original, const r
     return problems;
   }
   v.expectNoSteiner = isPlainCdt(plc, options);
-  if (mesh.complete && o.minAngle > 0) {
+  if (mesh.complete && (o.minAngle > 0 || o.maxAngle > 0)) {
     // The chapter's exemptions, each judged per triangle from the mesh and the input.
     const auto seditious = ruppert_test::seditiousTest(mesh, plc);
-    v.minAngle = o.minAngle;
+    v.minAngle = o.minAngle, v.maxAngle = o.maxAngle;
     v.angleTolDeg = 1e-6;
     v.angleExempt = [seditious](const ruppert::Mesh& m, std::uint32_t t) {
       return ruppert_test::nestledInInputAngle(m, t) || seditious(m, t);

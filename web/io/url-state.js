@@ -4,7 +4,8 @@
 //   { "v": 1, "p": [x0, y0, ...], "s": [a0, b0, ...], "m": [marker per segment] (only if any), "h": [hx0, hy0, ...],
 //     "r": [[x, y, attribute, maxArea], ...],
 //     "o": [minAngle, maxArea, "o" | "c", maxSteiner, "c" | "b", "l" | "d", page flag bits (only if any is on)],
-//     "c": [curve, ...] (only if any: editing/curve-data.js), "t": curveTolerance (only if not 0) }
+//     "c": [curve, ...] (only if any: editing/curve-data.js), "t": curveTolerance (only if not 0),
+//     "a": maxAngle (only if set) }
 //
 // maxArea 0 = none, maxSteiner -1 = automatic, "o"/"c"/"p"/"t" = off-center / circumcenter / petal / optimal placement,
 // "c"/"b" = CDT / bounding-box variant, "l"/"d" = diametral lens / disk encroachment. The last two
@@ -54,6 +55,7 @@ export function encodeDrawing(d) {
       ...(flags ? [flags] : [])],
     ...encodeCurves(d),
     ...(o.curveTolerance > 0 ? { t: o.curveTolerance } : {}),
+    ...(o.maxAngle > 0 ? { a: o.maxAngle } : {}),
   };
   return `d=${toBase64Url(JSON.stringify(compact))}`;
 }
@@ -95,6 +97,8 @@ export function decodeDrawing(hash) {
     ...Object.fromEntries(PAGE_FLAGS.map((id, k) => [flagOption(id), Number.isInteger(flagBits) && ((flagBits >> k) & 1) === 1])),
     // Only when the link has one (links without curves read as before; absent means automatic).
     ...(typeof data.t === 'number' && data.t > 0 && Number.isFinite(data.t) ? { curveTolerance: data.t } : {}),
+    // Only when the link has one; a value the mesher refuses reads as none.
+    maxAngle: typeof data.a === 'number' && data.a > 60 && data.a < 180 ? data.a : null,
   };
   const curves = decodeCurves(data.c, n);
   return { points, segments, segmentMarkers, curves, holes, regions, options };

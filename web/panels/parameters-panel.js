@@ -1,4 +1,4 @@
-// The Parameters panel: min angle (slider and number), max area, Steiner placement, algorithm,
+// The Parameters panel: min angle (slider and number), max angle, max area, Steiner placement, algorithm,
 // encroachment, Steiner budget, the region seed fields (for new seeds, or the selected one) and the
 // selected segment's marker.
 // Each field writes app.drawing.options and reports the change; sync() shows a drawing's options.
@@ -67,8 +67,9 @@ export function createParametersPanel({ app, editor, changed }) {
     minAngleRange.value = String(o.minAngle);
     minAngleNumber.value = String(o.minAngle);
     $('min-angle-warning').hidden = !pastPractical(o);
+    $('max-angle').value = o.maxAngle > 0 ? String(o.maxAngle) : '';
     $('max-area').value = o.maxArea > 0 ? String(o.maxArea) : '';
-    for (const id of ['max-area', 'max-steiner', 'curve-tolerance']) $(id).removeAttribute('aria-invalid');
+    for (const id of ['max-angle', 'max-area', 'max-steiner', 'curve-tolerance']) $(id).removeAttribute('aria-invalid');
     $('placement').value = o.placement;
     $('max-steiner').value = Number.isInteger(o.maxSteiner) ? String(o.maxSteiner) : '';
     $('variant').value = o.variant ?? DEFAULT_OPTIONS.variant;
@@ -134,6 +135,18 @@ export function createParametersPanel({ app, editor, changed }) {
       changed(true);
     });
   }
+  // Empty (or 0) for none; otherwise the mesher takes only values above 60 and below 180.
+  $('max-angle').addEventListener('change', () => {
+    const value = readNumber($('max-angle'));
+    if (value !== null && value !== 0 && !(value > 60 && value < 180)) {
+      $('max-angle').setAttribute('aria-invalid', 'true');
+      setStatus('Max angle must be above 60 and below 180 degrees (empty: none).', 'error');
+      return;
+    }
+    $('max-angle').removeAttribute('aria-invalid');
+    app.drawing.options.maxAngle = value !== null && value > 0 ? value : null;
+    changed(true);
+  });
   for (const name of ['placement', 'variant', 'encroachment']) {
     $(name).addEventListener('change', () => {
       app.drawing.options[name] = $(name).value;

@@ -37,6 +37,17 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 //                below 34). Above 34, vertices on segments may also slide along them
 //                (segment_slide.h). A miss costs the attempts up to their caps: on the generated
 //                shape families at 40 degrees at most 0.8 s natively.
+//   maxAngle     degrees; 0: no bound; else above 60 and below 180 (checked by triangulate(): the
+//                table's range is [0, 180]). No triangle gets a larger angle, outside the §6.6
+//                exemptions (nestled in a small input angle, seditious shortest edge), whatever
+//                minAngle is: any bound above 60 is compatible with any minAngle (the equilateral
+//                triangle meets both), and one at or above 180 - 2 minAngle changes nothing (the
+//                smallest angle bound implies it). A triangle over it that meets minAngle is
+//                fixed by moving one of its free corners (or sliding one along its segment) where
+//                every triangle around it meets both bounds, else by inserting the best of a few
+//                points near its longest edge, else its circumcenter (rejected for an encroached
+//                subsegment, which is split instead): refine_wide.cpp. Not proved to terminate:
+//                the Steiner budget's guard ends it and reports what remains, as for minAngle.
 //   maxArea      <= 0: no global area bound.
 //   maxSteiner   kAutoSteinerBudget: no fixed count; refinement stops only once its vertices
 //                exceed a multiple of the chapter's size measure (§6.5), i.e. when it is not
@@ -57,6 +68,9 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
   X(minAngle, "--min-angle DEG", 30.0, 0, 60, "degrees",                                                \
     "smallest angle to reach, {min}..{max} (default {default}); above 34, where out of reach: the best "  \
     "mesh reached (at least 33 degrees), marked incomplete")                                             \
+  X(maxAngle, "--max-angle DEG", 0.0, 0, 180, "degrees",                                                 \
+    "largest angle allowed, above 60 and below 180 (default 0: no bound), section 6.6's exemptions "      \
+    "aside; where out of reach, the mesh is marked incomplete")                                          \
   X(maxArea, "--max-area A", 0.0, 0, kUnbounded, "area",                                                 \
     "largest triangle area (default: no bound); --min-angle 0 without --max-area gives the plain "        \
     "constrained Delaunay triangulation")                                                                \

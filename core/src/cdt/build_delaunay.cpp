@@ -23,7 +23,7 @@ bool refinementRequested(const MeshState& m) {
   bool regionArea = false;
   for (const Region& r : m.input.regions) regionArea = regionArea || r.maxArea > 0;
   const bool oldMeshArea = m.oldMesh != nullptr && m.oldMesh->hasBounds();
-  return o.minAngle > 0 || o.maxArea > 0 || regionArea || oldMeshArea || static_cast<bool>(o.sizeFunction);
+  return o.minAngle > 0 || o.maxAngle > 0 || o.maxArea > 0 || regionArea || oldMeshArea || static_cast<bool>(o.sizeFunction);
 }
 
 void buildDelaunay(MeshState& m) {

@@ -36,6 +36,12 @@ void checkOptions(const Options& o) {
   using Angle = option::minAngle;
   if (!(o.minAngle >= Angle::low && o.minAngle <= Angle::high))
     fail(ErrorCode::InvalidOption, "minAngle = " + formatNumber(o.minAngle) + " is outside [0, 60] degrees");
+  // Any maxAngle above 60 degrees is compatible with any minAngle up to 60: the equilateral
+  // triangle meets both. At or below 60 only equilateral triangles would do, which no domain with
+  // another angle can be cut into.
+  if (!(o.maxAngle == 0 || (o.maxAngle > 60 && o.maxAngle < 180)))
+    fail(ErrorCode::InvalidOption,
+         "maxAngle = " + formatNumber(o.maxAngle) + " must be above 60 and below 180 degrees (or 0 for no bound)");
   if (std::isnan(o.maxArea) || o.maxArea < 0)
     fail(ErrorCode::InvalidOption,
          "maxArea = " + formatNumber(o.maxArea) + " must be a positive area (or 0 for no bound)");

@@ -89,10 +89,17 @@ void Refiner::checkTriangle(std::uint32_t s) {
   const double bound = maxAreaAt(s);
   const bool large = bound > 0 && q.area > bound;
   const bool skinny = isSkinny(q);
-  if (!skinny && !large) return;
-  // The queue's key: the squared shortest edge of a skinny triangle, the area of a too-large one.
-  const double key = skinny ? std::min({sq(p1, p2), sq(p2, p0), sq(p0, p1)}) : q.area;
-  bad_.push(t_, s, skinny, key, q.sin2MinAngle);
+  // A wide triangle (over maxAngle) is queued with the skinny ones: both are shape defects, fixed
+  // smallest feature first, so that the mesh grades outwards from them.
+  const bool wide = !skinny && isWide(p0, p1, p2);
+  if (!skinny && !large && !wide) return;
+  // The queue's key: the squared shortest edge of a skinny or wide triangle, the area of a too-large one.
+  const double key = skinny || wide ? std::min({sq(p1, p2), sq(p2, p0), sq(p0, p1)}) : q.area;
+  bad_.push(t_, s, skinny || wide, key, q.sin2MinAngle);
+}
+
+bool Refiner::isWide(const double* p0, const double* p1, const double* p2) const {
+  return cosMaxAngle_ > -1 && largestAngleCos(p0, p1, p2) < cosMaxAngle_;
 }
 
 // Checked before every insertion, so that a budget of k inserts at most k vertices (0: none).

@@ -22,14 +22,15 @@ Refiner::Unmet Refiner::countUnmet() const {
     const TriangleQuality q = qualityAt(s);
     const double bound = maxAreaAt(s);
     if (bound > 0 && q.area > bound * (1 + 1e-9)) ++u.large;
-    if (!isSkinny(q)) {
-      u.minSin2 = std::min(u.minSin2, q.sin2MinAngle);
-      continue;
-    }
-    const TriangleShape sh = shapeOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
+    const double* p[3] = {t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2])};
+    const bool skinny = isSkinny(q);
+    if (!skinny) u.minSin2 = std::min(u.minSin2, q.sin2MinAngle);
+    if (!skinny && !isWide(p[0], p[1], p[2])) continue;
+    const TriangleShape sh = shapeOf(p[0], p[1], p[2]);
     if (nestledInInputAngle(s, sh)) ++u.nestled;
     else if (seditious(s, sh)) ++u.sedition;
-    else ++u.otherSkinny, u.minSin2 = std::min(u.minSin2, q.sin2MinAngle);
+    else if (skinny) ++u.otherSkinny, u.minSin2 = std::min(u.minSin2, q.sin2MinAngle);
+    else ++u.wide;
   }
   return u;
 }
@@ -72,7 +73,7 @@ void Refiner::finish() {
   auto add = [&](ReasonKind k, std::uint64_t n, const std::string& msg) {
     out_.reasons.push_back(Reason{k, n, msg});
   };
-  const std::uint64_t unmet = u.otherSkinny + u.large;
+  const std::uint64_t unmet = u.otherSkinny + u.large + u.wide;
   if (cancelled_)
     add(ReasonKind::Cancelled, unmet, "refinement was cancelled; " + std::to_string(unmet) +
                                           " triangle(s) do not meet the bounds");
@@ -103,7 +104,8 @@ void Refiner::finish() {
             "or its cavity would wrap around a vertex where the domain touches itself");
   if (u.nestled)
     add(ReasonKind::SmallInputAngle, u.nestled, std::to_string(u.nestled) +
-        " triangle(s) sit in input angles smaller than the bound; no vertex can fix them (section 6.6)");
+        " triangle(s) sit in input angles smaller than the bound (or are wider than maxAngle there); no vertex "
+        "can fix them (section 6.6)");
   if (u.sedition)
     add(ReasonKind::SeditiousEdge, u.sedition, std::to_string(u.sedition) +
         " triangle(s) have a seditious shortest edge between segments meeting at under 45 degrees; "

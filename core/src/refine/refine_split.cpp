@@ -213,19 +213,34 @@ void Refiner::splitTriangle(const BadTriangle& bt) {
   const TriangleShape sh = shapeOf(p[0], p[1], p[2]);
   const TriangleQuality q = qualityOf(p[0], p[1], p[2]);
   const bool skinny = isSkinny(q);
+  // Over maxAngle only (a skinny triangle is fixed as skinny): its circumcenter, which lies beyond
+  // its longest edge, at distance R from its corners and in the cavity of the triangle across that
+  // edge. The fans it makes with the two shorter edges have apex angles twice the angles at the
+  // longest edge's ends, under maxAngle when those are, and it is rejected for an encroached
+  // subsegment (and a subsegment as longest edge) like a skinny triangle's (§6.2).
+  const bool wide = !skinny && isWide(p[0], p[1], p[2]);
   // A moved vertex (relocate) leaves its old triangles' entries current (same vertices) though
   // their shape has changed: such a triangle may now meet the bounds.
-  if (!relocations_.empty() && !skinny && !(maxAreaAt(s) > 0 && q.area > maxAreaAt(s))) return;
-  if (skinny && (nestledInInputAngle(s, sh) || seditious(s, sh))) {
+  if (!relocations_.empty() && !skinny && !wide && !(maxAreaAt(s) > 0 && q.area > maxAreaAt(s))) return;
+  if ((skinny || wide) && (nestledInInputAngle(s, sh) || seditious(s, sh))) {
     const double bound = maxAreaAt(s);
     if (!(bound > 0 && q.area > bound)) return;  // left alone on purpose; counted in finish()
   }
   double target[2];
   VertexKind kind;
-  const double overBound = !skinny && maxAreaAt(s) > 0 && q.area > maxAreaAt(s) ? maxAreaAt(s) : 0;
+  const double overBound = !skinny && !wide && maxAreaAt(s) > 0 && q.area > maxAreaAt(s) ? maxAreaAt(s) : 0;
   if (sh.shortest < 2 * kLengthFloor || !firstChoice(p, sh, skinny, overBound, target, kind)) {
     ++floorHits_;
     return;
+  }
+  if (wide) {
+    // First a move of a free corner (no new triangle), the wide one first; else a better point.
+    const int k = wideCorner(p);
+    const std::uint32_t corners[3] = {bt.a, bt.b, bt.c};
+    if (relocate(corners[k], bt) || pushWideCorner(bt, p, k) || slideWideCorner(corners[k], bt)) return;
+    for (int i = 1; i < 3; ++i)
+      if (relocate(corners[(k + i) % 3], bt) || slideWideCorner(corners[(k + i) % 3], bt)) return;
+    widePoint(bt, p, k, target);
   }
   Location loc;
   bool located = false;
@@ -310,6 +325,12 @@ bool Refiner::relocate(std::uint32_t v, const BadTriangle& bt) {
   if (v < m_.inputCount || (m_.kind[v] != VertexKind::Interior && m_.kind[v] != VertexKind::OffCenter)) return false;
   double x[2];
   if (!mayMove(v) || !optimal_.relocation(mesh_, v, x)) return false;
+  // Under maxAngle, a move that would make a wide triangle is refused.
+  if (cosMaxAngle_ > -1)
+    for (std::uint32_t h : optimal_.star())
+      if (largestAngleCos(t_.pt(t_.origin(h)), t_.pt(t_.dest(h)), x) < cosMaxAngle_ ||
+          qualityOf(t_.pt(t_.origin(h)), t_.pt(t_.dest(h)), x).sin2MinAngle < sin2WideFloor())
+        return false;
   if (m_.attributeCount) reinterpolateMoved(v, x);
   const double from[2] = {t_.xy[2 * v], t_.xy[2 * v + 1]};
   t_.xy[2 * v] = x[0], t_.xy[2 * v + 1] = x[1];

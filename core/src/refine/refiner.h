@@ -74,6 +74,9 @@ class Refiner {
   double theta_;            // the same in radians
   double sin2Theta_;        // sin2Bound(theta_)
   const double sin2Requested_;
+  // cos(Options::maxAngle), lowered by 1e-12 against rounding; -2 without that option (no
+  // triangle is then wide).
+  const double cosMaxAngle_;
   MeshAccess mesh_;         // read-only queries for placements (and the walk)
   PetalPlacement petal_;
   OptimalPlacement optimal_;
@@ -122,6 +125,7 @@ class Refiner {
         theta_(radians(plan.first)),
         sin2Theta_(sin2Bound(theta_)),
         sin2Requested_(sin2Bound(radians(plan.requested))),
+        cosMaxAngle_(m.options->maxAngle > 0 ? std::cos(radians(m.options->maxAngle)) - 1e-12 : -2),
         mesh_(m.tri, m.input, sin2Theta_, lensCos2For(o_, theta_)),
         petal_(o_.placement == Placement::Petal ? theta_ : 0),
         optimal_(theta_, plan.belowBoundGain) {
@@ -195,6 +199,10 @@ class Refiner {
 
   // The one skinniness test everything uses: sin^2 of the smallest angle below sin^2 of the bound.
   bool isSkinny(const TriangleQuality& q) const { return theta_ > 0 && q.sin2MinAngle < sin2Theta_; }
+
+  // Options::maxAngle: whether the triangle's largest angle exceeds it (the law of cosines at the
+  // corner opposite the longest edge; no arctangent).
+  bool isWide(const double* p0, const double* p1, const double* p2) const;
 
   void checkTriangle(std::uint32_t s);
 
@@ -304,6 +312,25 @@ class Refiner {
 
   void splitTriangle(const BadTriangle& bt);
 
+  // ---- maxAngle (refine_wide.cpp) -----------------------------------------------------------------
+  // A better point than the circumcenter for triangle bt, over maxAngle but not skinny: into target,
+  // false if no candidate makes only triangles that meet both bounds.
+  bool widePoint(const BadTriangle& bt, const double* const* p, int k, double target[2]);
+  // Move the wide corner k, a free vertex, away from the midpoint of the edge it faces, by the
+  // first of a few steps after which every triangle of its star meets both bounds. False: none does.
+  bool pushWideCorner(const BadTriangle& bt, const double* const* p, int k);
+  // Slide v, a vertex refinement placed on a segment, along it to where every triangle of its fan
+  // meets both bounds (the largest smallest angle among those places). False: no such place.
+  bool slideWideCorner(std::uint32_t v, const BadTriangle& bt);
+  // sin^2 of the smallest angle a fix of a wide triangle may make (refine_wide.cpp).
+  static constexpr double kSin2WideFloor = 0.11697777844051097;  // sin^2(20 degrees)
+  double sin2WideFloor() const;
+  // The corner with the largest angle (it faces the longest edge).
+  static int wideCorner(const double* const* p);
+  // The smallest sin^2 and the smallest cosine of the largest angle among the triangles inserting x
+  // would make, if x fits (in the domain, destroying bt, encroaching nothing); false if it does not.
+  bool wideCandidate(const BadTriangle& bt, const double* x, double& minSin2, double& maxCos);
+
   // Placement::Optimal (optimal_placement.h): insert the locally optimal point if one meets the bound,
   // else move a free endpoint of the shortest edge. False: neither; the first choice goes ahead.
   bool optimalOrRelocate(const BadTriangle& bt, const double* const* p, const TriangleShape& sh,
@@ -351,7 +378,7 @@ class Refiner {
 
   // ---- result ------------------------------------------------------------------------------------
   struct Unmet {
-    std::uint64_t nestled = 0, sedition = 0, otherSkinny = 0, large = 0;
+    std::uint64_t nestled = 0, sedition = 0, otherSkinny = 0, large = 0, wide = 0;
     double minSin2 = 1;  // over the triangles the bound applies to
   };
   Unmet countUnmet() const;

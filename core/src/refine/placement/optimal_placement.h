@@ -60,6 +60,9 @@ class OptimalPlacement {
   // fan is not such a fan or no point of its kernel meets the bound.
   bool relocation(const MeshAccess& mesh, std::uint32_t v, double x[2]);
   const std::vector<std::uint32_t>& star() const { return star_; }
+  // Whether v has a closed fan of triangles with no subsegment among their edges (at most 64); its
+  // outer half-edges are then in star().
+  bool freeFan(const Triangulation& t, std::uint32_t v) { return closedFreeFan(t, v); }
 
   // After propose() returned UseFirst or None with the mesh unchanged since: whether the first
   // choice fitted (no subsegment in the way, none encroached, not too close to a vertex), and then

@@ -100,6 +100,14 @@ inline bool sizeOffCenter(const double* u, const double* w, const double* cc, do
   return true;
 }
 
+// The cosine of the triangle's largest angle, opposite its longest edge c: (a^2 + b^2 - c^2) / 2ab.
+inline double largestAngleCos(const double* p0, const double* p1, const double* p2) {
+  const double e0 = sq(p1, p2), e1 = sq(p2, p0), e2 = sq(p0, p1);
+  const double longest = std::max({e0, e1, e2});
+  const double shorterProduct = longest == e0 ? e1 * e2 : longest == e1 ? e0 * e2 : e0 * e1;
+  return shorterProduct > 0 ? (e0 + e1 + e2 - 2 * longest) / (2 * std::sqrt(shorterProduct)) : -1;
+}
+
 // Where segments p0-p1 and q0-q1 meet (parameters within [0, 1] on both), into z; false if they
 // are parallel in doubles or do not meet.
 inline bool segmentsMeet(const double* p0, const double* p1, const double* q0, const double* q1, double z[2]) {
