@@ -53,7 +53,8 @@ int BadTriangleQueue::sizeClassOf(double area) {
 void BadTriangleQueue::push(const Triangulation& t, std::uint32_t s, bool skinny, double key, double sin2MinAngle) {
   const auto angleClass =
       static_cast<std::uint8_t>(std::min<double>(kAngleClasses - 1, sin2MinAngle / 0.75 * (kAngleClasses - 1)));
-  const BadTriangle e{s, t.tv[3 * s], t.tv[3 * s + 1], t.tv[3 * s + 2], angleClass};
+  const TriangleSlot& r = t.slot(s);
+  const BadTriangle e{s, r.tv[0], r.tv[1], r.tv[2], angleClass};
   ++queuedByAngle_[angleClass];
   if (skinny) {
     const int k = classOf(key);

@@ -17,7 +17,8 @@ struct BadTriangle {
 
 // Whether a queued entry still describes the triangle in its slot.
 inline bool isCurrent(const Triangulation& t, const BadTriangle& e) {
-  return t.alive(e.slot) && t.tv[3 * e.slot] == e.a && t.tv[3 * e.slot + 1] == e.b && t.tv[3 * e.slot + 2] == e.c;
+  const TriangleSlot& r = t.slot(e.slot);  // (a free slot's corners are kNone)
+  return r.tv[0] == e.a && r.tv[1] == e.b && r.tv[2] == e.c;
 }
 
 // Order: skinny triangles with the shortest shortest-edge first, too-large but shapely ones last
