@@ -36,6 +36,8 @@ std::vector<std::uint32_t> Triangulation::takeCorners(std::uint32_t count) {
     words_[3 * std::size_t(t)] = a, words_[3 * std::size_t(t) + 1] = b, words_[3 * std::size_t(t) + 2] = c;
   }
   words_.resize(3 * std::size_t(count));
+  // The rest of the records' pages would stay the corners' capacity, unused: they go back now.
+  releasePages(words_.data() + words_.size(), (words_.capacity() - words_.size()) * sizeof(std::uint32_t));
   std::vector<std::uint32_t> corners = std::move(words_);
   words_ = {};
   aim();
