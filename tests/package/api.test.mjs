@@ -46,10 +46,13 @@ test('the two-line example from the README meshes a square to the requested qual
 // 157 KB. Then a curve's first pieces halved while an input point lies inside one's hull, over a
 // grid of the input points (two fuzz_mesh findings: a dropped point covered by a later split, a
 // piece point a hair beside an input point on the curve): 156,153 -> 157,554 bytes; 158 KB.
+// Then one record per triangle slot, read through half-edge views that divide by three inline at
+// every access, and the Hilbert order of large meshes' size classes: 157,554 -> 161,091 bytes
+// (native 2-5 M triangle meshes 0.7-0.9x the CPU time before; docs/measurements.md); 162 KB.
 const gzippedSize = (file) => gzipSync(readFileSync(new URL(`./node_modules/ruppert/wasm/dist/${file}`, import.meta.url)), { level: 9 }).length;
-test('the mesher .wasm is at most 158 KB gzipped, the text formats at most 60 KB', () => {
+test('the mesher .wasm is at most 162 KB gzipped, the text formats at most 60 KB', () => {
   const mesher = gzippedSize('ruppert.wasm'), formats = gzippedSize('ruppert-formats.wasm');
-  assert.ok(mesher <= 158000, `ruppert.wasm: ${mesher} bytes gzipped`);
+  assert.ok(mesher <= 162000, `ruppert.wasm: ${mesher} bytes gzipped`);
   assert.ok(formats <= 60000, `ruppert-formats.wasm: ${formats} bytes gzipped`);
 });
 
