@@ -19,7 +19,8 @@ namespace {
 // Slots 0..n-1, each with vertices (3s, 3s+1, 3s+2): enough for the queue, which only reads tv.
 Triangulation slots(std::uint32_t n) {
   Triangulation t;
-  for (std::uint32_t i = 0; i < 3 * n; ++i) t.tv.push_back(i);
+  t.vtri.assign(3 * std::size_t(n), ruppert::detail::kNone);
+  for (std::uint32_t i = 0; i < n; ++i) t.newTriangle(3 * i, 3 * i + 1, 3 * i + 2);
   return t;
 }
 

@@ -50,7 +50,7 @@ std::set<std::array<std::uint32_t, 3>> triangles(const Triangulation& t) {
 
 int nonDelaunayEdges(const Triangulation& t) {
   int bad = 0;
-  for (std::uint32_t h = 0; h < t.tv.size(); ++h) {
+  for (std::uint32_t h = 0; h < 3 * t.slotCount(); ++h) {
     const std::uint32_t s = h / 3, g = t.twin[h];
     if (!t.alive(s) || g == kNone) continue;
     if (incircle(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2]), t.pt(t.apex(g))) > 0) ++bad;

@@ -26,6 +26,19 @@ inline void adviseHugePages(const void* data, std::size_t bytes) {
 #endif
 }
 
+// Hands the whole pages within [data, data + bytes) back to the system (they read as zeros if
+// touched again): memory a vector keeps as capacity but will not use.
+inline void releasePages(const void* data, std::size_t bytes) {
+#if defined(__linux__) && !defined(__EMSCRIPTEN__) && defined(MADV_DONTNEED)
+  constexpr std::uintptr_t kPage = 4096;
+  const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(data) + kPage - 1) & ~(kPage - 1);
+  const std::uintptr_t last = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(kPage - 1);
+  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
+#else
+  (void)data, (void)bytes;
+#endif
+}
+
 // v.reserve(n), the new storage advised before anything touches it.
 template <class Vector>
 void reserveHuge(Vector& v, std::size_t n) {

@@ -21,10 +21,33 @@ void Triangulation::adoptVertices(std::vector<double>&& coordinates, std::size_t
   scratch_.assign(xy.size() / 2, kNone);
 }
 
+std::vector<std::uint32_t> Triangulation::takeSlotScratch() const {
+  std::vector<std::uint32_t> map;
+  reserveHuge(map, slotCount());
+  map.resize(slotCount());
+  return map;
+}
+
+std::vector<std::uint32_t> Triangulation::takeCorners(std::uint32_t count) {
+  // Slot t's corners go to words 3t..3t+2, never past its own record's corners (from word
+  // 10t + 1), so ascending order overwrites only records already read.
+  for (std::uint32_t t = 0; t < count; ++t) {
+    const std::uint32_t a = slots_[t].tv[0], b = slots_[t].tv[1], c = slots_[t].tv[2];
+    words_[3 * std::size_t(t)] = a, words_[3 * std::size_t(t) + 1] = b, words_[3 * std::size_t(t) + 2] = c;
+  }
+  words_.resize(3 * std::size_t(count));
+  // The rest of the records' pages would stay the corners' capacity, unused: they go back now.
+  releasePages(words_.data() + words_.size(), (words_.capacity() - words_.size()) * sizeof(std::uint32_t));
+  std::vector<std::uint32_t> corners = std::move(words_);
+  words_ = {};
+  aim();
+  return corners;
+}
+
 std::uint32_t Triangulation::nextStamp() const {
   stamp_ += 2;  // two values per search: stamp_ = inside the cavity, stamp_ + 1 = tested, outside
   if (stamp_ >= 0xFFFFFFF0u) {
-    std::fill(mark_.begin(), mark_.end(), 0);
+    for (std::uint32_t t = 0; t < slotCount(); ++t) slots_[t].mark = 0;
     stamp_ = 2;
   }
   return stamp_;
@@ -148,34 +171,34 @@ void Triangulation::cavity(const double* p, const Location& loc, std::vector<std
   const std::uint32_t in = nextStamp(), out = in + 1;
   std::uint32_t split = kNone, splitTwin = kNone;
   tris.push_back(loc.tri);
-  mark_[loc.tri] = in;
+  slots_[loc.tri].mark = in;
   if (loc.kind == Location::OnEdge) {
     split = loc.edge;
     splitTwin = twin[split];
     if (splitTwin != kNone) {
       tris.push_back(splitTwin / 3);
-      mark_[splitTwin / 3] = in;
+      slots_[splitTwin / 3].mark = in;
     }
   }
   // The list grows while we scan it: a breadth-first search over the cavity.
   for (std::size_t k = 0; k < tris.size(); ++k) {
     const std::uint32_t t = tris[k];
+    const TriangleSlot& r = slots_[t];
     for (std::uint32_t i = 0; i < 3; ++i) {
       const std::uint32_t h = 3 * t + i;
       if (h == split || h == splitTwin) continue;
-      const std::uint32_t g = twin[h];
-      if (g == kNone || con[h] != kFree) {
+      const std::uint32_t g = r.twin[i];
+      if (g == kNone || r.con[i] != kFree) {
         boundary.push_back(h);
         continue;
       }
-      const std::uint32_t u = g / 3;
-      if (mark_[u] == in) continue;
-      if (mark_[u] != out &&
-          incircle(pt(tv[3 * u]), pt(tv[3 * u + 1]), pt(tv[3 * u + 2]), p) > 0) {
-        mark_[u] = in;
-        tris.push_back(u);
+      const TriangleSlot& n = slots_[g / 3];
+      if (n.mark == in) continue;
+      if (n.mark != out && incircle(pt(n.tv[0]), pt(n.tv[1]), pt(n.tv[2]), p) > 0) {
+        n.mark = in;
+        tris.push_back(g / 3);
       } else {
-        mark_[u] = out;
+        n.mark = out;
         boundary.push_back(h);
       }
     }
@@ -198,14 +221,16 @@ bool Triangulation::fillCavity(std::uint32_t v, const Location& loc, const std::
   sides.clear();
   bool ok = true;
   for (std::uint32_t h : boundary) {
-    const std::uint32_t u = origin(h), w = dest(h);
+    const std::uint32_t t = h / 3, i = h - 3 * t;
+    const TriangleSlot& r = slots_[t];
+    const std::uint32_t u = r.tv[i == 2 ? 0 : i + 1], w = r.tv[i == 0 ? 2 : i - 1];
     // A vertex twice on the boundary (the domain touching itself there) would break the fan.
     if ((checkOrientation && !(orient2d(pt(u), pt(w), p) > 0)) || scratch_[u] != kNone) {
       ok = false;
       break;
     }
     scratch_[u] = 0;
-    sides.push_back({u, w, twin[h], h / 3, con[h]});
+    sides.push_back({u, w, r.twin[i], t, r.con[i]});
   }
   // Every vertex of the cavity must be on its boundary, or the fan would drop it. Exactly Delaunay
   // cavities always pass; a rounded split point a hair from a vertex can take in every triangle
@@ -217,7 +242,7 @@ bool Triangulation::fillCavity(std::uint32_t v, const Location& loc, const std::
   const std::uint32_t edgeOrigin = loc.kind == Location::OnEdge ? origin(loc.edge) : kNone;
   for (std::size_t k = 0; ok && checkOrientation && k < tris.size(); ++k)
     for (std::uint32_t i = 0; i < 3; ++i) {
-      const std::uint32_t x = tv[3 * tris[k] + i];
+      const std::uint32_t x = slots_[tris[k]].tv[i];
       if (scratch_[x] == kNone && x != edgeOrigin) ok = false;
     }
   for (const Side& s : sides) scratch_[s.u] = kNone;
@@ -243,8 +268,9 @@ bool Triangulation::fillCavity(std::uint32_t v, const Location& loc, const std::
     const Side& s = sides[k];
     const std::uint32_t t = reuse > 0 ? refillTriangle(tris[--reuse], v, s.u, s.w) : newTriangle(v, s.u, s.w);
     made[k] = t;
-    link(3 * t, s.outer);
-    con[3 * t] = s.c;
+    slots_[t].twin[0] = s.outer;
+    if (s.outer != kNone) twin[s.outer] = 3 * t;
+    slots_[t].con[0] = s.c;
     scratch_[s.u] = t;
     if (newTris) newTris->push_back(t);
     if (parents) parents->push_back(s.from);
@@ -253,13 +279,14 @@ bool Triangulation::fillCavity(std::uint32_t v, const Location& loc, const std::
   for (std::size_t k = 0; k < sides.size(); ++k) {
     const std::uint32_t t = made[k];
     const std::uint32_t nb = scratch_[sides[k].w];
-    if (nb != kNone) link(3 * t + 1, 3 * nb + 2);
+    if (nb != kNone) slots_[t].twin[1] = 3 * nb + 2, slots_[nb].twin[2] = 3 * t + 1;
   }
   for (const Side& s : sides) scratch_[s.u] = kNone;
   if (splitCon != kFree) {
     for (std::uint32_t t : made) {
-      if (tv[3 * t + 1] == sa || tv[3 * t + 1] == sb) con[3 * t + 2] = splitCon;
-      if (tv[3 * t + 2] == sa || tv[3 * t + 2] == sb) con[3 * t + 1] = splitCon;
+      TriangleSlot& r = slots_[t];
+      if (r.tv[1] == sa || r.tv[1] == sb) r.con[2] = splitCon;
+      if (r.tv[2] == sa || r.tv[2] == sb) r.con[1] = splitCon;
     }
   }
   return true;
@@ -402,7 +429,7 @@ void Triangulation::legalize(std::vector<std::uint32_t>& stack, std::vector<std:
 
 void Triangulation::legalizeAll() {
   std::vector<std::uint32_t> stack;
-  for (std::uint32_t h = 0; h < tv.size(); ++h)
+  for (std::uint32_t h = 0; h < 3 * slotCount(); ++h)
     if (alive(h / 3) && twin[h] != kNone && h < twin[h]) stack.push_back(h);
   legalize(stack);
 }

@@ -42,22 +42,87 @@ struct Location {
   std::uint32_t vertex = kNone;  // OnVertex
 };
 
-class Triangulation {
+// Everything a triangle slot holds, in one record: a cavity search or a fill reads a slot's stamp,
+// corners, neighbors and constraints together, and as separate arrays each of them was its own
+// cache miss on a mesh larger than the cache. The stamp comes first: it is what a search reads first.
+// The records live in an array of 32-bit words (kSlotWords per slot), so that output can compact the
+// corners to the array's front in place and hand the array over as its triangle list.
+struct TriangleSlot {
+  mutable std::uint32_t mark;  // per-slot stamp for cavity search
+  std::uint32_t tv[3];
+  std::uint32_t twin[3];
+  std::int32_t con[3];
+};
+inline constexpr std::size_t kSlotWords = 10;
+static_assert(sizeof(TriangleSlot) == kSlotWords * sizeof(std::uint32_t) && alignof(TriangleSlot) == alignof(std::uint32_t),
+              "a slot record is ten 32-bit words");
+
+// One per-half-edge field of the slot records, indexed by half-edge h = 3t+i like a flat array
+// (field[h] is slot t's field[i]). It points into the records (pointer semantics: a const view still
+// gives a writable element) and is re-aimed by SlotRecords whenever they move.
+template <class T, T (TriangleSlot::*Field)[3]>
+class HalfEdgeField {
+ public:
+  T& operator[](std::uint32_t h) const { return (slots_[h / 3].*Field)[h % 3]; }
+  void aim(TriangleSlot* slots) { slots_ = slots; }
+
+ private:
+  TriangleSlot* slots_ = nullptr;
+};
+
+// The slot records and the three flat views of them (tv, twin, con: see the file's comment), kept
+// aimed at the records through copies and moves.
+class SlotRecords {
+ public:
+  HalfEdgeField<std::uint32_t, &TriangleSlot::tv> tv;
+  HalfEdgeField<std::uint32_t, &TriangleSlot::twin> twin;
+  HalfEdgeField<std::int32_t, &TriangleSlot::con> con;
+
+  SlotRecords() = default;
+  SlotRecords(const SlotRecords& o) : words_(o.words_) { aim(); }
+  SlotRecords(SlotRecords&& o) noexcept : words_(std::move(o.words_)) { aim(), o.aim(); }
+  SlotRecords& operator=(const SlotRecords& o) {
+    words_ = o.words_;
+    aim();
+    return *this;
+  }
+  SlotRecords& operator=(SlotRecords&& o) noexcept {
+    words_ = std::move(o.words_);
+    aim(), o.aim();
+    return *this;
+  }
+  std::uint32_t slotCount() const { return static_cast<std::uint32_t>(words_.size() / kSlotWords); }
+
+ protected:
+  std::vector<std::uint32_t> words_;  // the records' storage
+  TriangleSlot* slots_ = nullptr;     // the records, aimed at words_
+  void aim() {
+    slots_ = reinterpret_cast<TriangleSlot*>(words_.data());
+    tv.aim(slots_), twin.aim(slots_), con.aim(slots_);
+  }
+};
+
+class Triangulation : public SlotRecords {
  public:
   std::vector<double> xy;          // vertex coordinates x0,y0,x1,y1,...
-  std::vector<std::uint32_t> tv;   // 3 per triangle slot
-  std::vector<std::uint32_t> twin; // 3 per triangle slot
-  std::vector<std::int32_t> con;   // 3 per triangle slot
   std::vector<std::uint32_t> vtri; // 1 per vertex
   std::vector<std::uint32_t> freeSlots;
 
   std::uint32_t vertexCount() const { return static_cast<std::uint32_t>(xy.size() / 2); }
-  std::uint32_t slotCount() const { return static_cast<std::uint32_t>(tv.size() / 3); }
-  bool alive(std::uint32_t t) const { return tv[3 * t] != kNone; }
+  bool alive(std::uint32_t t) const { return slots_[t].tv[0] != kNone; }
   const double* pt(std::uint32_t v) const { return &xy[2 * v]; }
-  std::uint32_t origin(std::uint32_t h) const { return tv[next3(h)]; }  // start of half-edge h
-  std::uint32_t dest(std::uint32_t h) const { return tv[prev3(h)]; }    // end of half-edge h
-  std::uint32_t apex(std::uint32_t h) const { return tv[h]; }          // vertex opposite h
+  // Slot t's record: hot loops read a triangle's fields from it directly, where tv[3 * t + i]
+  // would divide the half-edge by three again for each field.
+  const TriangleSlot& slot(std::uint32_t t) const { return slots_[t]; }
+  std::uint32_t origin(std::uint32_t h) const {  // start of half-edge h
+    const std::uint32_t t = h / 3, i = h - 3 * t;
+    return slots_[t].tv[i == 2 ? 0 : i + 1];
+  }
+  std::uint32_t dest(std::uint32_t h) const {  // end of half-edge h
+    const std::uint32_t t = h / 3, i = h - 3 * t;
+    return slots_[t].tv[i == 0 ? 2 : i - 1];
+  }
+  std::uint32_t apex(std::uint32_t h) const { return tv[h]; }  // vertex opposite h
 
   std::uint32_t addVertex(double x, double y);
   // Takes `coordinates` (x0,y0,x1,y1,...) as the first vertices, none in the mesh yet, without
@@ -71,17 +136,18 @@ class Triangulation {
       return refillTriangle(t, a, b, c);
     }
     const std::uint32_t t = slotCount();
-    tv.push_back(a), tv.push_back(b), tv.push_back(c);
-    for (int i = 0; i < 3; ++i) twin.push_back(kNone), con.push_back(kFree);
-    mark_.push_back(0);
+    const std::uint32_t f = static_cast<std::uint32_t>(kFree);
+    words_.insert(words_.end(), {0, a, b, c, kNone, kNone, kNone, f, f, f});
+    aim();
     vtri[a] = vtri[b] = vtri[c] = t;
     return t;
   }
   // Slot t (free, or about to be: a cavity's) becomes the triangle a, b, c with no neighbours and
   // no constraints yet.
   std::uint32_t refillTriangle(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    tv[3 * t] = a, tv[3 * t + 1] = b, tv[3 * t + 2] = c;
-    for (std::uint32_t i = 3 * t; i < 3 * t + 3; ++i) twin[i] = kNone, con[i] = kFree;
+    TriangleSlot& r = slots_[t];
+    r.tv[0] = a, r.tv[1] = b, r.tv[2] = c;
+    for (int i = 0; i < 3; ++i) r.twin[i] = kNone, r.con[i] = kFree;
     vtri[a] = vtri[b] = vtri[c] = t;
     return t;
   }
@@ -89,16 +155,22 @@ class Triangulation {
   // a sixth of its time growing these arrays from empty one doubling at a time).
   void reserve(std::size_t vertices, std::size_t slots) {
     reserveHuge(xy, 2 * vertices), reserveHuge(vtri, vertices), reserveHuge(scratch_, vertices);
-    reserveHuge(tv, 3 * slots), reserveHuge(twin, 3 * slots), reserveHuge(con, 3 * slots), reserveHuge(mark_, slots);
+    reserveHuge(words_, kSlotWords * slots);
+    aim();
   }
-  // Frees what only insertion and search use (the per-slot stamps, the per-vertex fan table).
-  void releaseScratch() { release(mark_), release(scratch_), release(freeSlots); }
-  // The same arrays' memory handed over for output's per-slot and per-vertex maps (their sizes are
-  // the slot and vertex counts; values unspecified): no new pages for them at the output's peak.
-  std::vector<std::uint32_t> takeSlotScratch() { return std::move(mark_); }
+  // Frees what only insertion and search use (the per-vertex fan table, the free-slot list).
+  void releaseScratch() { release(scratch_), release(freeSlots); }
+  // An array for output's per-slot map (its size is the slot count; values unspecified).
+  std::vector<std::uint32_t> takeSlotScratch() const;
+  // The per-vertex table's memory handed over for output's per-vertex map (its size is the vertex
+  // count; values unspecified): no new pages for it at the output's peak.
   std::vector<std::uint32_t> takeVertexScratch() { return std::move(scratch_); }
+  // The corners of slots 0..count-1 (3 per slot) in the records' own memory, which is handed over:
+  // every slot is gone afterwards.
+  std::vector<std::uint32_t> takeCorners(std::uint32_t count);
   void killTriangle(std::uint32_t t) {
-    tv[3 * t] = tv[3 * t + 1] = tv[3 * t + 2] = kNone;
+    TriangleSlot& r = slots_[t];
+    r.tv[0] = r.tv[1] = r.tv[2] = kNone;
     freeSlots.push_back(t);
   }
   void link(std::uint32_t h, std::uint32_t g) {  // make h and g twins (either may be kNone)
@@ -161,7 +233,6 @@ class Triangulation {
   void legalizeAll();
 
  private:
-  mutable std::vector<std::uint32_t> mark_;   // per-slot stamp for cavity search
   mutable std::uint32_t stamp_ = 0;
   std::vector<std::uint32_t> scratch_;        // per-vertex: new triangle whose boundary edge starts there
   mutable std::uint64_t rng_ = 0x9E3779B97F4A7C15ull;

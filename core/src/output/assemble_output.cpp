@@ -113,10 +113,9 @@ std::vector<std::uint32_t> scanTriangles(MeshState& m, Mesh& mesh) {
   return slotToTri;
 }
 
-// mesh.triangles, neighbors and triangleAttributes. The triangulation's vertex array becomes
-// mesh.triangles in place (a triangle's output index is never above its slot) and each array goes
-// as soon as it is read: a CDT of 10^6 points would otherwise hold its triangulation and its
-// output, 72 MB and 64 MB, at once.
+// mesh.triangles, neighbors and triangleAttributes. The output's corners are written over the
+// triangulation's slots in place (a triangle's output index is never above its slot) and copied
+// out of the slot records, which then go; each array goes as soon as it is read.
 void writeTriangleArrays(MeshState& m, const std::vector<std::uint32_t>& slotToTri, Mesh& mesh) {
   Triangulation& t = m.tri;
   const std::uint32_t slots = t.slotCount(), count = mesh.stats.triangles;
@@ -131,9 +130,7 @@ void writeTriangleArrays(MeshState& m, const std::vector<std::uint32_t>& slotToT
       t.tv[3 * o + i] = m.outputMap[t.tv[3 * s + i]];
     }
   }
-  release(t.twin);
-  t.tv.resize(3 * std::size_t(count));
-  mesh.triangles = std::move(t.tv);
+  mesh.triangles = t.takeCorners(count);
   reserveHuge(mesh.triangleAttributes, count);
   if (m.attribute.empty()) {
     mesh.triangleAttributes.assign(count, 0.0);
@@ -170,7 +167,7 @@ Mesh assembleMesh(MeshState& m) {
   const std::uint32_t outVertices = numberVertices(m);
   // Each part of the state goes once read (see writeTriangleArrays).
   const std::vector<std::uint32_t> slotToTri = scanTriangles(m, mesh);
-  release(m.tri.con), release(m.maxArea), release(m.inDomain);
+  release(m.maxArea), release(m.inDomain);
   m.tri.releaseScratch();
   writeVertices(m, outVertices, mesh);
   copyAttributes(m, mesh);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <utility>
 
 namespace ruppert::detail {
 
@@ -53,7 +55,8 @@ int BadTriangleQueue::sizeClassOf(double area) {
 void BadTriangleQueue::push(const Triangulation& t, std::uint32_t s, bool skinny, double key, double sin2MinAngle) {
   const auto angleClass =
       static_cast<std::uint8_t>(std::min<double>(kAngleClasses - 1, sin2MinAngle / 0.75 * (kAngleClasses - 1)));
-  const BadTriangle e{s, t.tv[3 * s], t.tv[3 * s + 1], t.tv[3 * s + 2], angleClass};
+  const TriangleSlot& r = t.slot(s);
+  const BadTriangle e{s, r.tv[0], r.tv[1], r.tv[2], skinny ? 0 : planeKey(t, r.tv[0]), angleClass};
   ++queuedByAngle_[angleClass];
   if (skinny) {
     const int k = classOf(key);
@@ -109,9 +112,71 @@ bool BadTriangleQueue::pop(BadTriangle& out) {
   }
   for (; lowestBucket_ < kBuckets; ++lowestBucket_)
     if (take(buckets_[lowestBucket_], out)) return true;
-  for (; highestSize_ >= 0; --highestSize_)
+  for (; highestSize_ >= 0; --highestSize_) {
+    if (highestSize_ < sortedSizeClass_ && !sizeBuckets_[highestSize_].empty()) {
+      sortInPlaneOrder(sizeBuckets_[highestSize_]);
+      sortedSizeClass_ = highestSize_;
+    }
     if (take(sizeBuckets_[highestSize_], out)) return true;
+  }
   return false;
+}
+
+namespace {
+
+// Position along a Hilbert curve through a 2^16 x 2^16 grid.
+std::uint32_t hilbertIndex(std::uint32_t x, std::uint32_t y) {
+  constexpr std::uint32_t n = 1u << 16;
+  std::uint32_t d = 0;
+  for (std::uint32_t s = n / 2; s > 0; s /= 2) {
+    const std::uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
+    d += s * s * ((3 * rx) ^ ry);
+    if (ry == 0) {
+      if (rx == 1) x = n - 1 - x, y = n - 1 - y;
+      std::swap(x, y);
+    }
+  }
+  return d;
+}
+
+// A mesh of fewer slots than this fits in the cache: it gains nothing from plane order and pays
+// for the keys and sorts, so it keeps the order of pushes (and so its exact mesh).
+constexpr std::uint32_t kCachedSlots = 1u << 17;  // 5 MB of slot records
+
+}  // namespace
+
+// Computed at the push, while the triangle's corners are in the cache (a sort reading them back
+// would miss on nearly every one).
+std::uint32_t BadTriangleQueue::planeKey(const Triangulation& t, std::uint32_t a) {
+  if (t.slotCount() < kCachedSlots / 2) return 0;
+  if (frameScale_ == 0) {
+    double hi[2] = {-HUGE_VAL, -HUGE_VAL};
+    frameLow_[0] = frameLow_[1] = HUGE_VAL;
+    for (std::size_t k = 0; k < t.xy.size(); ++k)
+      frameLow_[k % 2] = std::min(frameLow_[k % 2], t.xy[k]), hi[k % 2] = std::max(hi[k % 2], t.xy[k]);
+    frameScale_ = 65535 / std::max({hi[0] - frameLow_[0], hi[1] - frameLow_[1], 1e-300});
+  }
+  const double* p = t.pt(a);
+  const double x = std::clamp((p[0] - frameLow_[0]) * frameScale_, 0.0, 65535.0);
+  const double y = std::clamp((p[1] - frameLow_[1]) * frameScale_, 0.0, 65535.0);
+  return hilbertIndex(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
+}
+
+// A size class is taken in the order of a Hilbert curve through the triangles' first corners, so
+// that consecutive splits touch neighboring triangles and vertices, which a mesh larger than the
+// cache then finds there, instead of hopping across the plane. The class still decides the order.
+// A radix sort on the keys, least significant byte first (each pass stable).
+void BadTriangleQueue::sortInPlaneOrder(std::vector<BadTriangle>& bucket) {
+  if (frameScale_ == 0 || bucket.size() < 64) return;
+  sortBuffer_.resize(bucket.size());
+  for (int shift = 0; shift < 32; shift += 8) {
+    std::size_t start[257] = {};
+    for (const BadTriangle& e : bucket) ++start[((e.planeKey >> shift) & 0xFF) + 1];
+    if (start[1] == bucket.size()) continue;  // one value of this byte throughout
+    for (int b = 0; b < 256; ++b) start[b + 1] += start[b];
+    for (const BadTriangle& e : bucket) sortBuffer_[start[(e.planeKey >> shift) & 0xFF]++] = e;
+    bucket.swap(sortBuffer_);
+  }
 }
 
 double BadTriangleQueue::worstQueuedAngle(double fallback) const {

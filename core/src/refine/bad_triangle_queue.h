@@ -12,12 +12,14 @@ namespace ruppert::detail {
 
 struct BadTriangle {
   std::uint32_t slot, a, b, c;
+  std::uint32_t planeKey;   // position of corner a along a Hilbert curve (0 in a small mesh)
   std::uint8_t angleClass;  // sin^2 of the smallest angle in BadTriangleQueue::kAngleClasses steps
 };
 
 // Whether a queued entry still describes the triangle in its slot.
 inline bool isCurrent(const Triangulation& t, const BadTriangle& e) {
-  return t.alive(e.slot) && t.tv[3 * e.slot] == e.a && t.tv[3 * e.slot + 1] == e.b && t.tv[3 * e.slot + 2] == e.c;
+  const TriangleSlot& r = t.slot(e.slot);  // (a free slot's corners are kNone)
+  return r.tv[0] == e.a && r.tv[1] == e.b && r.tv[2] == e.c;
 }
 
 // Order: skinny triangles with the shortest shortest-edge first, too-large but shapely ones last
@@ -77,7 +79,15 @@ class BadTriangleQueue {
   std::uint64_t queuedByAngle_[kAngleClasses] = {};
   std::uint64_t queued_ = 0, compactAt_ = 1u << 20;  // entries in buckets_; when to drop stale ones
 
+  // Plane order (sortInPlaneOrder): size classes at or above sortedSizeClass_ were sorted; the
+  // Hilbert curve's frame, around the vertices when the mesh first grew large enough for plane
+  // order (the domain's extent: later vertices lie within it), unset while frameScale_ is 0.
+  int sortedSizeClass_ = kSizeBuckets;
+  double frameLow_[2] = {0, 0}, frameScale_ = 0;
+  std::vector<BadTriangle> sortBuffer_;
   static int classOf(double shortest2);
+  std::uint32_t planeKey(const Triangulation& t, std::uint32_t a);
+  void sortInPlaneOrder(std::vector<BadTriangle>& bucket);
   static int sizeClassOf(double area);
   bool take(std::vector<BadTriangle>& bucket, BadTriangle& out);
   void dropStaleEntries(const Triangulation& t);

@@ -22,7 +22,7 @@ bool Refiner::isEncroached(std::uint32_t h) const {
 }
 
 void Refiner::checkSubsegment(std::uint32_t h) {
-  if (t_.con[h] == kFree) return;
+  if (t_.con[h] == kFree) [[likely]] return;
   if (mesh_.encroachesEdge(t_.pt(t_.apex(h)), h) || (t_.con[h] >= mesh_.curveFirst && curvePieceTooCoarse(h)))
     encroached_.push_back({t_.origin(h), t_.dest(h), h});
 }
@@ -42,7 +42,8 @@ std::uint32_t Refiner::edgeOf(const EdgeRef& e) const {
 }
 
 TriangleQuality Refiner::qualityAt(std::uint32_t s) const {
-  return qualityOf(t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2]));
+  const TriangleSlot& r = t_.slot(s);
+  return qualityOf(t_.pt(r.tv[0]), t_.pt(r.tv[1]), t_.pt(r.tv[2]));
 }
 
 double Refiner::maxAreaFromEverySource(std::uint32_t s) const {
@@ -82,9 +83,10 @@ double Refiner::oldMeshBound(std::uint32_t s) const {
 }
 
 void Refiner::checkTriangle(std::uint32_t s) {
-  const double* p0 = t_.pt(t_.tv[3 * s]);
-  const double* p1 = t_.pt(t_.tv[3 * s + 1]);
-  const double* p2 = t_.pt(t_.tv[3 * s + 2]);
+  const TriangleSlot& r = t_.slot(s);
+  const double* p0 = t_.pt(r.tv[0]);
+  const double* p1 = t_.pt(r.tv[1]);
+  const double* p2 = t_.pt(r.tv[2]);
   const TriangleQuality q = qualityOf(p0, p1, p2);
   const double bound = maxAreaAt(s);
   const bool large = bound > 0 && q.area > bound;

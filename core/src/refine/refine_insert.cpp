@@ -29,11 +29,13 @@ bool Refiner::insertAt(std::uint32_t v, const Location& loc, const CavityRef& ca
   if (onSubsegment) mendDelaunay();
   for (std::uint32_t s : newTris_) {
     checkTriangle(s);
-    for (std::uint32_t i = 0; i < 3; ++i) checkSubsegment(3 * s + i);
+    const TriangleSlot& r = t_.slot(s);
+    for (std::uint32_t i = 0; i < 3; ++i)
+      if (r.con[i] != kFree) checkSubsegment(3 * s + i);
     // The outer edge's far side is an old triangle: its apex may now encroach nothing new, but a
-    // split subsegment's halves need checking from both sides.
-    const std::uint32_t g = t_.twin[3 * s];
-    if (g != kNone) checkSubsegment(g);
+    // split subsegment's halves need checking from both sides. (Both sides carry the same
+    // constraint: a free edge, the common case, is settled without reading the old triangle.)
+    if (r.twin[0] != kNone && r.con[0] != kFree) checkSubsegment(r.twin[0]);
   }
   recheckFlipped();
   return true;

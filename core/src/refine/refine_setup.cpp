@@ -36,7 +36,7 @@ std::vector<std::uint8_t> acuteCorners(const MeshState& m, double* inverseGaps) 
   // counterclockwise of it at v (a triangle on the left of v -> w: the half-edge's own for its
   // origin, its twin's for its destination; removeOutside leaves no twin outside the domain).
   auto forEachEnd = [&](auto&& visit) {
-    for (std::uint32_t h = 0; h < t.tv.size(); ++h) {
+    for (std::uint32_t h = 0; h < 3 * t.slotCount(); ++h) {
       if (!t.alive(h / 3) || t.con[h] == kFree) continue;
       if (t.twin[h] != kNone && t.twin[h] < h) continue;  // each edge once
       const std::uint32_t a = t.origin(h), b = t.dest(h);

@@ -14,30 +14,33 @@ constexpr double kPetalReach = 4;  // see PetalPlacement::mayHelp
 
 Location MeshAccess::walk(std::uint32_t s, const double* p, std::uint32_t& blocked) const {
   blocked = kNone;
-  const double* q0 = tri.pt(tri.tv[3 * s]);
-  const double* q1 = tri.pt(tri.tv[3 * s + 1]);
-  const double* q2 = tri.pt(tri.tv[3 * s + 2]);
+  const TriangleSlot& first = tri.slot(s);
+  const double* q0 = tri.pt(first.tv[0]);
+  const double* q1 = tri.pt(first.tv[1]);
+  const double* q2 = tri.pt(first.tv[2]);
   const double o[2] = {(q0[0] + q1[0] + q2[0]) / 3, (q0[1] + q1[1] + q2[1]) / 3};
   std::uint32_t t = s;
   for (std::uint32_t step = 0; step < 100000; ++step) {
+    const TriangleSlot& r = tri.slot(t);
     std::uint32_t exit = kNone, fallback = kNone;
     double ori[3];
     for (std::uint32_t i = 0; i < 3; ++i) {
-      const std::uint32_t h = 3 * t + i;
-      ori[i] = orient2d(tri.pt(tri.origin(h)), tri.pt(tri.dest(h)), p);
+      const double* from = tri.pt(r.tv[(i + 1) % 3]);
+      const double* to = tri.pt(r.tv[(i + 2) % 3]);
+      ori[i] = orient2d(from, to, p);
       if (ori[i] < 0) {
-        if (fallback == kNone) fallback = h;
-        const double su = orient2d(o, p, tri.pt(tri.origin(h))), sv = orient2d(o, p, tri.pt(tri.dest(h)));
-        if (exit == kNone && ((su >= 0 && sv <= 0) || (su <= 0 && sv >= 0))) exit = h;
+        if (fallback == kNone) fallback = i;
+        const double su = orient2d(o, p, from), sv = orient2d(o, p, to);
+        if (exit == kNone && ((su >= 0 && sv <= 0) || (su <= 0 && sv >= 0))) exit = i;
       }
     }
     if (exit == kNone) exit = fallback;
     if (exit == kNone) return tri.locationInside(t, ori);
-    if (tri.con[exit] != kFree || tri.twin[exit] == kNone) {
-      blocked = exit;
+    if (r.con[exit] != kFree || r.twin[exit] == kNone) {
+      blocked = 3 * t + exit;
       return Location{};
     }
-    t = tri.twin[exit] / 3;
+    t = r.twin[exit] / 3;
   }
   return Location{};
 }
