@@ -46,10 +46,12 @@ test('the two-line example from the README meshes a square to the requested qual
 // 157 KB. Then a curve's first pieces halved while an input point lies inside one's hull, over a
 // grid of the input points (two fuzz_mesh findings: a dropped point covered by a later split, a
 // piece point a hair beside an input point on the curve): 156,153 -> 157,554 bytes; 158 KB.
+// Smoothing (options.smooth: ODT moves, segment slides, logged flips and their undoing, compiled
+// for size): 157,568 -> 160,688 bytes (the same build without the call to it, and with it); 161 KB.
 const gzippedSize = (file) => gzipSync(readFileSync(new URL(`./node_modules/ruppert/wasm/dist/${file}`, import.meta.url)), { level: 9 }).length;
-test('the mesher .wasm is at most 158 KB gzipped, the text formats at most 60 KB', () => {
+test('the mesher .wasm is at most 161 KB gzipped, the text formats at most 60 KB', () => {
   const mesher = gzippedSize('ruppert.wasm'), formats = gzippedSize('ruppert-formats.wasm');
-  assert.ok(mesher <= 158000, `ruppert.wasm: ${mesher} bytes gzipped`);
+  assert.ok(mesher <= 161000, `ruppert.wasm: ${mesher} bytes gzipped`);
   assert.ok(formats <= 60000, `ruppert-formats.wasm: ${formats} bytes gzipped`);
 });
 
