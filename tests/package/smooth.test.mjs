@@ -80,9 +80,10 @@ test('the CLI takes --smooth alone or with passes', () => {
   try {
     writeFileSync(join(dir, 'in.json'), JSON.stringify(perforated()));
     const run = (...args) => spawnSync(bin, ['--min-angle', '30', '--format', 'json', ...args], { cwd: dir, encoding: 'utf8' });
-    const plain = run('-o', 'plain.json', 'in.json');
-    const alone = run('--smooth', '-o', 'alone.json', 'in.json');
-    const four = run('--smooth', '4', '-o', 'four.json', 'in.json');
+    // -o BASE: the JSON goes to BASE.json.
+    const plain = run('-o', 'plain', 'in.json');
+    const alone = run('--smooth', '-o', 'alone', 'in.json');
+    const four = run('--smooth', '4', '-o', 'four', 'in.json');
     for (const r of [plain, alone, four]) assert.equal(r.status, 0, r.stderr);
     const read = (name) => JSON.parse(readFileSync(join(dir, name), 'utf8'));
     assert.deepEqual(read('alone.json').points, read('four.json').points);
