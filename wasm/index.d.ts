@@ -149,6 +149,16 @@ export interface TriangulateOptions {
    */
   curveTolerance?: number;
   /**
+   * Smoothing after refinement: true for 4 passes, or a number of passes in [0, 100]; default
+   * false (0). Free vertices move towards the area-weighted mean of their star's circumcenters
+   * (optimal Delaunay triangulation) and vertices on segments slide along them, flips keeping the
+   * mesh constrained Delaunay; a move stays only if every triangle it changed keeps minAngle and
+   * every area bound. The triangle count and the sizes stay; triangles get rounder (on the
+   * benchmark's 300 generated PLCs at 30 degrees: mean smallest angle up 3.2 degrees, a third fewer
+   * obtuse triangles; docs/measurements.md).
+   */
+  smooth?: boolean | number;
+  /**
    * 2: quadratic triangles: mesh.triangles6, and one midpoint node per edge appended to points
    * (and pointMarkers) after the corner vertices. Default 1.
    */

@@ -338,12 +338,15 @@ function countOption(options, { name, unit }) {
   return v === Infinity ? -1 : v;
 }
 
-// One of the integers min..max ("1 or 2").
-function integerOption(options, { name, default: fallback, min, max }) {
-  const v = options[name] ?? fallback;
+// One of the integers min..max ("1 or 2"); where the table gives whenTrue, also true (that many)
+// or false (min).
+function integerOption(options, { name, default: fallback, min, max, whenTrue }) {
+  let v = options[name] ?? fallback;
+  if (whenTrue !== undefined && typeof v === 'boolean') v = v ? whenTrue : min;
   if (!Number.isInteger(v) || v < min || v > max) {
     const values = Array.from({ length: max - min + 1 }, (_, i) => min + i);
-    throw badOption(`${name} = ${describe(v)} must be ${values.slice(0, -1).join(', ')} or ${values.at(-1)}`);
+    const allowed = values.length > 4 ? `an integer from ${min} to ${max}` : `${values.slice(0, -1).join(', ')} or ${values.at(-1)}`;
+    throw badOption(`${name} = ${describe(v)} must be ${allowed}${whenTrue !== undefined ? ', true or false' : ''}`);
   }
   return v;
 }

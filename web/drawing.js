@@ -37,9 +37,11 @@ export const flagOption = (id) => id.replace(/-([a-z])/g, (_, letter) => letter.
 // (the option's name in kebab case): the panel, links and the mesher's options handle them alike,
 // so that offering one more is one checkbox and one id here. In this order in links (one bit each).
 // The chapter's size measure (stats.lfsIntegral, §6.5) costs a pass over the mesh: on demand.
-export const PAGE_FLAGS = Object.freeze(['size-measure']);
+// Smoothing takes true for its usual passes (the table's whenTrue), so it is a flag here too.
+export const PAGE_FLAGS = Object.freeze(['size-measure', 'smooth']);
 for (const id of PAGE_FLAGS) {
-  if (PACKAGE_OPTIONS[flagOption(id)]?.type !== 'boolean') throw new Error(`page flag ${id}: no such boolean option`);
+  const option = PACKAGE_OPTIONS[flagOption(id)];
+  if (option?.type !== 'boolean' && option?.whenTrue === undefined) throw new Error(`page flag ${id}: no such on/off option`);
 }
 
 /** Options that turn the page flags of those ids on, for presets. */
@@ -49,7 +51,7 @@ export const flagOptions = (...ids) => Object.fromEntries(ids.map((id) => [flagO
 export const DEFAULT_OPTIONS = Object.freeze({
   minAngle: PACKAGE_OPTIONS.minAngle.default, maxAngle: null, maxArea: null, placement: PACKAGE_OPTIONS.placement.default,
   maxSteiner: null, variant: PACKAGE_OPTIONS.variant.default, encroachment: PACKAGE_OPTIONS.encroachment.default,
-  ...Object.fromEntries(PAGE_FLAGS.map((id) => [flagOption(id), PACKAGE_OPTIONS[flagOption(id)].default])),
+  ...Object.fromEntries(PAGE_FLAGS.map((id) => [flagOption(id), Boolean(PACKAGE_OPTIONS[flagOption(id)].default)])),
   // Curves' largest distance from their boundary edges; 0: the core's automatic 1e-3 of the diagonal.
   curveTolerance: PACKAGE_OPTIONS.curveTolerance.default,
 });

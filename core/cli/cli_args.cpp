@@ -74,6 +74,13 @@ class OptionValue {
     if (!parseStrictDouble(v, d)) throw UsageError(name() + ": '" + v + "' is not a number");
     return d;
   }
+  // An optional value: the text after '=', or the next argument if it is a count; false for none.
+  bool optionalCount(std::string& value) {
+    if (arg_.hasInlineValue) return value = arg_.inlineValue, true;
+    std::uint64_t ignored = 0;
+    if (i_ + 1 >= args_.size() || !parseStrictCount(args_[i_ + 1], ignored)) return false;
+    return value = args_[++i_], true;
+  }
   bool flag() const {
     if (arg_.hasInlineValue) throw UsageError(name() + " takes no value");
     return true;
@@ -117,12 +124,21 @@ void read(OptionValue& v, std::uint64_t& target) {
 
 template <class Spec>
 void read(OptionValue& v, int& target) {
-  const std::string text = v.text();
+  std::string text;
+  // --smooth alone asks for the usual passes; --smooth N or --smooth=N for N.
+  if constexpr (std::is_same_v<Spec, option::smooth>) {
+    if (!v.optionalCount(text)) return void(target = kSmoothPassesWhenOn);
+  } else {
+    text = v.text();
+  }
   std::uint64_t value = 0;
   if (parseStrictCount(text, value) && value >= Spec::low && value <= Spec::high) {
     target = static_cast<int>(value);
     return;
   }
+  if (Spec::high - Spec::low > 3)
+    throw UsageError(v.name() + ": '" + text + "' is not an integer from " + numberText(Spec::low) + " to " +
+                     numberText(Spec::high));
   std::string values;  // "1 or 2", "1, 2 or 3"
   for (int i = static_cast<int>(Spec::low); i <= static_cast<int>(Spec::high); ++i)
     values += (i == Spec::low ? "" : i == Spec::high ? " or " : ", ") + std::to_string(i);

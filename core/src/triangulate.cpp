@@ -3,7 +3,7 @@
 //   prepare (cdt/prepare_input.cpp: validate, scale, merge duplicates) -> Delaunay of the points
 //   (cdt/build_delaunay.cpp) -> constraints (cdt/segment_insertion.cpp: hull, segments, with
 //   repairs) -> classify (cdt/classify.cpp: exterior, holes, regions) -> refine (refine/, §6.2-6.6,
-//   6.8) -> output (output/assemble_output.cpp).
+//   6.8) -> smooth (smooth/, Options::smooth) -> output (output/assemble_output.cpp).
 // The decisions between stages are made here: the convex hull stands in for segments that enclose
 // nothing, and the variant says when the outside goes (before refining, or after it in the box).
 #include <chrono>
@@ -19,6 +19,7 @@
 #include "cdt/segment_insertion.h"
 #include "point_attributes.h"
 #include "refine/refine.h"
+#include "smooth/smooth.h"
 
 namespace ruppert {
 
@@ -96,6 +97,8 @@ Mesh triangulate(const Plc& userPlc, const Options& options) {
   RefineOutcome outcome;
   if (refinementRequested(m)) outcome = refine(m);
   if (box) removeOutside(m);
+  // After the box's outside is gone: only the domain's vertices move, within its triangles.
+  if (options.smooth > 0) smoothMesh(m, options.smooth);
   if (options.sizeMeasure) outcome.lfsIntegral = estimateLfsIntegral(m);
 
   Mesh mesh = assembleOutput(m, std::move(outcome));

@@ -294,6 +294,7 @@ std::vector<std::string> acceptedValues() {
   } else if constexpr (std::is_enum_v<T>) {
     return {std::begin(ruppert::valueNames(Spec::fallback)), std::end(ruppert::valueNames(Spec::fallback))};
   } else if constexpr (std::is_same_v<T, int>) {
+    if (Spec::high - Spec::low > 3) return {std::to_string(int(Spec::low)), std::to_string(int(Spec::high))};
     std::vector<std::string> out;
     for (int i = static_cast<int>(Spec::low); i <= static_cast<int>(Spec::high); ++i) out.push_back(std::to_string(i));
     return out;
@@ -336,6 +337,29 @@ TEST_CASE("cli: every flag of the option table is parsed, listed and range-check
   RUPPERT_MESH_OPTIONS(CHECK_FLAG_)
   RUPPERT_DERIVED_OPTIONS(CHECK_FLAG_)
 #undef CHECK_FLAG_
+}
+
+TEST_CASE("cli: --smooth takes an optional number of passes, in range", "[io][cli][smooth]") {
+  if (!haveCli()) return;
+  const std::string input = "'" + kCliFixtures + "square-with-round-hole.json' -o -";
+  const Run plain = run("--min-angle 30 --format json " + input);
+  const Run alone = run("--min-angle 30 --format json --smooth " + input);
+  const std::string passes = std::to_string(ruppert::kSmoothPassesWhenOn);
+  const Run given = run("--min-angle 30 --format json --smooth " + passes + " " + input);
+  const Run inlined = run("--min-angle 30 --format json --smooth=" + passes + " " + input);
+  INFO(plain.err << alone.err << given.err);
+  REQUIRE(plain.status == 0);
+  REQUIRE(alone.status == 0);
+  // The points come first in the JSON, before the stats (whose time differs from run to run).
+  const auto points = [](const Run& r) { return r.out.substr(0, r.out.find("\"segments\"")); };
+  CHECK(points(alone) != points(plain));  // vertices moved
+  CHECK(points(given) == points(alone));  // alone: kSmoothPassesWhenOn passes
+  CHECK(points(inlined) == points(alone));
+  CHECK(points(run("--smooth 0 --min-angle 30 --format json " + input)) == points(plain));
+  const Run over = run("--smooth 101 x.poly");
+  CHECK(over.status == 2);
+  CHECK_THAT(over.err, Catch::Contains("--smooth: '101' is not an integer from 0 to 100"));
+  CHECK(run("--smooth=x x.poly").status == 2);
 }
 
 TEST_CASE("cli: --help gives the option table's numbers, no placeholder", "[io][cli]") {

@@ -187,9 +187,9 @@ void dumpPlc(const ruppert::Plc& plc, const ruppert::Options& o) {
   if (!path) return;
   std::FILE* f = std::fopen(path, "w");
   if (!f) return;
-  std::fprintf(f, "# options: minAngle %.17g maxAngle %.17g maxArea %.17g placement %s convexHull %d autoHoles %d maxSteiner %llu\n",
+  std::fprintf(f, "# options: minAngle %.17g maxAngle %.17g maxArea %.17g placement %s convexHull %d autoHoles %d maxSteiner %llu smooth %d\n",
                o.minAngle, o.maxAngle, o.maxArea, ruppert::enumName(o.placement),
-               o.convexHull, o.autoHoles, static_cast<unsigned long long>(o.maxSteiner));
+               o.convexHull, o.autoHoles, static_cast<unsigned long long>(o.maxSteiner), o.smooth);
   std::fprintf(f, "%zu 2 0 0\n", plc.points.size() / 2);
   for (std::size_t i = 0; i < plc.points.size() / 2; ++i)
     std::fprintf(f, "%zu %.17g %.17g\n", i, plc.points[2 * i], plc.points[2 * i + 1]);
@@ -218,6 +218,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::uint8_t angleByte = in.byte();
   o.minAngle = angleByte % 46;
   o.maxAngle = kMaxAngles[angleByte / 46];
+  // The angle byte's quotient also picks smoothing (a third of the inputs, 1 to 3 passes), so the
+  // byte layout of the corpus stays as it was.
+  o.smooth = angleByte / 46 % 3 == 2 ? 1 + angleByte % 3 : 0;
   const std::uint8_t areaSelector = in.byte();
   const std::uint8_t flags = in.byte();
   const double scale = std::ldexp(1.0, static_cast<std::int8_t>(in.byte()));
@@ -262,8 +265,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (ruppert_fuzz::asksNoRefinement(plc, o)) checkOnlyCurveVertices(mesh, plc, problems);
   }
   if (!problems.empty()) {
-    std::fprintf(stderr, "minAngle %g maxAngle %g maxArea %g placement %d convexHull %d autoHoles %d complete %d\n",
-                 o.minAngle, o.maxAngle, o.maxArea, static_cast<int>(o.placement), o.convexHull, o.autoHoles, mesh.complete);
+    std::fprintf(stderr, "minAngle %g maxAngle %g maxArea %g placement %d convexHull %d autoHoles %d smooth %d complete %d\n",
+                 o.minAngle, o.maxAngle, o.maxArea, static_cast<int>(o.placement), o.convexHull, o.autoHoles, o.smooth, mesh.complete);
     std::fprintf(stderr, "%s\n", ruppert_test::describeProblems(problems).c_str());
     ruppert_fuzz::finding("invalid mesh");
   }

@@ -167,7 +167,8 @@ function typeScriptOf(option) {
     case 'number': case 'count': return 'number';
     case 'boolean': return 'boolean';
     case 'choice': return option.values.map((v) => `'${v}'`).sort().join(' | ');
-    case 'integer': return Array.from({ length: option.max - option.min + 1 }, (_, i) => option.min + i).join(' | ');
+    case 'integer': if (option.whenTrue !== undefined) return 'boolean | number';
+      return Array.from({ length: option.max - option.min + 1 }, (_, i) => option.min + i).join(' | ');
     default: return 'function';
   }
 }

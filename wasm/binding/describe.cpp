@@ -40,7 +40,8 @@ void appendNumber(std::string& json, double value) {
 }
 
 // One option: {"name":..,"type":..,"default":..} and, by type, "min", "max" and "unit" (number,
-// integer, count) or "values" (choice, in the enum's order). Types: number (double), integer (int),
+// integer, count) or "values" (choice, in the enum's order); "whenTrue" where an integer option
+// also takes true (that many) and false (0). Types: number (double), integer (int),
 // count (an integer or null: automatic), boolean, choice (one of values) and function.
 template <class Spec>
 void appendOption(std::string& json) {
@@ -64,6 +65,9 @@ void appendOption(std::string& json) {
     json.append(",\"min\":"), appendNumber(json, Spec::low);
     json.append(",\"max\":"), appendNumber(json, Spec::high);
     json.append(",\"unit\":\"").append(Spec::unit).append("\"");
+    // smooth: true stands for the usual passes (false for none).
+    if constexpr (std::is_same_v<Spec, ruppert::option::smooth>)
+      json.append(",\"whenTrue\":").append(std::to_string(ruppert::kSmoothPassesWhenOn));
   }
   json.append("},");
 }

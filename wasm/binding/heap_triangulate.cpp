@@ -25,9 +25,10 @@ namespace ruppert_wasm {
 namespace {
 
 // One option from its double in the table, as heap-call.js wrote it: a number as itself, a flag as
-// 0 or 1, an enum as the core's value, and maxSteiner -1 for "automatic" (else a checked count).
+// 0 or 1, an integer (smooth's passes, checked) as itself, an enum as the core's value, and maxSteiner -1 for "automatic" (else a checked count).
 void fromTable(double v, double& option) { option = v; }
 void fromTable(double v, bool& option) { option = v != 0; }
+void fromTable(double v, int& option) { option = static_cast<int>(v); }
 void fromTable(double v, std::uint64_t& option) {
   option = v < 0 ? ruppert::kAutoSteinerBudget : static_cast<std::uint64_t>(v);
 }

@@ -19,6 +19,10 @@
 namespace ruppert {
 
 inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+// Options::smooth's passes where it is asked for without a number (CLI --smooth, smooth: true).
+inline constexpr int kSmoothPassesWhenOn = 4;
+#define RUPPERT_SMOOTH_PASSES_TEXT "4"  // the same, for the help text
+static_assert(RUPPERT_SMOOTH_PASSES_TEXT[0] - '0' == kSmoothPassesWhenOn && RUPPERT_SMOOTH_PASSES_TEXT[1] == '\0');
 
 // triangulate()'s Options that the binding passes as numbers, in the heap table's order; each is
 // the ruppert::Options member of that name, of its default's type. What they do, for C++ callers:
@@ -61,6 +65,13 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 //   noBoundarySteiner  no new vertex on a subsegment of the domain's boundary (Triangle's -Y).
 //   noSegmentSteiner   no new vertex on any subsegment (-YY); implies noBoundarySteiner.
 //   jettison     leave Unused input points out of Mesh::points (-j), see Mesh::inputToOutput.
+//   smooth       passes of smoothing after refinement (smooth/smooth.h): free vertices move towards
+//                the area-weighted mean of their star's circumcenters (optimal Delaunay
+//                triangulation), flips restore the constrained Delaunay property, and a move stays
+//                only if every triangle it changed keeps the angle bound (or its star's old smallest
+//                angle, if lower) and every area bound. Segments, input points and vertices on
+//                segments stay; the triangle count stays. 0: none. The CLI's --smooth and the
+//                package's smooth: true mean kSmoothPassesWhenOn.
 //   curveTolerance  Plc::curves: the largest distance from a boundary edge to the curve it
 //                follows (user units); <= 0: 1e-3 of the diagonal of the input points' bounding
 //                box. Pieces are split until each is within it.
@@ -100,7 +111,10 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
     "others are renumbered in order")                                                                    \
   X(curveTolerance, "--curve-tolerance T", 0.0, 0, kUnbounded, "length",                                 \
     "largest distance from a boundary edge to the curve it follows (JSON curves; default: 1e-3 of the "   \
-    "input's bounding-box diagonal)")
+    "input's bounding-box diagonal)")                                                                  \
+  X(smooth, "--smooth [N]", 0, 0, 100, "passes",                                                          \
+    "after refinement, N passes (alone: " RUPPERT_SMOOTH_PASSES_TEXT ") of optimal-Delaunay moves of "    \
+    "free vertices, with flips: rounder triangles, the same count and sizes, every bound kept")
 
 // Outputs derived from the mesh after triangulate() (ruppert.h's addQuadraticNodes, voronoiDiagram):
 // the package's options and the CLI's flags, not Options members.
