@@ -21,13 +21,6 @@ void Triangulation::adoptVertices(std::vector<double>&& coordinates, std::size_t
   scratch_.assign(xy.size() / 2, kNone);
 }
 
-std::vector<std::uint32_t> Triangulation::takeSlotScratch() const {
-  std::vector<std::uint32_t> map;
-  reserveHuge(map, slotCount());
-  map.resize(slotCount());
-  return map;
-}
-
 std::vector<std::uint32_t> Triangulation::takeCorners(std::uint32_t count) {
   // Slot t's corners go to words 3t..3t+2, never past its own record's corners (from word
   // 10t + 1), so ascending order overwrites only records already read.

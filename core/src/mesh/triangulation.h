@@ -160,8 +160,10 @@ class Triangulation : public SlotRecords {
   }
   // Frees what only insertion and search use (the per-vertex fan table, the free-slot list).
   void releaseScratch() { release(scratch_), release(freeSlots); }
-  // An array for output's per-slot map (its size is the slot count; values unspecified).
-  std::vector<std::uint32_t> takeSlotScratch() const;
+  // Output's per-slot label (a slot's triangle index in the output), kept in the word of the
+  // slot's search stamp, free once searches are over: no per-slot array at the output's peak.
+  std::uint32_t label(std::uint32_t t) const { return slots_[t].mark; }
+  void setLabel(std::uint32_t t, std::uint32_t value) { slots_[t].mark = value; }
   // The per-vertex table's memory handed over for output's per-vertex map (its size is the vertex
   // count; values unspecified): no new pages for it at the output's peak.
   std::vector<std::uint32_t> takeVertexScratch() { return std::move(scratch_); }

@@ -81,20 +81,21 @@ void writeVertices(const MeshState& m, std::uint32_t outVertices, Mesh& mesh) {
 }
 
 // mesh.segments, segmentIds and the angle statistics, in one pass over the slots while the
-// triangulation is whole. Returns each slot's output triangle (kNone for a free slot).
-std::vector<std::uint32_t> scanTriangles(MeshState& m, Mesh& mesh) {
+// triangulation is whole. Labels each slot with its output triangle (kNone for a free slot).
+void scanTriangles(MeshState& m, Mesh& mesh) {
   Triangulation& t = m.tri;
   auto outIndex = [&](std::uint32_t v) { return m.outputMap[v]; };
-  std::vector<std::uint32_t> slotToTri = t.takeSlotScratch();
-  slotToTri.assign(t.slotCount(), kNone);
   // The subsegments number at least the input's segments: room for those and some splits, so that
   // small meshes do not grow these lists from empty (their count is known only after this pass).
   mesh.segments.reserve(m.plc->segments.size() + 64), mesh.segmentIds.reserve(m.plc->segments.size() / 2 + 32);
   AngleStats angles;
   std::uint32_t count = 0;
   for (std::uint32_t s = 0; s < t.slotCount(); ++s) {
-    if (!t.alive(s)) continue;
-    slotToTri[s] = count++;
+    if (!t.alive(s)) {
+      t.setLabel(s, kNone);
+      continue;
+    }
+    t.setLabel(s, count++);
     for (std::uint32_t h = 3 * s; h < 3 * s + 3; ++h) {
       const std::uint32_t g = t.twin[h];
       if (t.con[h] != kFree && (g == kNone || h < g)) {
@@ -110,36 +111,39 @@ std::vector<std::uint32_t> scanTriangles(MeshState& m, Mesh& mesh) {
   st.minAngle = angles.minAngle();
   st.maxAngle = angles.maxAngle();
   st.triangles = count;
-  return slotToTri;
 }
 
 // mesh.triangles, neighbors and triangleAttributes. The output's corners are written over the
 // triangulation's slots in place (a triangle's output index is never above its slot) and copied
 // out of the slot records, which then go; each array goes as soon as it is read.
-void writeTriangleArrays(MeshState& m, const std::vector<std::uint32_t>& slotToTri, Mesh& mesh) {
+void writeTriangleArrays(MeshState& m, Mesh& mesh) {
   Triangulation& t = m.tri;
   const std::uint32_t slots = t.slotCount(), count = mesh.stats.triangles;
+  // Regions' attributes need the labels, which go with the slots; zeros are written after them.
+  if (!m.attribute.empty()) {
+    reserveHuge(mesh.triangleAttributes, count);
+    mesh.triangleAttributes.resize(count);
+    for (std::uint32_t s = 0; s < slots; ++s)
+      if (t.label(s) != kNone) mesh.triangleAttributes[t.label(s)] = m.attribute[s];
+    release(m.attribute);
+  }
   reserveHuge(mesh.neighbors, 3 * std::size_t(count));
   mesh.neighbors.resize(3 * std::size_t(count));
+  // Slot o's corners are written after slot s's (o <= s) are read, and the labels are left alone.
   for (std::uint32_t s = 0; s < slots; ++s) {
-    const std::uint32_t o = slotToTri[s];
+    const std::uint32_t o = t.label(s);
     if (o == kNone) continue;
     for (std::uint32_t i = 0; i < 3; ++i) {
       const std::uint32_t g = t.twin[3 * s + i];
-      mesh.neighbors[3 * o + i] = g == kNone ? kNoNeighbor : static_cast<std::int32_t>(slotToTri[g / 3]);
+      mesh.neighbors[3 * o + i] = g == kNone ? kNoNeighbor : static_cast<std::int32_t>(t.label(g / 3));
       t.tv[3 * o + i] = m.outputMap[t.tv[3 * s + i]];
     }
   }
   mesh.triangles = t.takeCorners(count);
-  reserveHuge(mesh.triangleAttributes, count);
-  if (m.attribute.empty()) {
+  if (mesh.triangleAttributes.empty()) {
+    reserveHuge(mesh.triangleAttributes, count);
     mesh.triangleAttributes.assign(count, 0.0);
-  } else {
-    mesh.triangleAttributes.resize(count);
-    for (std::uint32_t s = 0; s < slots; ++s)
-      if (slotToTri[s] != kNone) mesh.triangleAttributes[slotToTri[s]] = m.attribute[s];
   }
-  release(m.attribute);
 }
 
 // Stats: the vertices by kind.
@@ -166,13 +170,13 @@ Mesh assembleMesh(MeshState& m) {
   const Plc& plc = *m.plc;
   const std::uint32_t outVertices = numberVertices(m);
   // Each part of the state goes once read (see writeTriangleArrays).
-  const std::vector<std::uint32_t> slotToTri = scanTriangles(m, mesh);
+  scanTriangles(m, mesh);
   release(m.maxArea), release(m.inDomain);
   m.tri.releaseScratch();
   writeVertices(m, outVertices, mesh);
   copyAttributes(m, mesh);
   release(m.tri.xy), release(m.tri.vtri), release(m.kind), release(m.onSegment), release(m.attributes);
-  writeTriangleArrays(m, slotToTri, mesh);
+  writeTriangleArrays(m, mesh);
   countVertexKinds(mesh);
   mesh.indexBase = plc.indexBase;
   mesh.notices = std::move(m.notices);
