@@ -82,7 +82,7 @@ async function readPlc(mesher, path, inputFormat) {
   throw new MeshError('IO_ERROR', `'${path}': unknown extension '.${ext}' (expected .poly, .node, .ele, .json or .geojson)`);
 }
 
-// Issue 16, refining a mesh: BASE.ele with BASE.node, and BASE.poly and BASE.area when they exist.
+// Refining a mesh: BASE.ele with BASE.node, and BASE.poly and BASE.area when they exist.
 async function readEle(mesher, path, ele) {
   const stem = path.slice(0, -4);
   const sibling = (ext) => stem + (path.endsWith('.ELE') ? ext.toUpperCase() : ext);

@@ -134,7 +134,7 @@ function groupOf({ groups }, values, group) {
   return out;
 }
 
-// Issue 16, derived: the old mesh to refine, order and voronoi go in a table of their own
+// Derived outputs: the old mesh to refine, order and voronoi go in a table of their own
 // (rp_stage_derived); what they give comes back in another (rp_derived_table).
 function stageDerived(m, layout, input, options) {
   const table = m._rp_stage_derived(...lengthsOf(layout.derivedInput, input), options.order, options.voronoi ? 1 : 0);

@@ -63,7 +63,7 @@ export interface Plc {
    * triangles its interior meets, so every triangle lying within an old triangle meets its bound.
    */
   triangleMaxArea?: NumberArray;
-  /** Curved boundaries (issue 45); not with triangles. */
+  /** Curved boundaries; not with triangles. */
   curves?: Curve[];
 }
 

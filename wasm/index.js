@@ -146,9 +146,9 @@ export const toMsh = (mesh, input) => loaded('toMsh').toMsh(mesh, input);
 export const toVtu = (mesh) => loaded('toVtu').toVtu(mesh);
 /** GeoJSON FeatureCollection text: one Polygon feature per triangle. */
 export const toGeoJson = (mesh) => loaded('toGeoJson').toGeoJson(mesh);
-/** Issue 16: Triangle's .ele text with { node, poly?, area? } texts: a PLC with triangles to refine. */
+/** Triangle's .ele text with { node, poly?, area? } texts: a PLC with triangles to refine. */
 export const parseEle = (text, options) => loaded('parseEle').parseEle(text, options);
-/** Issue 16: Triangle's .v.node text of mesh.voronoi. */
+/** Triangle's .v.node text of mesh.voronoi. */
 export const toVoronoiNode = (mesh) => loaded('toVoronoiNode').toVoronoiNode(mesh);
-/** Issue 16: Triangle's .v.edge text of mesh.voronoi. */
+/** Triangle's .v.edge text of mesh.voronoi. */
 export const toVoronoiEdge = (mesh) => loaded('toVoronoiEdge').toVoronoiEdge(mesh);

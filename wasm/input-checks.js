@@ -178,7 +178,7 @@ function regionNumber(region, i, key, fallback) {
   return v;
 }
 
-// Issue 16, refining a mesh: triangles (3 point indices each) and triangleMaxArea (one per triangle,
+// Refining a mesh: triangles (3 point indices each) and triangleMaxArea (one per triangle,
 // <= 0: none); the core checks the geometry (zero-area triangles) and NaN bounds.
 function oldMesh(plc, pointCount) {
   const triangles = plc.triangles == null ? NO_INDICES : toIndices(plc.triangles, 'triangles', pointCount, 'point', 3);
@@ -193,7 +193,7 @@ function oldMesh(plc, pointCount) {
   return { triangles, triangleMaxArea };
 }
 
-// Issue 45, curves: each { type: 'arc', from, to, center: [x, y] } or { type: 'bezier', from, to,
+// Curves: each { type: 'arc', from, to, center: [x, y] } or { type: 'bezier', from, to,
 // controls: [x1, y1, x2, y2] }, with an optional marker, flattened to 8 numbers (the binding's
 // heap_layout.h: type, from, to, 4 coordinates, marker). The core checks the geometry and the
 // indices' range, naming the curve.

@@ -117,7 +117,7 @@ export function createMesher(mesher, formats, cli = false) {
     return check(call('writeMesh', checked, plc, format)).text;
   }
 
-  // Issue 16, refining a mesh: Triangle's .ele text with { node, poly?, area?, names } texts.
+  // Refining a mesh: Triangle's .ele text with { node, poly?, area?, names } texts.
   function readEle(text, options) {
     requireText(text, 'parseEle');
     if (options === null || typeof options !== 'object') {
@@ -135,7 +135,7 @@ export function createMesher(mesher, formats, cli = false) {
     return check(call('readMeshFiles', { ele: text, eleName: name, node, nodeName, poly, polyName, area, areaName })).plc;
   }
 
-  // Issue 16, Voronoi: Triangle's .v.node / .v.edge texts of mesh.voronoi (triangulate with voronoi: true).
+  // Voronoi: Triangle's .v.node / .v.edge texts of mesh.voronoi (triangulate with voronoi: true).
   function writeVoronoi(mesh, which) {
     if (mesh === null || typeof mesh !== 'object' || mesh.voronoi == null || typeof mesh.voronoi !== 'object') {
       throw new MeshError('MALFORMED_INPUT', 'expected a mesh with mesh.voronoi (triangulate with { voronoi: true })');

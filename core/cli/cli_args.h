@@ -26,7 +26,7 @@ struct CliArgs {
   bool stats = false;
   bool help = false;
   bool version = false;
-  // Derived outputs (issue 16): --order 2 (6-node triangles in .node/.ele), --voronoi (BASE.v.node, BASE.v.edge).
+  // Derived outputs: --order 2 (6-node triangles in .node/.ele), --voronoi (BASE.v.node, BASE.v.edge).
   int order = option::order::fallback;
   bool voronoi = option::voronoi::fallback;
 };

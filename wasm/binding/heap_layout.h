@@ -37,7 +37,7 @@ inline constexpr const char* kOutputFields[] = {
     "stats.intersectionVertices", "stats.rejectedCircumcenters", "stats.lfsIntegral",
     "stats.trianglesPerLfsIntegral", "stats.milliseconds", "stats.reachedAngle", "attributesPerPoint"};
 
-// Issue 16, derived: rp_stage_derived's table (the old mesh to refine, then order and voronoi) and
+// Derived outputs: rp_stage_derived's table (the old mesh to refine, then order and voronoi) and
 // rp_derived_table's.
 inline constexpr const char* kDerivedInputFields[] = {"triangles:u32", "triangleMaxArea:f64",
                                                       RUPPERT_DERIVED_OPTIONS(RUPPERT_WASM_FIELD_)};

@@ -136,7 +136,7 @@ struct TableWriter {
 };
 
 // ---------------------------------------------------------------------------------------------
-// Issue 16, derived: refining a mesh (Plc::triangles, triangleMaxArea), quadratic nodes (order 2) and
+// Derived outputs: refining a mesh (Plc::triangles, triangleMaxArea), quadratic nodes (order 2) and
 // the Voronoi dual (voronoi), staged in tables of their own (kDerivedInputFields, kDerivedOutputFields).
 // ---------------------------------------------------------------------------------------------
 // Where the derived table holds order and voronoi, found by their keys.
@@ -218,7 +218,7 @@ void writeOutputTable(Staged& s) {
   w.array(m.points).array(m.triangles).array(m.neighbors).array(m.segments).array(m.segmentIds);
   w.array(m.vertexKinds).array(m.triangleAttributes).array(m.pointMarkers);
   w.array(s.reasonNumbers).array(s.reasonText).array(s.noticeNumbers).array(s.noticeText);
-  // Issue 16: boundary markers, edges, attributes, jettison's numbering.
+  // Boundary markers, edges, attributes, jettison's numbering.
   w.array(m.segmentMarkers).array(m.edges).array(m.edgeMarkers).array(m.pointAttributes).array(m.inputToOutput);
   w.number(m.indexBase).number(m.complete ? 1 : 0).number(double(m.reasons.size()));
   w.number(double(m.notices.size())).number(double(m.events.size()));
@@ -245,9 +245,9 @@ bool runStaged(const val* sizeFunction, const val* onProgress) {
         curvesFromTable(curves, plc.curves);
         ruppert::Options options = optionsFromTable(s.inputTable + kInputArrays);
         if (sizeFunction != nullptr) addCallbacks(options, *sizeFunction, *onProgress);
-        takeDerivedInput(plc);  // issue 16, derived
+        takeDerivedInput(plc);
         s.mesh = ruppert::triangulate(plc, options);
-        deriveOutputs(s.mesh);  // issue 16, derived
+        deriveOutputs(s.mesh);
         writeOutputTable(s);
       },
       s.failed);
@@ -328,10 +328,10 @@ EMSCRIPTEN_KEEPALIVE void rp_release_staged() {
   s.histogram = {}, s.reasonNumbers = {}, s.noticeNumbers = {};
   s.reasonText = {}, s.noticeText = {};
   s.failed = {};
-  releaseDerived();  // issue 16, derived
+  releaseDerived();
 }
 
-// Issue 16, derived: sizes the old mesh's arrays (lengths in elements), sets order and voronoi, and
+// Derived outputs: sizes the old mesh's arrays (lengths in elements), sets order and voronoi, and
 // returns the address of the derived input table (kDerivedInputFields). 0 if they do not fit.
 EMSCRIPTEN_KEEPALIVE std::uintptr_t rp_stage_derived(double triangles, double triangleMaxArea, double order, double voronoi) {
   DerivedStaged& d = derivedStaged();

@@ -50,7 +50,7 @@ ruppert::Mesh meshFromJs(const val& js) {
   m.pointAttributes = copyIn<double>(js["pointAttributes"]);
   m.attributesPerPoint = js["attributesPerPoint"].isNumber() ? js["attributesPerPoint"].as<std::uint32_t>() : 0;
   m.indexBase = js["indexBase"].isNumber() ? js["indexBase"].as<int>() : 0;
-  m.triangles6 = copyIn<std::uint32_t>(js["triangles6"]);  // issue 16: order 2
+  m.triangles6 = copyIn<std::uint32_t>(js["triangles6"]);  // order 2
   m.stats.vertices = m.points.size() / 2;
   m.stats.triangles = m.triangles.size() / 3;
   return m;

@@ -12,7 +12,7 @@ namespace ruppert_wasm {
 namespace {
 
 // format: "poly", "node" or "json" (GeoJSON is read by geojson_reader.cpp, in the mesher module).
-// Plc::curves (issue 45: only JSON has them) as { type, from, to, center | controls, marker }, added
+// Plc::curves (only JSON has them) as { type, from, to, center | controls, marker }, added
 // here rather than in plcToJs, which the mesher module links for GeoJSON.
 val withCurves(val o, const ruppert::Plc& plc) {
   if (plc.curves.empty()) return o;  // the key only where a file has curves
@@ -131,6 +131,6 @@ EMSCRIPTEN_BINDINGS(ruppert_text_formats) {
   emscripten::function("readPlc", &readPlc);
   emscripten::function("readPolyWithNode", &readPolyWithNode);
   emscripten::function("writeMesh", &writeMesh);
-  emscripten::function("readMeshFiles", &readMeshFiles);  // issue 16, derived
+  emscripten::function("readMeshFiles", &readMeshFiles);
   emscripten::function("writeVoronoi", &writeVoronoi);
 }

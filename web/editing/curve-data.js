@@ -1,4 +1,4 @@
-// The drawing's curves (issue 45): plain data beside its points and segments, as the package's Plc
+// The drawing's curves: plain data beside its points and segments, as the package's Plc
 // has them, so that they copy for undo, go into the link and reach the mesher untranslated.
 //
 //   curves [{ type: 'arc', from, to, center: [x, y], marker? }

@@ -1,4 +1,4 @@
-// The geometry of the drawing's curves (issue 45), as the core reads them (core/src/cdt/curves.h):
+// The geometry of the drawing's curves, as the core reads them (core/src/cdt/curves.h):
 // an arc runs counter-clockwise from its `from` point to its `to` point around `center`, its radius
 // the `from` point's distance; a Bézier is the cubic from `from` through controls [x1, y1, x2, y2]
 // to `to`. Both are functions of a parameter t in [0, 1]. Pure numbers, no DOM: the page's tests

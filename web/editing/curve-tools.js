@@ -1,4 +1,4 @@
-// The editor's curve tools (issue 45) and what the Select tool does with curves.
+// The editor's curve tools and what the Select tool does with curves.
 //
 //   circle  press at the centre, drag to a point of the circle, release (or click the centre, then
 //           click the point): that point and the one opposite it, and two arcs between them, a

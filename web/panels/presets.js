@@ -163,7 +163,7 @@ function twoPolygons() {
 }
 
 /**
- * The unit square with a round hole of radius 0.25 at its centre (issue 45): the hole is two arcs
+ * The unit square with a round hole of radius 0.25 at its centre: the hole is two arcs
  * between (0.75, 0.5) and (0.25, 0.5); its seed sits off the centre, so that the Select tool picks the
  * centre handle there.
  */

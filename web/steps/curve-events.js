@@ -1,4 +1,4 @@
-// Step mode and curves (issue 45): which refinement events split a piece of a curve, their text
+// Step mode and curves: which refinement events split a piece of a curve, their text
 // and their overlay. The trace records a split as any subsegment split (SEGMENT_SPLIT, or REJECTED
 // with the subsegment split instead), so the page reads the curve from the final mesh: the new
 // vertex stays on its piece's subsegments to the end, and their segmentIds entry is the number of

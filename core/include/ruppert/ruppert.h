@@ -101,7 +101,7 @@ struct Region {
   double maxArea = 0;       // <= 0: no area bound in this region; otherwise an upper bound
 };
 
-// A curved boundary piece between two input points (issue 45). It bounds regions, holes and the
+// A curved boundary piece between two input points. It bounds regions, holes and the
 // domain exactly as a segment does; refinement splits it at points on the curve (its parameter
 // midpoint, rounded to the nearest doubles), so every vertex of its pieces lies on the curve.
 enum class CurveType : std::uint8_t {

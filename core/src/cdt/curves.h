@@ -1,4 +1,4 @@
-// Curved boundaries (Plc::curves, issue 45): their geometry, and their cutting into the pieces that
+// Curved boundaries (Plc::curves): their geometry, and their cutting into the pieces that
 // the rest of the pipeline treats as input segments.
 //
 // Before prepare, each curve is cut into pieces by parameter, each within the tolerance of its curve

@@ -432,8 +432,8 @@ void insertHull(MeshState& m) {
   // Andrew's monotone chain with exact orientation on the distinct points and the crossings that
   // segment insertion added: a crossing is rounded, so it can lie a hair outside the input points'
   // hull, and a hull edge would then cross the constrained pieces that end there; each repair of
-  // such a crossing rounds a new one outside again, and the repairs looped (issue 19's careless
-  // sweep, seed 29317: crossings within 1e-19 of each other). Around every vertex, no hull edge
+  // such a crossing rounds a new one outside again, and the repairs looped (a sweep of careless
+  // PLCs, seed 29317: crossings within 1e-19 of each other). Around every vertex, no hull edge
   // crosses a constrained edge in exact arithmetic. Collinear points on the hull are skipped here
   // and picked up by segment insertion (they split the hull edge).
   // By x then y (one key for all; the vertices' points are distinct).

@@ -242,7 +242,7 @@ void printJson(TextOut& out, const Mesh& mesh, const Plc& input) {
   jsonArray(out, "vertexKinds", mesh.vertexKinds, [](std::uint8_t v) { return integer(static_cast<int>(v)); });
   out << ",\n";
   jsonArray(out, "triangleAttributes", mesh.triangleAttributes, number);
-  // Issue 16: boundary markers always; edges, attributes and jettison's numbering when present.
+  // Boundary markers always; edges, attributes and jettison's numbering when present.
   const detail::Markers markers = markersOf(mesh);
   out << ",\n";
   jsonArray(out, "pointMarkers", markers.points, whole);
