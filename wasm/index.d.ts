@@ -32,7 +32,11 @@ export type Curve =
 export interface Plc {
   /** Interleaved coordinates x0, y0, x1, y1, ... */
   points: NumberArray;
-  /** Pairs of 0-based point indices a0, b0, a1, b1, ... */
+  /**
+   * Pairs of 0-based point indices a0, b0, a1, b1, ... Without any, the convex hull of the points is
+   * meshed (as Triangle does for a point set), with no notice; segments that enclose nothing get the
+   * hull too, with a NOTHING_ENCLOSED notice.
+   */
   segments?: NumberArray;
   /** Hole seeds hx0, hy0, hx1, hy1, ... */
   holes?: NumberArray;
