@@ -10,6 +10,7 @@
 #include "mesh/predicates.h"
 #include "mesh/triangle_shape.h"
 #include "point_attributes.h"
+#include "refine/placement/refine_geometry.h"
 #include "refine/placement/segment_slide.h"
 #include "cold_code.h"
 
@@ -35,7 +36,6 @@ constexpr double kMinGain = 1e-9;
 constexpr int kSearchRounds = 12;
 // A slide stays this share of the interval between its neighbours on the segment away from them.
 constexpr double kSlideMargin = 0.1;
-constexpr double kPi = 3.14159265358979323846;
 // The star's score per triangle (starQuality): its smallest angle, less kObtuseExcessWeight times
 // how far its largest angle exceeds 90 degrees and kObtuseCost (radians) if it does at all. The
 // flat cost is what turns slightly obtuse triangles acute; the weights trade that against the
@@ -51,8 +51,11 @@ struct StarQuality {
 class Smoother {
  public:
   explicit Smoother(MeshState& m) : m_(m), t_(m.tri) {
-    const double s = std::sin(m.options->minAngle * (3.14159265358979323846 / 180));
+    const double s = std::sin(m.options->minAngle * (kPi / 180));
     sin2Bound_ = s * s;
+    // The same slack as refinement's test of a wide triangle, so that a triangle refinement left
+    // at the bound is not refused here as over it.
+    cosMaxAngle_ = m.options->maxAngle > 0 ? std::cos(m.options->maxAngle * (kPi / 180)) - 1e-12 : -2;
   }
   bool tryMove(std::uint32_t v);
   bool trySlide(std::uint32_t v);
@@ -61,9 +64,10 @@ class Smoother {
   MeshState& m_;
   Triangulation& t_;
   double sin2Bound_;
+  double cosMaxAngle_;  // cosine of Options::maxAngle less a rounding slack; -2: no bound
   std::vector<std::uint32_t> ring_;     // the star: per triangle, its half-edge opposite v
   std::vector<std::uint32_t> stack_;    // edges to test for the Delaunay property
-  std::vector<std::uint32_t> flips_;    // slot T of every flip, in order: the new diagonal is 3T+1
+  std::vector<std::uint32_t> flips_;    // every flip's new diagonal, in order: its two vertices
   std::vector<std::uint32_t> changed_;  // slots whose triangle changed (repeats allowed)
   std::vector<double> savedAttributes_;
 
@@ -267,17 +271,19 @@ void Smoother::legalizeLogged() {
       continue;
     const std::uint32_t u = g / 3;
     t_.flip(h);
-    flips_.push_back(t);
+    // Slot t is now (apex(h), origin(h), d): the new diagonal joins its corners 0 and 2.
+    flips_.push_back(t_.tv[3 * t]), flips_.push_back(t_.tv[3 * t + 2]);
     changed_.push_back(t), changed_.push_back(u);
     stack_.push_back(3 * t), stack_.push_back(3 * t + 2), stack_.push_back(3 * u), stack_.push_back(3 * u + 1);
   }
 }
 
-// Flipping a flip's new diagonal (half-edge 3T+1, see Triangulation::flip) brings back the old
-// one; in reverse order, with v still at its new place, that rebuilds the old connectivity, which
-// holds the old coordinates exactly.
+// Flipping a flip's new diagonal brings back the old one; in reverse order, with v still at its new
+// place, that rebuilds the old triangles, which hold the old coordinates exactly. The diagonal is
+// found by its vertices, not by the slot that took it: flipping back can leave each triangle in the
+// other slot of its pair, and an earlier flip of that slot would then name another edge.
 void Smoother::undo(std::uint32_t v, const double* from) {
-  for (auto it = flips_.rbegin(); it != flips_.rend(); ++it) t_.flip(3 * *it + 1);
+  for (std::size_t k = flips_.size(); k >= 2; k -= 2) t_.flip(t_.findEdge(flips_[k - 2], flips_[k - 1]));
   t_.xy[2 * v] = from[0], t_.xy[2 * v + 1] = from[1];
   if (m_.attributeCount != 0)
     std::copy(savedAttributes_.begin(), savedAttributes_.end(),
@@ -292,6 +298,7 @@ bool Smoother::changedTrianglesHold() const {
     if (!(orient2d(p0, p1, p2) > 0)) return false;
     const TriangleQuality q = qualityOf(p0, p1, p2);
     if (q.sin2MinAngle < sin2Bound_) return false;
+    if (cosMaxAngle_ > -1 && largestAngleCos(p0, p1, p2) < cosMaxAngle_) return false;
     const double bound = areaBound(s);
     if (bound > 0 && q.area > bound) return false;
   }
