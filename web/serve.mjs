@@ -194,8 +194,8 @@ export function startServer({ port = 8080, quiet = false } = {}) {
   });
 }
 
-const isMain = process.argv[1] !== undefined && resolve(process.argv[1]) === fileURLToPath(import.meta.url);
-if (isMain) {
+/** Serves on $PORT (default 8080) and prints the address: `npm run serve`, and `npm start` after its build. */
+export async function serveOnEnvironmentPort() {
   const port = process.env.PORT !== undefined && process.env.PORT !== '' ? Number(process.env.PORT) : 8080;
   if (!Number.isInteger(port) || port < 0 || port > 65535) {
     console.error(`PORT=${process.env.PORT} is not a port number`);
@@ -204,3 +204,6 @@ if (isMain) {
   const { url } = await startServer({ port });
   console.log(`ruppert web page: ${url}`);
 }
+
+const isMain = process.argv[1] !== undefined && resolve(process.argv[1]) === fileURLToPath(import.meta.url);
+if (isMain) await serveOnEnvironmentPort();

@@ -15,11 +15,5 @@ if (stale !== null) {
   const build = spawnSync(process.execPath, ['wasm/build-wasm.mjs'], { cwd: root, stdio: 'inherit', env });
   if (build.status !== 0) process.exit(build.status ?? 1);
 }
-const { startServer } = await import('./serve.mjs');
-const port = process.env.PORT !== undefined && process.env.PORT !== '' ? Number(process.env.PORT) : 8080;
-if (!Number.isInteger(port) || port < 0 || port > 65535) {
-  console.error(`PORT=${process.env.PORT} is not a port number`);
-  process.exit(2);
-}
-const { url } = await startServer({ port });
-console.log(`ruppert web page: ${url}`);
+const { serveOnEnvironmentPort } = await import('./serve.mjs');
+await serveOnEnvironmentPort();
