@@ -101,7 +101,7 @@ test('diametral disks give a valid, complete mesh', async () => {
   await assertValidMesh(page, 'comb, box, disk again');
   assert.deepEqual((await decodeHash(page)).options, {
     minAngle: 30, maxArea: null, placement: 'optimal', maxSteiner: null, variant: 'box', encroachment: 'disk',
-    sizeMeasure: false,
+    sizeMeasure: false, smooth: false, maxAngle: null,
   });
 });
 
