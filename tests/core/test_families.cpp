@@ -15,6 +15,7 @@
 using ruppert::Mesh;
 using ruppert::Options;
 using ruppert::Plc;
+using ruppert_test::boundChecked;
 using ruppert_test::familyMember;
 using ruppert_test::shapeFamilies;
 
@@ -41,16 +42,6 @@ std::string firstTouchingPair(const Plc& plc) {
         return "segments " + std::to_string(i / 2) + " and " + std::to_string(j / 2) + " touch";
     }
   return "";
-}
-
-ruppert_test::ValidateOptions boundChecked(const Plc& plc, const Mesh& mesh, double area, double angle) {
-  ruppert_test::ValidateOptions v;
-  v.input = &plc;
-  v.expectedArea = area;
-  v.minAngle = angle;
-  v.angleTolDeg = 1e-6;
-  v.angleExempt = ruppert_test::chapterExemptions(mesh, plc);
-  return v;
 }
 
 }  // namespace

@@ -41,16 +41,6 @@ Mesh refined(const Plc& plc, double angle) {
   return ruppert::triangulate(plc, o);
 }
 
-ValidateOptions boundChecked(const Plc& plc, const Mesh& mesh, double area, double angle) {
-  ValidateOptions v;
-  v.input = &plc;
-  v.expectedArea = area;
-  v.minAngle = angle;
-  v.angleTolDeg = 1e-6;
-  v.angleExempt = ruppert_test::chapterExemptions(mesh, plc);
-  return v;
-}
-
 std::string reasonsOf(const Mesh& mesh) {
   std::string s;
   for (const auto& r : mesh.reasons) s += r.message + "; ";

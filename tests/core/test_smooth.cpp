@@ -26,16 +26,6 @@ Options smoothed(double angle, int passes) {
   return o;
 }
 
-ruppert_test::ValidateOptions atBound(const Plc& plc, const Mesh& mesh, double area, double angle) {
-  ruppert_test::ValidateOptions v;
-  v.input = &plc;
-  v.expectedArea = area;
-  v.minAngle = angle;
-  v.angleTolDeg = 1e-6;
-  v.angleExempt = ruppert_test::chapterExemptions(mesh, plc);
-  return v;
-}
-
 double cornerDegrees(const double* p, const double* q, const double* r) {
   const double ux = q[0] - p[0], uy = q[1] - p[1], vx = r[0] - p[0], vy = r[1] - p[1];
   return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / 3.14159265358979323846;
@@ -78,7 +68,7 @@ TEST_CASE("smoothing keeps every family's mesh valid, constrained Delaunay, at 3
       CHECK(mesh.triangles.size() == plain.triangles.size());
       CHECK(mesh.points.size() == plain.points.size());
       CHECK(mesh.segments.size() == plain.segments.size());
-      CHECK_VALID(mesh, atBound(g.plc, mesh, g.area, 30));
+      CHECK_VALID(mesh, ruppert_test::boundChecked(g.plc, mesh, g.area, 30));
     }
 }
 
@@ -119,7 +109,7 @@ TEST_CASE("smoothing keeps maxAngle too, and a move taken back leaves the mesh D
       const Mesh mesh = ruppert::triangulate(g.plc, o);
       CHECK(mesh.complete == plain.complete);
       CHECK(mesh.triangles.size() == plain.triangles.size());
-      ruppert_test::ValidateOptions v = atBound(g.plc, mesh, g.area, 30);
+      ruppert_test::ValidateOptions v = ruppert_test::boundChecked(g.plc, mesh, g.area, 30);
       v.maxAngle = 100;
       CHECK_VALID(mesh, v);
     }
@@ -144,7 +134,7 @@ TEST_CASE("smoothing keeps the global, the regions' and the size function's area
   o.sizeFunction = [&](double x, double) { return g.area / 4000 * (1 + 4 * std::fabs(x)); };
   const Mesh plain = ruppert::triangulate(plc, smoothed(28, 0));
   const Mesh mesh = ruppert::triangulate(plc, o);
-  auto v = atBound(plc, mesh, g.area, 28);
+  auto v = ruppert_test::boundChecked(plc, mesh, g.area, 28);
   v.maxArea = o.maxArea;
   CHECK_VALID(mesh, v);
   for (std::size_t t = 0; t < mesh.triangles.size() / 3; ++t) {
@@ -163,7 +153,7 @@ TEST_CASE("smoothing keeps each region's own area bound and attribute", "[smooth
   plc.segments = {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 0, 1, 4};
   plc.regions = {{0.25, 0.5, 1, 0.001}, {0.75, 0.5, 2, 0.01}};
   const Mesh mesh = ruppert::triangulate(plc, smoothed(30, 5));
-  CHECK_VALID(mesh, atBound(plc, mesh, 1.0, 30));
+  CHECK_VALID(mesh, ruppert_test::boundChecked(plc, mesh, 1.0, 30));
   REQUIRE(mesh.triangleAttributes.size() == mesh.triangles.size() / 3);
   for (std::size_t t = 0; t < mesh.triangles.size() / 3; ++t) {
     double cx = 0;
@@ -193,9 +183,9 @@ TEST_CASE("smoothing in Ruppert's box variant and above 34 degrees stays valid",
   Options box = smoothed(30, 3);
   box.variant = ruppert::Variant::BoundingBox;
   const Mesh a = ruppert::triangulate(g.plc, box);
-  CHECK_VALID(a, atBound(g.plc, a, g.area, 30));
+  CHECK_VALID(a, ruppert_test::boundChecked(g.plc, a, g.area, 30));
   const Mesh b = ruppert::triangulate(g.plc, smoothed(36, 3));
   const Mesh plain = ruppert::triangulate(g.plc, smoothed(36, 0));
   CHECK(b.triangles.size() == plain.triangles.size());
-  CHECK_VALID(b, atBound(g.plc, b, g.area, b.complete ? 36 : plain.stats.reachedAngle - 1e-6));
+  CHECK_VALID(b, ruppert_test::boundChecked(g.plc, b, g.area, b.complete ? 36 : plain.stats.reachedAngle - 1e-6));
 }

@@ -1006,6 +1006,16 @@ std::function<bool(const Mesh&, std::uint32_t)> chapterExemptions(const Mesh& me
   return [seditious](const Mesh& m, std::uint32_t t) { return nestledInInputAngle(m, t) || seditious(m, t); };
 }
 
+ValidateOptions boundChecked(const ruppert::Plc& input, const Mesh& mesh, double area, double angle) {
+  ValidateOptions v;
+  v.input = &input;
+  v.expectedArea = area;
+  v.minAngle = angle;
+  v.angleTolDeg = 1e-6;
+  v.angleExempt = chapterExemptions(mesh, input);
+  return v;
+}
+
 std::string describeProblems(const std::vector<std::string>& problems, std::size_t max) {
   if (problems.empty()) return "mesh is valid";
   std::string text = std::to_string(problems.size()) + " problem(s):";

@@ -84,6 +84,9 @@ std::function<bool(const ruppert::Mesh&, std::uint32_t)> seditiousTest(const rup
 // small input angle, or a seditious shortest edge (both above), each judged on its own.
 std::function<bool(const ruppert::Mesh&, std::uint32_t)> chapterExemptions(const ruppert::Mesh& mesh,
                                                                            const ruppert::Plc& input);
+// Options that check a refined mesh of `input` at its bound: the domain's area, the smallest angle
+// outside the chapter's exemptions (within 1e-6 degrees).
+ValidateOptions boundChecked(const ruppert::Plc& input, const ruppert::Mesh& mesh, double area, double angle);
 std::string describeProblems(const std::vector<std::string>& problems, std::size_t max = 12);
 // True when every interior non-subsegment edge is strictly Delaunay (incircle < 0), i.e. the CDT of
 // this vertex set and these subsegments is unique. Metamorphic tests compare topology only then.
