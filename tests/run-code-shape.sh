@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The code's shape (issue 18): no source file in core/, wasm/ or web/ over 600 lines, and no C++
-# function over 80 lines (clang-tidy's readability-function-size). Long files and functions are
+# The code's shape: no source file in core/, wasm/ or web/ over 600 lines, no C++ function over 80
+# lines (clang-tidy's readability-function-size), and the core's includes only down its floors. Long files and functions are
 # where a newcomer gets lost; the limits keep each part readable in one sitting.
 # Usage: tests/run-code-shape.sh [BUILD_DIR]  (a CMake build dir with compile_commands.json; made
 # here when absent). Exits non-zero, naming each file or function over its limit.
@@ -22,7 +22,7 @@ while IFS= read -r file; do
 done < <(git ls-files 'core/*.cpp' 'core/*.h' 'wasm/*.cpp' 'wasm/*.h' 'wasm/*.js' 'wasm/*.mjs' \
   'wasm/*.ts' 'web/*.js' 'web/*.mjs' 'web/*.html' 'web/*.css')
 
-# Option names written by hand (issue 43): each option is written once in option_table.h and read
+# Option names written by hand: each option is written once in option_table.h and read
 # where it is used; these two, used in one place each, stay in at most four hand-written files.
 max_option_files=4
 for option in sizeMeasure noSegmentSteiner; do
@@ -32,6 +32,12 @@ for option in sizeMeasure noSegmentSteiner; do
     failures=$((failures + 1))
   fi
 done
+
+# The core's includes run only down its floors, with no circles (the floors are listed there).
+if ! floors="$(node "$root/tests/code-shape/include-floors.mjs")"; then
+  echo "$floors"
+  failures=$((failures + 1))
+fi
 
 if ! command -v clang-tidy >/dev/null 2>&1; then
   echo "code-shape: clang-tidy not found (Debian package clang-tidy)"

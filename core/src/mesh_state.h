@@ -14,10 +14,10 @@
 #include <utility>
 #include <vector>
 
-#include "cdt/curves.h"
-#include "cdt/prepare_input.h"
-#include "ruppert/ruppert.h"
+#include "curve_pieces.h"
 #include "mesh/triangulation.h"
+#include "prepared_input.h"
+#include "ruppert/ruppert.h"
 
 namespace ruppert::detail {
 
@@ -27,7 +27,7 @@ struct MeshState {
   // w: triangulate (before prepare). r: every stage.
   const Plc* plc = nullptr;
   const Options* options = nullptr;
-  // The scaled, merged, ordered input (prepare_input.h). w: prepare. r: every stage (coordinates,
+  // The scaled, merged, ordered input (prepared_input.h). w: prepare. r: every stage (coordinates,
   // representatives, holes, regions, the unit conversions).
   PreparedInput input;
   // The triangulation. w: build, constrain, classify (removeOutside), refine. r: every stage.
@@ -42,7 +42,7 @@ struct MeshState {
   // Per convex-hull (or bounding-box) edge that refinement split: its two end vertices, so that the
   // seditious rule (§6.6) treats it as the segment it stands for. w and r: refine.
   std::vector<std::array<std::uint32_t, 2>> hullEdgeEnds;
-  // Plc::curves cut into pieces, which are plc's segments from curves->first on (cdt/curves.h); held
+  // Plc::curves cut into pieces, which are plc's segments from curves->first on (curve_pieces.h); held
   // by triangulate (a pointer: MeshState is copied during refinement's push, the pieces never change).
   // w: triangulate (before prepare; scaled after it). r: constrain (rejectRepairedCurves), refine
   // (split points, the disk rule, the tolerance), output (segmentIds, vertex kinds).

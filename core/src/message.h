@@ -10,4 +10,7 @@ namespace ruppert::detail {
 
 std::string message(std::initializer_list<std::string_view> parts);
 
+// A number for messages, in its shortest form that reads back as the same double.
+std::string formatNumber(double v);
+
 }  // namespace ruppert::detail

@@ -11,7 +11,7 @@
 #include <random>
 #include <vector>
 
-#include "cdt/prepare_input.h"
+#include "prepared_input.h"
 
 namespace {
 

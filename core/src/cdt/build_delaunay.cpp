@@ -14,6 +14,7 @@
 
 #include "mesh_state.h"
 #include "cdt/old_mesh.h"
+#include "cdt/prepare_input.h"
 #include "mesh/predicates.h"
 
 namespace ruppert::detail {

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "cold_code.h"
+#include "message.h"
 #include "mesh_state.h"
 #include "mesh/predicates.h"
 

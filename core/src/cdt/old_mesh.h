@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "cdt/prepare_input.h"
+#include "prepared_input.h"
 #include "ruppert/ruppert.h"
 
 namespace ruppert::detail {

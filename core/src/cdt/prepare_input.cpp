@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cold_code.h"
+#include "message.h"
 #include "mesh/huge_pages.h"
 #include "mesh/point_order.h"
 #include "mesh/predicates.h"
@@ -16,15 +17,6 @@
 RUPPERT_COLD_BEGIN
 
 namespace ruppert::detail {
-
-std::string formatNumber(double v) {
-  char buf[40];
-  for (int digits = 6; digits <= 17; ++digits) {
-    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-    if (std::strtod(buf, nullptr) == v || std::isnan(v)) break;
-  }
-  return buf;
-}
 
 namespace {
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cold_code.h"
+#include "message.h"
 #include "mesh_state.h"
 #include "point_attributes.h"
 #include "mesh/point_order.h"

@@ -10,8 +10,6 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -146,16 +144,6 @@ std::vector<double> parseArea(const std::string& text, const std::string& name, 
   return areas;
 }
 
-std::string slurpFile(const std::string& path, bool& exists) {
-  std::ifstream file(path, std::ios::binary);
-  exists = static_cast<bool>(file);
-  if (!exists) return "";
-  std::ostringstream s;
-  s << file.rdbuf();
-  if (file.bad()) throw Error(ErrorCode::IoError, path + ": read failed");
-  return s.str();
-}
-
 }  // namespace
 
 Plc parseMeshFiles(const MeshFiles& files) {
@@ -173,28 +161,6 @@ Plc parseMeshFiles(const MeshFiles& files) {
   plc.triangles = parseEle(files.ele, files.eleName, plc.points.size() / 2, plc.indexBase);
   if (files.hasArea) plc.triangleMaxArea = parseArea(files.area, files.areaName, plc.triangles.size() / 3);
   return plc;
-}
-
-Plc readEleFiles(const std::string& elePath) {
-  const std::size_t dot = elePath.find_last_of('.');
-  const std::string stem = elePath.substr(0, dot);
-  const bool upper = elePath.substr(dot) == ".ELE";
-  auto sibling = [&](const char* ext) {
-    std::string e = ext;
-    if (upper)
-      for (char& c : e) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return stem + e;
-  };
-  MeshFiles files;
-  bool exists = false;
-  files.eleName = elePath, files.nodeName = sibling(".node"), files.polyName = sibling(".poly"), files.areaName = sibling(".area");
-  files.ele = slurpFile(elePath, exists);
-  if (!exists) throw Error(ErrorCode::IoError, elePath + ": cannot open for reading");
-  files.node = slurpFile(files.nodeName, exists);
-  if (!exists) throw Error(ErrorCode::IoError, files.nodeName + ": cannot open for reading (refining " + elePath + " needs its points)");
-  files.poly = slurpFile(files.polyName, files.hasPoly);
-  files.area = slurpFile(files.areaName, files.hasArea);
-  return parseMeshFiles(files);
 }
 
 }  // namespace ruppert

@@ -1,4 +1,4 @@
-// Readers for Triangle's .node and .poly formats, and readFile (dispatch by extension).
+// Readers for Triangle's .node and .poly formats (files by name: read_file.cpp).
 //
 // The formats, as documented with Triangle:
 //   .node  first line:  <#points> [<dimension = 2> [<#attributes> [<#markers 0|1>]]]
@@ -21,7 +21,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <fstream>
 #include <functional>
 #include <istream>
 #include <iterator>
@@ -31,6 +30,7 @@
 #include <system_error>
 #include <vector>
 
+#include "io/read_poly.h"
 #include "ruppert/ruppert.h"
 #include "cold_code.h"
 #include "mesh/huge_pages.h"
@@ -360,12 +360,6 @@ class TriangleReader {
   TriangleText& in_;
 };
 
-std::string slurp(std::istream& in, const std::string& name) {
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw Error(ErrorCode::IoError, name + ": read failed");
-  return text;
-}
-
 Plc nodeFromText(const std::string& text, const std::string& name) {
   TriangleText in(text, name);
   TriangleReader reader(in);
@@ -401,39 +395,6 @@ Plc polyFromText(const std::string& text, const std::string& name, const std::fu
   return plc;
 }
 
-std::string lowerExtension(const std::string& path) {
-  const std::size_t slash = path.find_last_of("/\\");
-  const std::size_t dot = path.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  std::string ext = path.substr(dot);
-  for (char& c : ext) {
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-  }
-  return ext;
-}
-
-// In one read of the file's size where it has one: read character by character, the string grows
-// by doubling, and 10^6 points' 47 MB of text are copied several times over.
-std::string readWholeFile(const std::string& path) {
-  std::ifstream file(path, std::ios::binary | std::ios::ate);
-  if (!file) throw Error(ErrorCode::IoError, path + ": cannot open for reading");
-  const std::streamoff size = file.tellg();
-  file.seekg(0);
-  if (size <= 0 || !file) {  // no size (a pipe, a device): read as a stream
-    file.clear();
-    file.seekg(0);
-    return slurp(file, path);
-  }
-  std::string text;
-  detail::reserveHuge(text, static_cast<std::size_t>(size));
-  text.resize(static_cast<std::size_t>(size));
-  file.read(&text[0], size);
-  if (file.bad()) throw Error(ErrorCode::IoError, path + ": read failed");
-  text.resize(static_cast<std::size_t>(file.gcount()));
-  if (file) text += slurp(file, path);  // whatever the file gained since its size was taken
-  return text;
-}
-
 }  // namespace
 
 Plc parseNode(const std::string& text, const std::string& name) { return nodeFromText(text, name); }
@@ -452,28 +413,23 @@ Plc parsePolyWithNode(const std::string& polyText, const std::string& nodeText, 
   return polyFromText(polyText, polyName, [&]() { return nodeFromText(nodeText, nodeName); });
 }
 
-Plc readNode(std::istream& in, const std::string& name) { return parseNode(slurp(in, name), name); }
+namespace detail {
 
-Plc readPoly(std::istream& in, const std::string& name) { return parsePoly(slurp(in, name), name); }
-
-Plc readFile(const std::string& path) {
-  const std::string ext = lowerExtension(path);
-  if (ext == ".node") return nodeFromText(readWholeFile(path), path);
-  if (ext == ".ele") return readEleFiles(path);  // refining a mesh: read_mesh_files.cpp
-  if (ext == ".json") {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw Error(ErrorCode::IoError, path + ": cannot open for reading");
-    return readJson(file, path);
-  }
-  if (ext == ".geojson") return parseGeoJson(readWholeFile(path), path);
-  if (ext == ".poly") {
-    // Same base name; keep the case of the extension the user wrote ("A.POLY" -> "A.NODE").
-    const std::string written = path.substr(path.size() - ext.size());
-    const std::string nodePath = path.substr(0, path.size() - ext.size()) + (written == ext ? ".node" : ".NODE");
-    return polyFromText(readWholeFile(path), path, [&nodePath]() { return nodeFromText(readWholeFile(nodePath), nodePath); });
-  }
-  throw Error(ErrorCode::IoError, path + ": unknown extension; expected .poly, .node, .ele, .json or .geojson");
+std::string readStream(std::istream& in, const std::string& name) {
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw Error(ErrorCode::IoError, name + ": read failed");
+  return text;
 }
+
+Plc parsePolyLoadingNode(const std::string& text, const std::string& name, const std::function<Plc()>& loadNode) {
+  return polyFromText(text, name, loadNode);
+}
+
+}  // namespace detail
+
+Plc readNode(std::istream& in, const std::string& name) { return parseNode(detail::readStream(in, name), name); }
+
+Plc readPoly(std::istream& in, const std::string& name) { return parsePoly(detail::readStream(in, name), name); }
 
 }  // namespace ruppert
 RUPPERT_COLD_END

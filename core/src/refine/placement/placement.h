@@ -19,7 +19,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "cdt/prepare_input.h"
+#include "prepared_input.h"
 #include "refine/placement/refine_geometry.h"
 #include "mesh/triangle_shape.h"
 #include "mesh/triangulation.h"
