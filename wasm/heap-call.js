@@ -32,9 +32,6 @@ export function readDescription(m) {
 }
 
 const TYPES = { f64: Float64Array, u32: Uint32Array, i32: Int32Array, u8: Uint8Array };
-// Reasons' and notices' numbers and texts are read at once, before anything can grow the heap: views,
-// not copies.
-const READ_AS_VIEWS = new Set(['reasonNumbers', 'reasonText', 'noticeNumbers', 'noticeText']);
 
 // Per table, parsed once per instance: its fields in order ({ name, group, key, Type?, view }),
 // the names of its arrays (an input table's lengths go to the binding in this order) and, for
@@ -45,15 +42,19 @@ function layoutOf(m) {
   if (layout === undefined) {
     const parse = (list) => {
       const fields = list.map((field) => {
-        const [name, type] = field.split(':');
+        // "name:type:heap": reasons' and notices' numbers and texts, read in place at once, before
+        // anything can grow the heap (views, not copies).
+        const [name, type, where] = field.split(':');
         const [group, key] = name.includes('.') ? name.split('.') : [null, name];
-        return { name, group, key, Type: type === undefined ? undefined : TYPES[type], view: READ_AS_VIEWS.has(name) };
+        return { name, group, key, Type: type === undefined ? undefined : TYPES[type], view: where === 'heap' };
       });
       const at = Object.fromEntries(fields.map((f, i) => [f.name, i]));
       // Per group ("stats", "voronoi"): its fields' positions and keys, for groupOf.
       const groups = {};
       fields.forEach((f, i) => { if (f.group !== null) (groups[f.group] ??= []).push([i, f.key]); });
-      return { fields, at, groups, arrays: fields.filter((f) => f.Type).map((f) => f.name) };
+      const arrays = fields.filter((f) => f.Type).map((f) => f.name);
+      // An output table's last field, packedBytes (an array takes two slots there).
+      return { fields, at, groups, arrays, packedSlot: fields.length + arrays.length - 1 };
     };
     const { names, layout: tables } = readDescription(m);
     layout = { names };
@@ -82,46 +83,53 @@ function writeTable(m, address, { fields }, arrays, numbers) {
 }
 
 // An output table's values by position (layout's `at` names them): arrays copied out (or, for
-// READ_AS_VIEWS, [start, length] in elements, for viewOf), numbers as they are. One pass, no object
-// keyed by name: a call's fixed cost is most of a small mesh's.
+// fields read in place, [start, length] in elements, for viewOf), numbers as they are. No object keyed
+// by name: a call's fixed cost is most of a small mesh's.
 //
 // Every array of one table is a view into ONE new ArrayBuffer, each at an offset aligned to 8 bytes.
-// Why: V8 gives each typed array over 64 bytes a backing store of its own, about 2.3 us apiece in
-// Node 20 whatever its length (a `slice` of 16 doubles costs what one of 1,000 does), which was most
-// of a small mesh's call; one buffer is one such allocation. A worker's transfer list then holds one
-// buffer (mesh-worker.js collects buffers in a Set).
-function readTable(m, address, { fields }) {
-  const heap = m.HEAPF64;
+// Why: V8 gives each typed array over 64 bytes a backing store of its own, 1-5 us apiece in Node 20
+// whatever its length, which was most of a small mesh's call; one buffer is one such allocation. A
+// worker's transfer list then holds one buffer (mesh-worker.js collects buffers in a Set). The binding
+// has packed the arrays into one block laid out as that buffer (packedBytes, heap_layout.h), so the
+// buffer is one slice of the heap; a table too large to pack is copied array by array.
+function readTable(m, address, { fields, packedSlot }) {
+  const heap = m.HEAPF64, table = address >>> 3;
   const values = new Array(fields.length);
-  let bytes = 0;
-  for (let i = 0, k = address >>> 3; i < fields.length; i++) {
-    const { Type, view } = fields[i];
-    if (Type === undefined) { k++; continue; }
-    if (!view) bytes += (heap[k + 1] * Type.BYTES_PER_ELEMENT + 7) & ~7;
-    k += 2;
+  const packedBytes = heap[table + packedSlot];
+  let buffer, start = -1, bytes = packedBytes;
+  if (packedBytes === 0) {
+    for (let i = 0, k = table; i < fields.length; i++) {
+      const { Type, view } = fields[i];
+      if (Type === undefined) { k++; continue; }
+      if (!view) bytes += (heap[k + 1] * Type.BYTES_PER_ELEMENT + 7) & ~7;
+      k += 2;
+    }
+    buffer = new ArrayBuffer(bytes);
   }
-  const buffer = new ArrayBuffer(bytes);
-  for (let i = 0, k = address >>> 3, offset = 0; i < fields.length; i++) {
+  for (let i = 0, k = table, offset = 0; i < fields.length; i++) {
     const { Type, view } = fields[i];
     if (Type === undefined) {
       values[i] = heap[k++];
       continue;
     }
-    const start = heap[k] / Type.BYTES_PER_ELEMENT, length = heap[k + 1];
+    const address = heap[k], length = heap[k + 1];
     k += 2;
     if (view) {
-      values[i] = [start, length];
-      continue;
+      values[i] = [address / Type.BYTES_PER_ELEMENT, length];
+    } else if (packedBytes > 0) {
+      if (start < 0) start = address, buffer = m.HEAPU8.slice(start, start + packedBytes).buffer;
+      values[i] = new Type(buffer, address - start, length);
+    } else {
+      const copy = new Type(buffer, offset, length);
+      if (length > 0) copy.set(heapView(m, Type).subarray(address / Type.BYTES_PER_ELEMENT, address / Type.BYTES_PER_ELEMENT + length));
+      offset += (length * Type.BYTES_PER_ELEMENT + 7) & ~7;
+      values[i] = copy;
     }
-    const copy = new Type(buffer, offset, length);
-    if (length > 0) copy.set(heapView(m, Type).subarray(start, start + length));
-    values[i] = copy;
-    offset += (length * Type.BYTES_PER_ELEMENT + 7) & ~7;
   }
   return values;
 }
 
-// A READ_AS_VIEWS field's view, made only when there is something to read (most calls have no
+// A field read in place: its view, made only when there is something to read (most calls have no
 // reasons or notices), before anything can grow the heap.
 function viewOf(m, Type, [start, length]) {
   return heapView(m, Type).subarray(start, start + length);
@@ -136,7 +144,12 @@ function groupOf({ groups }, values, group) {
 
 // Derived outputs: the old mesh to refine, order and voronoi go in a table of their own
 // (rp_stage_derived); what they give comes back in another (rp_derived_table).
+// A call that uses none of them skips the staging: the binding's release left the derived table
+// empty and at order 1 without voronoi.
 function stageDerived(m, layout, input, options) {
+  if (input.triangles.length === 0 && input.triangleMaxArea.length === 0 && options.order !== 2 && !options.voronoi) {
+    return true;
+  }
   const table = m._rp_stage_derived(...lengthsOf(layout.derivedInput, input), options.order, options.voronoi ? 1 : 0);
   if (table === 0) return false;
   writeTable(m, table, layout.derivedInput, input, options);
@@ -164,12 +177,12 @@ function heapView(m, Type) {
 
 const utf8 = new TextDecoder();
 
-// The messages of `count` items, when there are any (`text` is a READ_AS_VIEWS range of UTF-8).
+// The messages of `count` items, when there are any (`text` is a range read in place of UTF-8).
 const textsFromHeap = (m, count, text) => (count > 0 ? utf8.decode(viewOf(m, Uint8Array, text)).split('\0') : []);
 
 // One object literal per item (its shape fixed, so building 10^5 of them stays cheap; a kind number
 // is made a small integer before it indexes an array, which a double key would make a slow lookup).
-// `kinds` are the core's names of the kinds, in enum order; `numbers` and `text` READ_AS_VIEWS ranges.
+// `kinds` are the core's names of the kinds, in enum order; `numbers` and `text` ranges read in place.
 function reasonsFromHeap(m, count, numberRange, text, kinds) {
   if (count === 0) return [];
   const numbers = viewOf(m, Float64Array, numberRange);

@@ -5,6 +5,11 @@
 // A table is a run of doubles. A field "name:type" is an array: its address (in the input tables),
 // or its (address, length) pair (in the output tables), with the element type f64, u32, i32 or u8. A
 // field "name" without a type is one number. "stats.vertices" goes to mesh.stats.vertices.
+//
+// An output table's arrays are packed (heap_triangulate.cpp's packTable): copied, in the table's order
+// and each at an 8-byte-aligned offset, into one block, whose size the table's number "packedBytes"
+// gives (0: too large to pack, each array stays where it is), so that JavaScript copies the mesh out
+// of the heap in one piece. A field "name:type:heap" stays where it is (JavaScript reads it in place).
 #pragma once
 
 #include <cstddef>
@@ -29,13 +34,13 @@ inline constexpr std::size_t kCurveValues = 8;
 // and a UTF-8 text of "message\0" per item.
 inline constexpr const char* kOutputFields[] = {
     "points:f64", "triangles:u32", "neighbors:i32", "segments:u32", "segmentIds:i32", "vertexKinds:u8",
-    "triangleAttributes:f64", "pointMarkers:i32", "reasonNumbers:f64", "reasonText:u8", "noticeNumbers:f64",
-    "noticeText:u8", "segmentMarkers:i32", "edges:u32", "edgeMarkers:i32", "pointAttributes:f64",
+    "triangleAttributes:f64", "pointMarkers:i32", "reasonNumbers:f64:heap", "reasonText:u8:heap",
+    "noticeNumbers:f64:heap", "noticeText:u8:heap", "segmentMarkers:i32", "edges:u32", "edgeMarkers:i32", "pointAttributes:f64",
     "inputToOutput:i32", "indexBase", "complete", "reasonCount", "noticeCount", "eventCount",
     "stats.vertices", "stats.triangles", "stats.minAngle", "stats.maxAngle", "stats.angleHistogram:f64",
     "stats.inputVertices", "stats.segmentVertices", "stats.interiorVertices", "stats.offCenterVertices",
     "stats.intersectionVertices", "stats.rejectedCircumcenters", "stats.lfsIntegral",
-    "stats.trianglesPerLfsIntegral", "stats.milliseconds", "stats.reachedAngle", "attributesPerPoint"};
+    "stats.trianglesPerLfsIntegral", "stats.milliseconds", "stats.reachedAngle", "attributesPerPoint", "packedBytes"};
 
 // Derived outputs: rp_stage_derived's table (the old mesh to refine, then order and voronoi) and
 // rp_derived_table's.
@@ -43,7 +48,22 @@ inline constexpr const char* kDerivedInputFields[] = {"triangles:u32", "triangle
                                                       RUPPERT_DERIVED_OPTIONS(RUPPERT_WASM_FIELD_)};
 #undef RUPPERT_WASM_FIELD_
 inline constexpr const char* kDerivedOutputFields[] = {"triangles6:u32", "voronoi.points:f64", "voronoi.edges:i32",
-                                                       "voronoi.rayDirections:f64", "voronoi.meshEdges:u32"};
+                                                       "voronoi.rayDirections:f64", "voronoi.meshEdges:u32", "packedBytes"};
+
+// How many bytes one element of the array field `field` takes ("name:f64" 8, u32 and i32 4, u8 1); 0
+// for a number.
+constexpr std::size_t elementBytes(const char* field) {
+  while (*field != '\0' && *field != ':') ++field;
+  if (*field == '\0') return 0;
+  return field[1] == 'f' ? 8 : field[1] == 'u' && field[2] == '8' ? 1 : 4;
+}
+
+// Whether the array field `field` stays in place ("name:type:heap") instead of being packed.
+constexpr bool staysInHeap(const char* field) {
+  int colons = 0;
+  for (; *field != '\0'; ++field) colons += *field == ':';
+  return colons == 2;
+}
 
 template <std::size_t N>
 constexpr std::size_t fieldCount(const char* const (&)[N]) { return N; }
@@ -52,9 +72,7 @@ constexpr std::size_t fieldCount(const char* const (&)[N]) { return N; }
 template <std::size_t N>
 constexpr std::size_t arrayCount(const char* const (&fields)[N]) {
   std::size_t arrays = 0;
-  for (const char* field : fields)
-    for (const char* c = field; *c != '\0'; ++c)
-      if (*c == ':') ++arrays;
+  for (const char* field : fields) arrays += elementBytes(field) != 0;
   return arrays;
 }
 

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <new>
 #include <string>
 #include <type_traits>
@@ -135,6 +136,67 @@ struct TableWriter {
   }
 };
 
+// A table's arrays copied into one block (heap_layout.h), so that JavaScript copies the result out of
+// the heap in one piece into one ArrayBuffer instead of array by array: a small mesh's call spent more
+// on that than on meshing. The block is kept between calls while it is small, so that packing
+// allocates nothing; larger outputs stay where they are (packedBytes 0), as a copy of them would
+// cost memory and save nothing measurable.
+constexpr std::size_t kPackLimit = std::size_t(1) << 20;  // bytes
+constexpr std::size_t kKeptBlock = std::size_t(64) << 10;  // bytes
+
+static_assert(slotOf(kOutputFields, "packedBytes") == fieldCount(kOutputFields) - 1 &&
+                  slotOf(kDerivedOutputFields, "packedBytes") == fieldCount(kDerivedOutputFields) - 1,
+              "packedBytes is an output table's last field");
+
+// Where a table's packed arrays are: their (address, length) slots and element sizes, found from the
+// layout at compile time, not per call.
+template <std::size_t N>
+struct PackedSlots {
+  std::size_t count = 0, slot[N] = {}, elementBytes[N] = {}, packedBytesSlot = 0;
+};
+
+template <std::size_t N>
+constexpr PackedSlots<N> packedSlots(const char* const (&fields)[N]) {
+  PackedSlots<N> out;
+  std::size_t slot = 0;
+  for (const char* field : fields) {
+    const std::size_t bytes = elementBytes(field);
+    if (bytes != 0 && !staysInHeap(field)) out.slot[out.count] = slot, out.elementBytes[out.count++] = bytes;
+    slot += bytes == 0 ? 1 : 2;
+  }
+  out.packedBytesSlot = slot - 1;  // the last field
+  return out;
+}
+
+template <std::size_t N>
+void packTable(double* table, const PackedSlots<N>& packed, std::vector<std::uint64_t>& block) {
+  const auto aligned = [](std::size_t bytes) { return (bytes + 7) & ~std::size_t(7); };
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < packed.count; ++i)
+    total += aligned(packed.elementBytes[i] * static_cast<std::size_t>(table[packed.slot[i] + 1]));
+  table[packed.packedBytesSlot] = 0;
+  if (total > kPackLimit) return;
+  block.resize(total / 8);
+  auto* out = reinterpret_cast<unsigned char*>(block.data());
+  for (std::size_t i = 0; i < packed.count; ++i) {
+    double* slot = table + packed.slot[i];
+    const std::size_t size = packed.elementBytes[i] * static_cast<std::size_t>(slot[1]);
+    if (size > 0) std::memcpy(out, reinterpret_cast<const void*>(static_cast<std::uintptr_t>(slot[0])), size);
+    slot[0] = static_cast<double>(reinterpret_cast<std::uintptr_t>(out));
+    out += aligned(size);
+  }
+  table[packed.packedBytesSlot] = static_cast<double>(total);
+}
+
+constexpr auto kPackedOutput = packedSlots(kOutputFields);
+constexpr auto kPackedDerived = packedSlots(kDerivedOutputFields);
+
+// After JavaScript has copied a packed table out.
+void releaseBlock(std::vector<std::uint64_t>& block) {
+  if (block.capacity() * sizeof(std::uint64_t) > kKeptBlock) block = {};
+  else block.clear();
+}
+
 // ---------------------------------------------------------------------------------------------
 // Derived outputs: refining a mesh (Plc::triangles, triangleMaxArea), quadratic nodes (order 2) and
 // the Voronoi dual (voronoi), staged in tables of their own (kDerivedInputFields, kDerivedOutputFields).
@@ -150,6 +212,7 @@ struct DerivedStaged {
   double inputTable[kDerivedInputTableSize] = {};
   ruppert::Voronoi voronoi;
   double outputTable[kDerivedOutputTableSize] = {};
+  std::vector<std::uint64_t> block;  // packTable's
 };
 
 DerivedStaged& derivedStaged() {
@@ -172,12 +235,16 @@ void deriveOutputs(ruppert::Mesh& mesh) {
   if (d.inputTable[kOrderSlot] == 2) ruppert::addQuadraticNodes(mesh);
   TableWriter w{d.outputTable};
   w.array(mesh.triangles6).array(d.voronoi.points).array(d.voronoi.edges).array(d.voronoi.rayDirections);
-  w.array(d.voronoi.meshEdges).end(d.outputTable, kDerivedOutputTableSize);
+  w.array(d.voronoi.meshEdges).number(0).end(d.outputTable, kDerivedOutputTableSize);
+  packTable(d.outputTable, kPackedDerived, d.block);
 }
 
+// Also what a call that stages nothing derived finds (heap-call.js skips rp_stage_derived then).
 void releaseDerived() {
   DerivedStaged& d = derivedStaged();
   d.triangles = {}, d.triangleMaxArea = {}, d.voronoi = {};
+  releaseBlock(d.block);
+  d.inputTable[kOrderSlot] = 1, d.inputTable[kVoronoiSlot] = 0;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -192,6 +259,7 @@ struct Staged {
   std::vector<double> histogram, reasonNumbers, noticeNumbers;
   std::string reasonText, noticeText;
   double outputTable[kOutputTableSize] = {};
+  std::vector<std::uint64_t> block;  // packTable's
   Failure failed;
 };
 
@@ -226,8 +294,9 @@ void writeOutputTable(Staged& s) {
   w.array(s.histogram).number(double(st.inputVertices)).number(double(st.segmentVertices));
   w.number(double(st.interiorVertices)).number(double(st.offCenterVertices)).number(double(st.intersectionVertices));
   w.number(double(st.rejectedCircumcenters)).number(st.lfsIntegral).number(st.trianglesPerLfsIntegral);
-  w.number(st.milliseconds).number(st.reachedAngle).number(double(m.attributesPerPoint));
+  w.number(st.milliseconds).number(st.reachedAngle).number(double(m.attributesPerPoint)).number(0);
   w.end(s.outputTable, kOutputTableSize);
+  packTable(s.outputTable, kPackedOutput, s.block);
 }
 
 // Meshes the staged input with the staged options (plus callbacks, if any); true on success, else the
@@ -327,6 +396,7 @@ EMSCRIPTEN_KEEPALIVE void rp_release_staged() {
   s.mesh = ruppert::Mesh{};
   s.histogram = {}, s.reasonNumbers = {}, s.noticeNumbers = {};
   s.reasonText = {}, s.noticeText = {};
+  releaseBlock(s.block);
   s.failed = {};
   releaseDerived();
 }

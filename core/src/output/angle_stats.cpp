@@ -145,4 +145,17 @@ static double extremeAngle(const double* xy, bool largest) {
 double AngleStats::minAngle() const { return any_ ? extremeAngle(smallest_, false) : 0; }
 double AngleStats::maxAngle() const { return any_ ? extremeAngle(largest_, true) : 0; }
 
+void AngleStats::extremes(double& minAngle, double& maxAngle) const {
+  if (!any_ || !std::equal(smallest_, smallest_ + 6, largest_)) {
+    minAngle = this->minAngle(), maxAngle = this->maxAngle();
+    return;
+  }
+  // One triangle holds both (every triangle alike, as in a square's two): its angles once.
+  const double* p[3] = {smallest_, smallest_ + 2, smallest_ + 4};
+  double angle[3];
+  triangleAngles(p, angle);
+  minAngle = degrees(std::min({angle[0], angle[1], angle[2]}));
+  maxAngle = degrees(std::max({angle[0], angle[1], angle[2]}));
+}
+
 }  // namespace ruppert::detail

@@ -30,6 +30,8 @@ class AngleStats {
   // Degrees; 0 when nothing was added.
   double minAngle() const;
   double maxAngle() const;
+  // Both, as minAngle() and maxAngle() give them.
+  void extremes(double& minAngle, double& maxAngle) const;
 
  private:
   void addExact(const double* const* p);

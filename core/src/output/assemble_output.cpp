@@ -82,12 +82,14 @@ void writeVertices(const MeshState& m, std::uint32_t outVertices, Mesh& mesh) {
 
 // mesh.segments, segmentIds and the angle statistics, in one pass over the slots while the
 // triangulation is whole. Labels each slot with its output triangle (kNone for a free slot).
-void scanTriangles(MeshState& m, Mesh& mesh) {
+// boundary[s]: whether subsegment s has a triangle on one side only (for the markers).
+void scanTriangles(MeshState& m, Mesh& mesh, std::vector<std::uint8_t>& boundary) {
   Triangulation& t = m.tri;
   auto outIndex = [&](std::uint32_t v) { return m.outputMap[v]; };
   // The subsegments number at least the input's segments: room for those and some splits, so that
   // small meshes do not grow these lists from empty (their count is known only after this pass).
   mesh.segments.reserve(m.plc->segments.size() + 64), mesh.segmentIds.reserve(m.plc->segments.size() / 2 + 32);
+  boundary.reserve(mesh.segmentIds.capacity());
   AngleStats angles;
   std::uint32_t count = 0;
   for (std::uint32_t s = 0; s < t.slotCount(); ++s) {
@@ -102,14 +104,14 @@ void scanTriangles(MeshState& m, Mesh& mesh) {
         mesh.segments.push_back(outIndex(t.origin(h)));
         mesh.segments.push_back(outIndex(t.dest(h)));
         mesh.segmentIds.push_back(t.con[h] >= 0 ? m.curves->outputId(t.con[h]) : kNoInputSegment);
+        boundary.push_back(g == kNone || !t.alive(g / 3));  // as mesh.neighbors will say
       }
     }
     angles.add(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2]));
   }
   Stats& st = mesh.stats;
   st.angleHistogram = angles.takeHistogram();
-  st.minAngle = angles.minAngle();
-  st.maxAngle = angles.maxAngle();
+  angles.extremes(st.minAngle, st.maxAngle);
   st.triangles = count;
 }
 
@@ -170,7 +172,8 @@ Mesh assembleMesh(MeshState& m) {
   const Plc& plc = *m.plc;
   const std::uint32_t outVertices = numberVertices(m);
   // Each part of the state goes once read (see writeTriangleArrays).
-  scanTriangles(m, mesh);
+  std::vector<std::uint8_t> boundarySubsegment;
+  scanTriangles(m, mesh, boundarySubsegment);
   release(m.maxArea), release(m.inDomain);
   m.tri.releaseScratch();
   writeVertices(m, outVertices, mesh);
@@ -180,7 +183,7 @@ Mesh assembleMesh(MeshState& m) {
   countVertexKinds(mesh);
   mesh.indexBase = plc.indexBase;
   mesh.notices = std::move(m.notices);
-  assignMarkers(mesh, plc);
+  assignMarkers(mesh, plc, boundarySubsegment);
   return mesh;
 }
 

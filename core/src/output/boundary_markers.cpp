@@ -91,10 +91,45 @@ Markers computeMarkers(const Mesh& mesh, const Plc& plc) {
   return out;
 }
 
-void assignMarkers(Mesh& mesh, const Plc& plc) {
-  Markers m = computeMarkers(mesh, plc);
-  mesh.pointMarkers = std::move(m.points);
-  mesh.segmentMarkers = std::move(m.segments);
+// computeMarkers' rules, for the mesh output assembly has just written: which subsegments have a
+// triangle on one side only is known from the triangulation, and the boundary's vertices from
+// mesh.neighbors, so no list of boundary edges or index over them is built (on a small mesh, they
+// were most of the markers' cost).
+void assignMarkers(Mesh& mesh, const Plc& plc, const std::vector<std::uint8_t>& boundarySubsegment) {
+  const std::size_t n = mesh.points.size() / 2, subsegments = mesh.segments.size() / 2;
+  std::vector<std::int32_t>& points = mesh.pointMarkers;
+  points.assign(n, 0);
+  // The boundary's vertices first: 1, the rule of least precedence.
+  const std::size_t halfEdges = std::min(mesh.neighbors.size(), mesh.triangles.size());
+  for (std::size_t h = 0; h < halfEdges; ++h) {
+    if (mesh.neighbors[h] != kNoNeighbor) continue;
+    const std::size_t t = h / 3, i = h % 3;
+    const std::uint32_t a = mesh.triangles[3 * t + (i + 1) % 3], b = mesh.triangles[3 * t + (i + 2) % 3];
+    if (a < n) points[a] = 1;
+    if (b < n) points[b] = 1;
+  }
+  // Per point: the lowest input segment index with a nonzero marker that the point lies on (only
+  // when the input has segment markers).
+  constexpr std::int32_t kNone = std::numeric_limits<std::int32_t>::max();
+  std::vector<std::int32_t> markedSegment;
+  if (!plc.segmentMarkers.empty()) markedSegment.assign(n, kNone);
+  mesh.segmentMarkers.assign(subsegments, 0);
+  for (std::size_t s = 0; s < subsegments; ++s) {
+    const std::uint32_t a = mesh.segments[2 * s], b = mesh.segments[2 * s + 1];
+    const std::int32_t id = s < mesh.segmentIds.size() ? mesh.segmentIds[s] : kNoInputSegment, marker = inputSegmentMarker(plc, id);
+    const bool boundary = s < boundarySubsegment.size() && boundarySubsegment[s] != 0;
+    mesh.segmentMarkers[s] = marker != 0 ? marker : boundary ? 1 : 0;
+    if (marker != 0 && a < n && b < n) {
+      if (id < markedSegment[a]) markedSegment[a] = id;
+      if (id < markedSegment[b]) markedSegment[b] = id;
+    }
+  }
+  const std::size_t inputPoints = plc.points.size() / 2;
+  for (std::size_t v = 0; v < n; ++v) {
+    const std::int32_t own = v < inputPoints && v < plc.pointMarkers.size() ? plc.pointMarkers[v] : 0;
+    if (own != 0) points[v] = own;
+    else if (!markedSegment.empty() && markedSegment[v] != kNone) points[v] = inputSegmentMarker(plc, markedSegment[v]);
+  }
 }
 
 }  // namespace ruppert::detail

@@ -32,8 +32,9 @@ struct Markers {
 // mesh's boundary. Points [0, plc's point count) are the input points, with their own indices
 // (before any jettison).
 Markers computeMarkers(const Mesh& mesh, const Plc& plc);
-// Sets mesh.pointMarkers and mesh.segmentMarkers to computeMarkers(mesh, plc).
-void assignMarkers(Mesh& mesh, const Plc& plc);
+// Sets mesh.pointMarkers and mesh.segmentMarkers to what computeMarkers(mesh, plc) gives, for a mesh
+// whose subsegment s has a triangle on one side only exactly where boundarySubsegment[s] != 0.
+void assignMarkers(Mesh& mesh, const Plc& plc, const std::vector<std::uint8_t>& boundarySubsegment);
 
 // meshEdges() with the given marker per subsegment.
 MeshEdges edgesWith(const Mesh& mesh, const std::vector<std::int32_t>& segmentMarkers);
