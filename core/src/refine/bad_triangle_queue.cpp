@@ -1,8 +1,10 @@
 #include "refine/bad_triangle_queue.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <utility>
 
 namespace ruppert::detail {
@@ -39,8 +41,19 @@ BadTriangleQueue::~BadTriangleQueue() {
 }
 
 int BadTriangleQueue::classOf(double shortest2) {
+  // shortest2 = mantissa * 2^e, mantissa in [0.5, 1): read off the bits of a positive normal number
+  // (what frexp returns, without a library call per new triangle), else from frexp.
   int e = 0;
-  const double mantissa = std::frexp(shortest2, &e);  // shortest2 = mantissa * 2^e, mantissa in [0.5, 1)
+  double mantissa;
+  if (shortest2 >= DBL_MIN && shortest2 <= DBL_MAX) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &shortest2, sizeof bits);
+    e = static_cast<int>(bits >> 52) - 1022;
+    bits = (bits & ((std::uint64_t(1) << 52) - 1)) | (std::uint64_t(1022) << 52);
+    std::memcpy(&mantissa, &bits, sizeof bits);
+  } else {
+    mantissa = std::frexp(shortest2, &e);
+  }
   // Four classes per power of two (of the squared length): cuts at 2^-0.75, 2^-0.5, 2^-0.25.
   const int quarter = (mantissa >= 0.5946035575013605) + (mantissa >= 0.7071067811865476) +
                       (mantissa >= 0.8408964152537145);

@@ -401,11 +401,13 @@ bool Refiner::locateOrReject(const BadTriangle& bt, const double* target, Locati
     return false;
   }
   t_.cavity(target, loc, cavityTris_, cavityBoundary_);
-  if (mesh_.tooCloseToCavity(target, cavityBoundary_)) {
+  const CavityVerdict verdict = mesh_.judgeCavity(target, cavityBoundary_, false);
+  if (verdict.tooClose) {
     ++floorHits_;
     return false;
   }
-  if (!collectEncroached(target, false)) return true;
+  if (!verdict.encroaches) return true;
+  collectEncroached(target, false);
   splitRejected(bt, target);
   return false;
 }

@@ -24,11 +24,14 @@ void OptimalPlacement::reserveScratch() {
 }
 
 void OptimalPlacement::edgesOf(const Triangulation& t, const std::vector<std::uint32_t>& boundary) {
-  edges_.clear();
+  edges_.resize(boundary.size());
+  CavityEdge* e = edges_.data();
   for (std::uint32_t h : boundary) {
-    const double* a = t.pt(t.origin(h));
-    const double* b = t.pt(t.dest(h));
-    edges_.push_back({{a[0], a[1]}, {b[0], b[1]}, t.con[h] != kFree});
+    const std::uint32_t s = h / 3, i = h - 3 * s;
+    const TriangleSlot& r = t.slot(s);
+    const double* a = t.pt(r.tv[i == 2 ? 0 : i + 1]);
+    const double* b = t.pt(r.tv[i == 0 ? 2 : i - 1]);
+    *e++ = {{a[0], a[1]}, {b[0], b[1]}, r.con[i] != kFree};
   }
 }
 
@@ -47,18 +50,18 @@ OptimalPoint OptimalPlacement::pointMeeting(OptimalPointQuery& query, const doub
 
 // Whether x can be inserted for skinny triangle s: in a triangle of the domain, destroying s (in
 // its circumcircle, so in its cavity), not within the length floor of a vertex, encroaching no
-// subsegment of its cavity. Its cavity is left in candidateTris_ / candidateBoundary_.
-bool OptimalPlacement::fits(const MeshAccess& mesh, std::uint32_t s, const double* x, Location& loc) {
+// subsegment of its cavity. Its cavity is left in candidateTris_ / candidateBoundary_, and the
+// smallest sin^2 angle of the triangles it would make in minSin2.
+bool OptimalPlacement::fits(const MeshAccess& mesh, std::uint32_t s, const double* x, Location& loc, double& minSin2) {
   if (!mesh.representable(x)) return false;
   std::uint32_t blocked;
   loc = mesh.walk(s, x, blocked);
   if (blocked != kNone || loc.kind != Location::InTriangle) return false;
   mesh.tri.cavity(x, loc, candidateTris_, candidateBoundary_);
   if (std::find(candidateTris_.begin(), candidateTris_.end(), s) == candidateTris_.end()) return false;
-  if (mesh.tooCloseToCavity(x, candidateBoundary_)) return false;
-  for (std::uint32_t h : candidateBoundary_)
-    if (mesh.tri.con[h] != kFree && mesh.encroachesEdge(x, h)) return false;
-  return true;
+  const CavityVerdict verdict = mesh.judgeCavity(x, candidateBoundary_, true);
+  minSin2 = verdict.minSin2;
+  return !verdict.tooClose && !verdict.encroaches;
 }
 
 // The prediction needs the new vertex's cavity, which depends on the point: it starts from the first
@@ -68,12 +71,15 @@ bool OptimalPlacement::fits(const MeshAccess& mesh, std::uint32_t s, const doubl
 OptimalPlacement::Result OptimalPlacement::propose(const MeshAccess& mesh, const SkinnyTriangle& st, const double* cc,
                                                    double target[2], Location& loc) {
   const Triangulation& t = mesh.tri;
-  firstFits_ = fits(mesh, st.slot, st.first, loc);
+  double sin2 = -1;
+  firstFits_ = fits(mesh, st.slot, st.first, loc, sin2);
   firstSin2_ = -1;
   if (firstFits_) {
-    firstLoc_ = loc, firstTris_ = candidateTris_, firstBoundary_ = candidateBoundary_;
-    firstSin2_ = mesh.newMinSin2(st.first, candidateBoundary_);
+    // Kept for takeFirst by swapping; the boundary is copied only for a search.
+    firstLoc_ = loc, firstSin2_ = sin2;
+    firstTris_.swap(candidateTris_), firstBoundary_.swap(candidateBoundary_);
     if (firstSin2_ >= mesh.sin2Theta) return Result::UseFirst;
+    candidateBoundary_ = firstBoundary_;
   } else if (theta_ < kSplitBeforeSearchBelowDegrees * kPi / 180) {
     return Result::UseFirst;
   } else {
@@ -100,8 +106,8 @@ OptimalPlacement::Result OptimalPlacement::propose(const MeshAccess& mesh, const
     if (!mayMeetBound(query, bound_, guess)) return Result::None;
     const OptimalPoint r = pointMeeting(query, guess, seeds, seedCount);
     Location l;
-    if (r.encroaches || !(r.minAngle > theta_) || !fits(mesh, st.slot, r.x, l)) return Result::None;
-    if (mesh.newMinSin2(r.x, candidateBoundary_) >= mesh.sin2Theta) {
+    if (r.encroaches || !(r.minAngle > theta_) || !fits(mesh, st.slot, r.x, l, sin2)) return Result::None;
+    if (sin2 >= mesh.sin2Theta) {
       target[0] = r.x[0], target[1] = r.x[1], loc = l;
       return Result::Found;
     }
@@ -124,8 +130,8 @@ bool OptimalPlacement::bestBelowBound(const MeshAccess& mesh, const SkinnyTriang
   const OptimalPoint r = optimalSteinerPoint(query, lastSeeds_, lastSeedCount_);
   if (r.encroaches || !(r.minAngle > 0)) return false;
   Location l;
-  if (!fits(mesh, st.slot, r.x, l)) return false;
-  if (!(mesh.newMinSin2(r.x, candidateBoundary_) > firstSin2_ * (1 + gain_))) return false;
+  double sin2;
+  if (!fits(mesh, st.slot, r.x, l, sin2) || !(sin2 > firstSin2_ * (1 + gain_))) return false;
   const double shortest2 = dist2(query.p, query.q);
   for (std::uint32_t h : candidateBoundary_)
     if (dist2(mesh.tri.pt(mesh.tri.origin(h)), r.x) < shortest2) return false;
@@ -149,14 +155,14 @@ bool OptimalPlacement::closedFreeFan(const Triangulation& t, std::uint32_t v) {
   if (start == kNone || !t.alive(start)) return false;
   std::uint32_t s = start;
   do {
-    std::uint32_t i = 0;
-    while (i < 3 && t.tv[3 * s + i] != v) ++i;
+    const TriangleSlot& r = t.slot(s);
+    const std::uint32_t i = r.tv[0] == v ? 0 : r.tv[1] == v ? 1 : r.tv[2] == v ? 2 : 3;
     if (i == 3 || star_.size() > 64) return false;
-    const std::uint32_t h = 3 * s + i;
-    if (t.con[h] != kFree || t.con[next3(h)] != kFree || t.con[prev3(h)] != kFree) return false;
-    star_.push_back(h);
-    // prev3(h) runs from v to origin(h); the triangle across it is the next one around v.
-    const std::uint32_t g = t.twin[prev3(h)];
+    if (r.con[0] != kFree || r.con[1] != kFree || r.con[2] != kFree) return false;
+    star_.push_back(3 * s + i);
+    // The edge before the star's half-edge runs from v to its origin; the triangle across it is the
+    // next one around v.
+    const std::uint32_t g = r.twin[i == 0 ? 2 : i - 1];
     if (g == kNone) return false;
     s = g / 3;
   } while (s != start);

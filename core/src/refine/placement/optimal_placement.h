@@ -99,7 +99,7 @@ class OptimalPlacement {
 
   void edgesOf(const Triangulation& t, const std::vector<std::uint32_t>& boundary);
   OptimalPoint pointMeeting(OptimalPointQuery& query, const double* guess, const double* seeds, std::size_t seedCount) const;
-  bool fits(const MeshAccess& mesh, std::uint32_t s, const double* x, Location& loc);
+  bool fits(const MeshAccess& mesh, std::uint32_t s, const double* x, Location& loc, double& minSin2);
   bool closedFreeFan(const Triangulation& t, std::uint32_t v);
 };
 

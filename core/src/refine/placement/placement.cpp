@@ -12,6 +12,18 @@ namespace {
 constexpr double kPetalReach = 4;  // see PetalPlacement::mayHelp
 }  // namespace
 
+namespace {
+// Whether the line through o and p separates u from w (or passes through one of them).
+bool separates(const double* o, const double* p, const double* u, const double* w) {
+  const double su = orient2d(o, p, u), sw = orient2d(o, p, w);
+  return (su >= 0 && sw <= 0) || (su <= 0 && sw >= 0);
+}
+}  // namespace
+
+// The triangle entered through one of its edges already has p strictly beyond that edge's far side
+// (orient2d's sign is exact and changes with the edge's direction), so that edge is not tested again.
+// Of the other edges, p lies right of one or two; only with two does the straight line from the
+// centroid decide which one the walk leaves by (the first whose ends it separates, else the first).
 Location MeshAccess::walk(std::uint32_t s, const double* p, std::uint32_t& blocked) const {
   blocked = kNone;
   const TriangleSlot& first = tri.slot(s);
@@ -19,28 +31,28 @@ Location MeshAccess::walk(std::uint32_t s, const double* p, std::uint32_t& block
   const double* q1 = tri.pt(first.tv[1]);
   const double* q2 = tri.pt(first.tv[2]);
   const double o[2] = {(q0[0] + q1[0] + q2[0]) / 3, (q0[1] + q1[1] + q2[1]) / 3};
-  std::uint32_t t = s;
+  std::uint32_t t = s, entry = 3;
   for (std::uint32_t step = 0; step < 100000; ++step) {
     const TriangleSlot& r = tri.slot(t);
-    std::uint32_t exit = kNone, fallback = kNone;
+    const double* c[3] = {tri.pt(r.tv[0]), tri.pt(r.tv[1]), tri.pt(r.tv[2])};
     double ori[3];
+    std::uint32_t negative[3], negatives = 0;
     for (std::uint32_t i = 0; i < 3; ++i) {
-      const double* from = tri.pt(r.tv[(i + 1) % 3]);
-      const double* to = tri.pt(r.tv[(i + 2) % 3]);
-      ori[i] = orient2d(from, to, p);
-      if (ori[i] < 0) {
-        if (fallback == kNone) fallback = i;
-        const double su = orient2d(o, p, from), sv = orient2d(o, p, to);
-        if (exit == kNone && ((su >= 0 && sv <= 0) || (su <= 0 && sv >= 0))) exit = i;
-      }
+      ori[i] = i == entry ? 1 : orient2d(c[i == 2 ? 0 : i + 1], c[i == 0 ? 2 : i - 1], p);
+      if (ori[i] < 0) negative[negatives++] = i;
     }
-    if (exit == kNone) exit = fallback;
-    if (exit == kNone) return tri.locationInside(t, ori);
+    if (negatives == 0) return tri.locationInside(t, ori);
+    std::uint32_t exit = negative[0];
+    if (negatives == 2 && !separates(o, p, c[exit == 2 ? 0 : exit + 1], c[exit == 0 ? 2 : exit - 1])) {
+      const std::uint32_t other = negative[1];
+      if (separates(o, p, c[other == 2 ? 0 : other + 1], c[other == 0 ? 2 : other - 1])) exit = other;
+    }
     if (r.con[exit] != kFree || r.twin[exit] == kNone) {
       blocked = 3 * t + exit;
       return Location{};
     }
-    t = r.twin[exit] / 3;
+    const std::uint32_t g = r.twin[exit];
+    t = g / 3, entry = g - 3 * t;
   }
   return Location{};
 }
@@ -68,6 +80,22 @@ double MeshAccess::newMinSin2(const double* x, const std::vector<std::uint32_t>&
   for (std::uint32_t h : boundary)
     worst = std::min(worst, qualityOf(tri.pt(tri.origin(h)), tri.pt(tri.dest(h)), x).sin2MinAngle);
   return worst;
+}
+
+// Each boundary edge's record is read once for its ends and its constraint.
+CavityVerdict MeshAccess::judgeCavity(const double* x, const std::vector<std::uint32_t>& boundary, bool quality) const {
+  CavityVerdict v;
+  for (std::uint32_t h : boundary) {
+    const std::uint32_t t = h / 3, i = h - 3 * t;
+    const TriangleSlot& r = tri.slot(t);
+    const double* a = tri.pt(r.tv[i == 2 ? 0 : i + 1]);
+    const double* b = tri.pt(r.tv[i == 0 ? 2 : i - 1]);
+    if (sq(x, a) < kLengthFloor * kLengthFloor) v.tooClose = true;
+    const std::int32_t c = r.con[i];
+    if (c != kFree && encroaches(x, a, b, c >= curveFirst ? 0 : lensCos2)) v.encroaches = true;
+    if (quality) v.minSin2 = std::min(v.minSin2, qualityOf(a, b, x).sin2MinAngle);
+  }
+  return v;
 }
 
 // The petal of edge uw: points x with angle uxw >= theta and both base angles >= theta. Candidates

@@ -31,6 +31,13 @@ namespace ruppert::detail {
 // under 2 floors are not split, and a split point this close to a vertex is refused.
 inline constexpr double kLengthFloor = 0x1p-38;
 
+// What a new vertex at x would do, from its cavity's boundary (MeshAccess::judgeCavity).
+struct CavityVerdict {
+  bool tooClose = false;    // a vertex of the boundary lies within the length floor of x
+  bool encroaches = false;  // x encroaches a subsegment of the boundary
+  double minSin2 = 1;       // the smallest sin^2 angle of the new triangles (1 unless asked for)
+};
+
 // Read-only queries on the mesh being refined, with the run's bound and encroachment rule.
 class MeshAccess {
  public:
@@ -59,6 +66,9 @@ class MeshAccess {
   bool tooCloseToCavity(const double* x, const std::vector<std::uint32_t>& boundary) const;
   // Smallest sin^2 angle among the triangles that inserting x creates, given x's cavity boundary.
   double newMinSin2(const double* x, const std::vector<std::uint32_t>& boundary) const;
+  // tooCloseToCavity, encroachment of the boundary's subsegments and (if `quality`) newMinSin2 in
+  // one pass over the boundary.
+  CavityVerdict judgeCavity(const double* x, const std::vector<std::uint32_t>& boundary, bool quality) const;
 };
 
 // The triangle to split, and the first choice of point, which has passed every check.
