@@ -1,8 +1,7 @@
 // The Mesh panel: counts, angle range, completeness with reasons, the angle histogram, the event
 // counts and the triangles left skinny on purpose.
 import { EventKind } from '../../wasm/index.js';
-import { rejectedIsCircumcenter, splitShell, undoMove } from '../geometry/event-geometry.js';
-import { splitsCurve } from '../steps/curve-events.js';
+import { rejectedIsCircumcenter, splitShell, splitsCurve, undoMove } from '../geometry/event-geometry.js';
 import { findExemptions } from '../geometry/exemptions.js';
 import { EVENT_KIND_LABELS, EXEMPTION_LABELS } from '../labels.js';
 
