@@ -227,6 +227,7 @@ void writeOutputTable(Staged& s) {
   w.number(double(st.interiorVertices)).number(double(st.offCenterVertices)).number(double(st.intersectionVertices));
   w.number(double(st.rejectedCircumcenters)).number(st.lfsIntegral).number(st.trianglesPerLfsIntegral);
   w.number(st.milliseconds).number(st.reachedAngle).number(double(m.attributesPerPoint));
+  w.array(m.triangleExemptions);
   w.end(s.outputTable, kOutputTableSize);
 }
 

@@ -146,3 +146,33 @@ export function movedVertices(before, after) {
   }
   return moved;
 }
+
+// mesh.triangleExemptions' values (the core's kExemptSmallInputAngle, kExemptSeditiousEdge).
+const SMALL_INPUT_ANGLE = 1;
+const SEDITIOUS_EDGE = 2;
+
+/**
+ * The triangles the core left below the bounds on purpose (§6.6), read from its per-triangle
+ * mesh.triangleExemptions (options.exemptions): { nestled, seditious: triangle indices,
+ * seditiousEdges: [u, w, ...] each seditious triangle's shortest edge, the one the rule is about },
+ * or null when the mesh has none recorded.
+ */
+export function exemptTriangles(mesh) {
+  const flags = mesh?.triangleExemptions;
+  if (!flags) return null;
+  const result = { nestled: [], seditious: [], seditiousEdges: [] };
+  const p = mesh.points;
+  const tri = mesh.triangles;
+  const length2 = (a, b) => (p[2 * b] - p[2 * a]) ** 2 + (p[2 * b + 1] - p[2 * a + 1]) ** 2;
+  for (let t = 0; t < flags.length; t++) {
+    if (flags[t] === SMALL_INPUT_ANGLE) result.nestled.push(t);
+    else if (flags[t] === SEDITIOUS_EDGE) {
+      result.seditious.push(t);
+      const v = [tri[3 * t], tri[3 * t + 1], tri[3 * t + 2]];
+      const l2 = [length2(v[1], v[2]), length2(v[2], v[0]), length2(v[0], v[1])];
+      const e = l2[0] <= l2[1] && l2[0] <= l2[2] ? 0 : l2[1] <= l2[2] ? 1 : 2;
+      result.seditiousEdges.push(v[(e + 1) % 3], v[(e + 2) % 3]);
+    }
+  }
+  return result;
+}

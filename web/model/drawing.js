@@ -108,6 +108,8 @@ export function toMeshOptions(d, { trace = false } = {}) {
     variant: o.variant ?? DEFAULT_OPTIONS.variant,
     encroachment: o.encroachment ?? DEFAULT_OPTIONS.encroachment,
     trace,
+    // The triangles the chapter exempts (§6.6), as the core decides, for the canvas and the Mesh panel.
+    exemptions: true,
   };
   if (o.maxArea > 0) options.maxArea = o.maxArea;
   if (o.maxAngle > 0) options.maxAngle = o.maxAngle;

@@ -6,9 +6,7 @@ import { niceCeiling } from './mesh-panel.js';
 
 const COLOURS = { after: '#3b5bdb', before: '#e8590c', bound: '#0b7285', axis: '#343a40', ground: '#f7f8fa' };
 
-/** "40.12°, 310 obtuse of 1,204 triangles" */
-const summaryText = (s) => `mean smallest angle ${s.mean.toFixed(2)}°, ${s.obtuse.toLocaleString('en-US')} obtuse ` +
-  `of ${s.triangles.toLocaleString('en-US')} triangles`;
+const count = (n) => n.toLocaleString('en-US');
 
 /**
  * Bars of `after`'s smallest-angle histogram with `before`'s as a step outline over the same count
@@ -80,8 +78,8 @@ export function createSmoothingEffect() {
     waiting() {
       box.hidden = false;
       box.dataset.state = 'waiting';
-      $('smoothing-before').textContent = 'meshing without smoothing…';
-      $('smoothing-after').textContent = '–';
+      $('smoothing-mean').textContent = 'meshing without smoothing…';
+      $('smoothing-obtuse').textContent = '–';
       $('smoothing-moved').textContent = '–';
     },
     /** Both meshes: the rows and the histograms; returns how many vertices smoothing moved. */
@@ -91,9 +89,9 @@ export function createSmoothingEffect() {
       const moved = movedVertices(unsmoothed, smoothed);
       box.hidden = false;
       box.dataset.state = 'shown';
-      $('smoothing-before').textContent = summaryText(before);
-      $('smoothing-after').textContent = summaryText(after);
-      $('smoothing-moved').textContent = moved.toLocaleString('en-US');
+      $('smoothing-mean').textContent = `${before.mean.toFixed(2)}° before, ${after.mean.toFixed(2)}° after`;
+      $('smoothing-obtuse').textContent = `${count(before.obtuse)} before, ${count(after.obtuse)} after, of ${count(after.triangles)}`;
+      $('smoothing-moved').textContent = `${count(moved)} of ${count(smoothed.points.length / 2)}`;
       Object.assign(box.dataset, {
         beforeMean: String(before.mean), afterMean: String(after.mean),
         beforeObtuse: String(before.obtuse), afterObtuse: String(after.obtuse), moved: String(moved),

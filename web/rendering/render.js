@@ -28,7 +28,7 @@ function angleClass(angle) {
   return ANGLE_CLASSES.length - 1;
 }
 
-/** Legend rows of the exemptions marked on the canvas (exemptions.js). */
+/** Legend rows of the exemptions marked on the canvas (the core's mesh.triangleExemptions). */
 export function exemptionLegend(exemptions) {
   const rows = [];
   if (exemptions?.nestled.length) rows.push({ colour: COLOURS.exempt, label: EXEMPTION_LABELS.SMALL_INPUT_ANGLE.legend, hatched: true });
@@ -231,7 +231,7 @@ export class Renderer {
    *   pendingChain: { from: pointIndex, to: {x,y}, first } | null, keyCursor: {x,y} | null (keyboard cursor),
    *   notices, step: { final, events, index, shown } | null: `final` the full mesh (its points
    *   number every vertex of every step), `index` the step wanted, `shown` the mesh on screen;
-   *   exemptions (exemptions.js, of `exemptions.mesh`) | null, vertexNumbers: whether to number the vertices
+   *   exemptions (mesh-geometry.js's exemptTriangles, of `exemptions.mesh`) | null, vertexNumbers: whether to number the vertices
    */
   draw(s) {
     const { ctx, dpr } = this;
@@ -301,7 +301,7 @@ export class Renderer {
   }
 
   /**
-   * The triangles left skinny on purpose (§6.6, exemptions.js): those nestled in a small input
+   * The triangles left skinny on purpose (§6.6, as the core marks them): those nestled in a small input
    * angle hatched, those on a seditious edge outlined, the seditious edge itself thick, in teal.
    */
   drawExemptions(x, view, world, screen, px) {
