@@ -195,7 +195,7 @@ async function main(argv) {
       } else if (args.format === 'msh') {
         await write(`${base}.msh`, mesher.toMsh(mesh, plc));
       } else if (args.format === 'vtu') {
-        await write(`${base}.vtu`, mesher.toVtu(mesh));
+        await write(`${base}.vtu`, mesher.toVtu(mesh, { segmentCells: true }));  // as the native CLI
       } else if (args.format === 'geojson') {
         await write(`${base}.geojson`, mesher.toGeoJson(mesh));
       } else {

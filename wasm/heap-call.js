@@ -223,6 +223,7 @@ function readMesh(m, layout, options) {
   // (eventCount: events come with the extras when traced.)
   if (options.edges) mesh.edges = v[at.edges], mesh.edgeMarkers = v[at.edgeMarkers];
   if (options.jettison) mesh.inputToOutput = v[at.inputToOutput];
+  if (options.exemptions) mesh.triangleExemptions = v[at.triangleExemptions];
   return mesh;
 }
 

@@ -120,6 +120,8 @@ export interface TriangulateOptions {
   trace?: boolean;
   /** Compute stats.lfsIntegral, the chapter's size measure (section 6.5). */
   sizeMeasure?: boolean;
+  /** Return mesh.triangleExemptions: per triangle, whether section 6.6 exempts it from the bounds. */
+  exemptions?: boolean;
   /**
    * 'optimal' (default): Erten and Üngör's locally optimal Steiner points and relocation of free
    * vertices, the fewest triangles and the bounds of 35-40 degrees (not always: check complete);
@@ -306,6 +308,11 @@ export interface Mesh {
    * of the point it was merged into, a point outside the domain -1.
    */
   inputToOutput?: Int32Array;
+  /**
+   * With options.exemptions: per triangle, 0, or why refinement left it below the angle bounds on
+   * purpose (section 6.6): 1 its smallest angle is an input angle, 2 its shortest edge is seditious.
+   */
+  triangleExemptions?: Uint8Array;
   indexBase: 0 | 1;
   /** Every bound met, except the exemptions of small input angles (chapter 6.6). */
   complete: boolean;
@@ -419,8 +426,8 @@ export interface Mesher {
   parseGeoJson(text: string, name?: string): ParsedPlc;
   /** Gmsh MSH 4.1 ASCII; `input` gives the segment markers that name the lines' physical groups. */
   toMsh(mesh: Mesh, input?: Plc): string;
-  /** VTK XML UnstructuredGrid (ASCII). */
-  toVtu(mesh: Mesh): string;
+  /** VTK XML UnstructuredGrid (ASCII); see VtuOptions. */
+  toVtu(mesh: Mesh, options?: VtuOptions): string;
   /** GeoJSON FeatureCollection, one Polygon feature per triangle. */
   toGeoJson(mesh: Mesh): string;
   /** Triangle's .ele with its .node (and .poly, .area): a PLC whose triangles triangulate() refines. */
@@ -450,7 +457,15 @@ export declare function toJson(mesh: Mesh, input?: Plc): string;
 export declare function toSvg(mesh: Mesh): string;
 export declare function parseGeoJson(text: string, name?: string): ParsedPlc;
 export declare function toMsh(mesh: Mesh, input?: Plc): string;
-export declare function toVtu(mesh: Mesh): string;
+/** toVtu's options. */
+export interface VtuOptions {
+  /**
+   * Also a line cell per subsegment after the triangles, with a cell array segmentMarker (each
+   * line's marker, 0 for the triangles), as the CLI's --format vtu writes. Default false.
+   */
+  segmentCells?: boolean;
+}
+export declare function toVtu(mesh: Mesh, options?: VtuOptions): string;
 export declare function toGeoJson(mesh: Mesh): string;
 export declare function parseEle(text: string, options: ParseEleOptions): ParsedMeshPlc;
 export declare function toVoronoiNode(mesh: Mesh): string;

@@ -142,8 +142,11 @@ export const toSvg = (mesh) => loaded('toSvg').toSvg(mesh);
 export const parseGeoJson = (text, name) => loaded('parseGeoJson').parseGeoJson(text, name);
 /** Gmsh MSH 4.1 text: triangles, subsegment lines, physical groups from markers and region attributes. */
 export const toMsh = (mesh, input) => loaded('toMsh').toMsh(mesh, input);
-/** VTK XML UnstructuredGrid (.vtu) text with vertex kinds, markers, region attributes and smallest angles. */
-export const toVtu = (mesh) => loaded('toVtu').toVtu(mesh);
+/**
+ * VTK XML UnstructuredGrid (.vtu) text with vertex kinds, markers, region attributes and smallest
+ * angles; { segmentCells: true } adds the subsegments as line cells with their markers.
+ */
+export const toVtu = (mesh, options) => loaded('toVtu').toVtu(mesh, options);
 /** GeoJSON FeatureCollection text: one Polygon feature per triangle. */
 export const toGeoJson = (mesh) => loaded('toGeoJson').toGeoJson(mesh);
 /** Triangle's .ele text with { node, poly?, area? } texts: a PLC with triangles to refine. */

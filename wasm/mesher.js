@@ -111,10 +111,21 @@ export function createMesher(mesher, formats, cli = false) {
     return check(call('readPolyWithNode', text, name, node, nodeName)).plc;
   }
 
-  function write(mesh, input, format) {
+  function write(mesh, input, format, segmentCells = false) {
     const checked = checkMesh(mesh);
     const plc = input == null ? null : checkPlc(input);
-    return check(call('writeMesh', checked, plc, format)).text;
+    return check(call('writeMesh', checked, plc, format, segmentCells)).text;
+  }
+
+  // toVtu's options: { segmentCells } (core's VtuOptions), each checked.
+  function vtuSegmentCells(options) {
+    if (options === undefined || options === null) return false;
+    const fail = (message) => new MeshError('INVALID_OPTION', message);
+    if (typeof options !== 'object') throw fail(`toVtu(mesh, options): options must be an object, got ${typeof options}`);
+    rejectUnknownKeys(options, ['segmentCells'], 'toVtu\'s options', fail);
+    const { segmentCells = false } = options;
+    if (typeof segmentCells !== 'boolean') throw fail(`toVtu's options.segmentCells must be true or false, got ${JSON.stringify(segmentCells)}`);
+    return segmentCells;
   }
 
   // Refining a mesh: Triangle's .ele text with { node, poly?, area?, names } texts.
@@ -167,7 +178,7 @@ export function createMesher(mesher, formats, cli = false) {
     toSvg: (mesh) => write(mesh, null, 'svg'),
     parseGeoJson: (text, name = '<geojson>') => read(text, 'geojson', name, 'parseGeoJson'),
     toMsh: (mesh, input) => write(mesh, input, 'msh'),
-    toVtu: (mesh) => write(mesh, null, 'vtu'),
+    toVtu: (mesh, options) => write(mesh, null, 'vtu', vtuSegmentCells(options)),
     toGeoJson: (mesh) => write(mesh, null, 'geojson'),
     /** Whether the text formats are loaded (init() without formats: false). */
     hasFormats: formats !== null,

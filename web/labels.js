@@ -31,7 +31,7 @@ export const EVENT_KIND_LABELS = {
 
 /**
  * The reasons (mesh.reasons' kinds) whose triangles the page finds and marks itself
- * (exemptions.js): their legend rows and their part of the Mesh panel's Exempt row.
+ * (mesh.triangleExemptions): their legend rows and their part of the Mesh panel's Exempt row.
  */
 export const EXEMPTION_LABELS = {
   SMALL_INPUT_ANGLE: { legend: 'in a small input angle (exempt)', row: 'in small input angles (hatched)' },

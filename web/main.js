@@ -6,14 +6,15 @@
 // meshing/meshing.js (MeshScheduler: throttled, in a worker) -> the renderer, the mesh panel, the
 // display panel, step mode, the status line, and a postMessage to a host.
 //
-// Folders: editing/ (editor, toolbar, history), panels/, rendering/, steps/ (step mode), meshing/,
-// io/ (files, the URL hash, the embed protocol), geometry/ (measures of a mesh, no DOM); drawing.js
-// (the model) and labels.js (the page's words) are shared by all of them.
-import { cloneDrawing, drawingBounds, emptyDrawing, fromPlc } from './drawing.js';
+// Floors, each importing only from those below it (tests/browser/layers.test.mjs): labels.js (the
+// page's words), geometry/ (measures of a mesh, no DOM), model/ (the drawing), rendering/, then the
+// parts: editing/ (editor, toolbar, history), panels/, steps/ (step mode), meshing/, io/ (files, the
+// URL hash, the embed protocol); this file on top hands each part the services beside it.
+import { cloneDrawing, drawingBounds, emptyDrawing, fromPlc } from './model/drawing.js';
 import { createCompareView } from './rendering/compare-view.js';
 import { createDisplayPanel } from './panels/display-panel.js';
 import { Editor } from './editing/editor.js';
-import { isEditable, isEmbedded, listenToHost, postError, postMesh, postReady } from './io/embed.js';
+import { isEditable, isEmbedded, listenToHost, postError, postMesh, postMeshed, postReady, postStepped } from './io/embed.js';
 import { createExportMenu } from './io/export-menu.js';
 import { createFilePanel } from './io/file-panel.js';
 import { parseInput, parsePolyText } from './io/files.js';
@@ -26,20 +27,24 @@ import { createParametersPanel } from './panels/parameters-panel.js';
 import { createPresetBox } from './panels/preset-box.js';
 import { PRESETS, findPreset } from './panels/presets.js';
 import { Renderer } from './rendering/render.js';
+import { createSmoothingEffect } from './panels/smoothing-effect.js';
 import { createStartHere } from './panels/start-here.js';
-import { setStatus } from './panels/status-line.js';
+import { setStatus, showNotices, showProgress, startProgress, stopProgress } from './panels/status-line.js';
 import { createStepsPanel } from './steps/steps-panel.js';
+import { drawStep, showsStep } from './steps/step-overlay.js';
 import { createToolbar } from './editing/toolbar.js';
 import { decodePageState } from './io/url-state.js';
 import { View } from './rendering/view.js';
 
 const $ = (id) => document.getElementById(id);
+// The status line, a service every part that reports to the reader is handed.
+const status = { setStatus, showNotices, showProgress, startProgress, stopProgress };
 
 const canvas = $('canvas');
 const view = new View();
 // The mesh is drawn in WebGL when the browser has it (`?renderer=2d` asks for the 2D canvas).
 const wantGl = new URLSearchParams(location.search).get('renderer') !== '2d';
-const renderer = new Renderer(canvas, wantGl ? $('gl-canvas') : null);
+const renderer = new Renderer(canvas, wantGl ? $('gl-canvas') : null, { draw: drawStep, shows: showsStep });
 $('gl-canvas').hidden = renderer.gl === null;
 document.body.dataset.renderer = renderer.gl ? 'webgl' : '2d';
 $('renderer-note').hidden = renderer.gl !== null || !wantGl;
@@ -73,6 +78,8 @@ const app = {
   snap: false,              // toolbar
   mesh: null,               // meshing: the latest mesh, or null
   meshedPlc: null,          // meshing: the input it was made from (for exports)
+  meshedOptions: null,      // meshing: the options it was made with
+  refinedMesh: null,        // meshing: a smoothed mesh's mesh before smoothing, once meshed, else null
   notices: [],              // meshing
   colorMode: 'angle',       // display panel
   stepMode: false,          // steps panel
@@ -116,7 +123,11 @@ function scheduleDraw() {
 function draw({ print = false } = {}) {
   if (app.viewMoved) link.writeSoon();
   const step = app.stepMode && app.mesh?.events
-    ? { final: app.mesh, events: app.mesh.events, index: steps.index, shown: app.stepMesh, stage: steps.stage, context: steps.context }
+    ? {
+      // A smoothed mesh's events happened in the mesh before smoothing: their places are its.
+      final: app.refinedMesh ?? app.mesh, smoothed: app.refinedMesh ? app.mesh : null,
+      events: app.mesh.events, index: steps.index, shown: app.stepMesh, stage: steps.stage, context: steps.context,
+    }
     : null;
   const aid = (value, none) => (print ? none : value);
   renderer.draw({
@@ -204,21 +215,23 @@ function restore(drawing) {
 }
 
 // ---------------------------------------------------------------- the panels
-const link = createPageLink({ app, view, stepIndex: () => steps.index, onLinkChanged: (drawing) => setDrawing(drawing) });
+const link = createPageLink({ app, view, stepIndex: () => steps.index, onLinkChanged: (drawing) => setDrawing(drawing), status });
 const hover = createHoverInfo({ app, scheduleDraw });
 // A changed option makes the drawing no longer the preset: its caption and stages speak of the
 // preset's options (the side-by-side comparison stays, meshed with the new ones).
 const parameters = createParametersPanel({
-  app, editor, changed: (commit) => { presets.notPreset({ keepCompare: true }); changed(commit); },
+  app, editor, changed: (commit) => { presets.notPreset({ keepCompare: true }); changed(commit); }, status,
 });
 const display = createDisplayPanel({ app, scheduleDraw, writeLink: link.write });
 const meshPanel = createMeshPanel();
+const smoothingEffect = createSmoothingEffect();
 const steps = createStepsPanel({
   app, renderer, meshPanel, scheduleDraw, writeLinkSoon: link.writeSoon, remeshNow: () => meshing.remesh(0, { quiet: true }),
+  postStepped, status,
 });
 const compare = createCompareView({ drawing: () => app.drawing });
 const meshing = createMeshing({
-  app, renderer, meshPanel, display, steps, scheduleDraw, onMeshed: () => compare.update(),
+  app, renderer, meshPanel, display, steps, smoothingEffect, scheduleDraw, host: { postMeshed, postError }, status, onMeshed: () => compare.update(),
   onArrival: bench ? () => {
     meshArrivedAt = performance.now();
     document.body.dataset.meshArrivedAt = String(meshArrivedAt);
@@ -230,11 +243,12 @@ const toolbar = createToolbar({
 });
 const presets = createPresetBox({
   drawingOptions: () => app.drawing.options, setDrawing, restartSteps: steps.restart, setStages: steps.setStages, compare, shared: !embedded,
+  parseInput, loading, status,
 });
-createFilePanel({ drawingOptions: () => app.drawing.options, setDrawing, notPreset: presets.notPreset });
+createFilePanel({ drawingOptions: () => app.drawing.options, setDrawing, notPreset: presets.notPreset, loading, status });
 createExportMenu({
   meshed: () => ({ mesh: app.mesh, plc: app.meshedPlc }), drawing: () => app.drawing, renderer,
-  drawForPrint: () => draw({ print: true }), redraw: () => draw(), writeLink: link.write,
+  drawForPrint: () => draw({ print: true }), redraw: () => draw(), writeLink: link.write, status,
 });
 createStartHere({ embedded });
 

@@ -89,7 +89,7 @@ void writeOutputs(const ruppert::cli::CliArgs& args, ruppert::Mesh& mesh, const 
         writeSingle(base, ".msh", [&](std::ostream& out) { ruppert::writeMsh(out, mesh, plc); });
         break;
       case OutputFormat::Vtu:
-        writeSingle(base, ".vtu", [&](std::ostream& out) { ruppert::writeVtu(out, mesh); });
+        writeSingle(base, ".vtu", [&](std::ostream& out) { ruppert::writeVtu(out, mesh, {/*segmentCells=*/true}); });
         break;
       case OutputFormat::GeoJson:
         writeSingle(base, ".geojson", [&](std::ostream& out) { ruppert::writeGeoJson(out, mesh); });

@@ -67,7 +67,7 @@ test('the histogram has a count axis and a line at the bound, in view at 1440 x 
   // The axis goes to a round number at or above the fullest bin.
   const fullest = await page.evaluate(async () => {
     const { decodeDrawing } = await import('./io/url-state.js');
-    const { toMeshOptions, toPlc } = await import('./drawing.js');
+    const { toMeshOptions, toPlc } = await import('./model/drawing.js');
     const { init } = await import('../wasm/index.js');
     const drawing = decodeDrawing(location.hash);
     return Math.max(...(await init()).triangulate(toPlc(drawing), toMeshOptions(drawing)).stats.angleHistogram);
@@ -130,7 +130,7 @@ test('a resize to phone width keeps the drawing in view, also after a zoom', asy
       await page.waitForTimeout(100);
     }
     const inView = () => page.evaluate(async () => {
-      const { drawingBounds } = await import('./drawing.js');
+      const { drawingBounds } = await import('./model/drawing.js');
       const b = drawingBounds((await import('./io/url-state.js')).decodeDrawing(location.hash));
       const { view } = window.ruppertBench;
       const a = view.toScreen(b.minX, b.minY);

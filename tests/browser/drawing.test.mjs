@@ -2,7 +2,7 @@
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { init } from '../../wasm/index.js';
-import { DEFAULT_OPTIONS, PAGE_FLAGS, emptyDrawing, flagOption, toMeshOptions, toPlc } from '../../web/drawing.js';
+import { DEFAULT_OPTIONS, PAGE_FLAGS, emptyDrawing, flagOption, toMeshOptions, toPlc } from '../../web/model/drawing.js';
 import { decodeDrawing, encodeDrawing } from '../../web/io/url-state.js';
 import {
   SCREENSHOTS, canvasFingerprint, clickCanvas, launch, moveOnCanvas, openPage, readStats, settle,

@@ -4,7 +4,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { after, before, test } from 'node:test';
 import { init, parsePoly } from '../../wasm/index.js';
-import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/drawing.js';
+import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/model/drawing.js';
 import { findPreset } from '../../web/panels/presets.js';
 import { SCREENSHOTS, launch, openPage, startHostPage } from './harness.mjs';
 
@@ -58,7 +58,7 @@ test('the first message is ruppert:ready with the protocol and package versions'
   assert.equal(first.version, 1);
   assert.equal(first.packageVersion, VERSION);
   assert.ok(first.presets.includes('figure-6-4'));
-  assert.deepEqual(first.options, ['minAngle', 'maxArea', 'placement', 'variant', 'encroachment', 'maxSteiner']);
+  assert.deepEqual(first.options, ['minAngle', 'maxAngle', 'smooth', 'maxArea', 'placement', 'variant', 'encroachment', 'maxSteiner']);
   assert.equal((await page.evaluate(() => window.replies.filter((r) => r.type === 'ruppert:ready'))).length, 1);
   // ruppert:hello asks again.
   const again = await ask(page, { type: 'ruppert:hello', id: 'h' }, 'ruppert:ready');
@@ -127,6 +127,38 @@ test('ruppert:getMesh answers with the mesh the stats describe, markers and attr
   const expected = mesher.triangulate(parsePoly(MARKED), { minAngle: 30, maxArea: 0.5 });
   assert.equal(mesh.triangles.length, expected.triangles.length);
   assert.deepEqual(Array.from(mesh.points), Array.from(expected.points));
+  assert.deepEqual(errors, []);
+  await page.close();
+});
+
+test('a load passes maxAngle and smooth on as the package takes them', async () => {
+  const { page, errors } = await openHost();
+  const frame = page.frameLocator('#f');
+  const cases = [
+    { minAngle: 30, maxArea: 0.05, maxAngle: 100, smooth: true },
+    { minAngle: 30, maxArea: 0.05, smooth: 2 },
+  ];
+  for (const [k, options] of cases.entries()) {
+    const from = await page.evaluate(() => window.replies.length);
+    await page.evaluate(([poly, o, id]) => {
+      window.send({ type: 'ruppert:load', id, poly, options: o });
+      window.send({ type: 'ruppert:getMesh', id: `${id}-mesh` });
+    }, [RECTANGLE, options, `smooth-${k}`]);
+    await page.waitForFunction((n) => window.replies.slice(n).some((r) => r.type === 'ruppert:mesh'), from, { timeout: 20_000 });
+    const mesh = (await repliesSince(page, from)).find((r) => r.type === 'ruppert:mesh');
+    const expected = mesher.triangulate(RECTANGLE_PLC, options);
+    const unsmoothed = mesher.triangulate(RECTANGLE_PLC, { ...options, smooth: 0 });
+    assert.deepEqual(Array.from(mesh.points), Array.from(expected.points), `case ${k}: the package's mesh`);
+    assert.notDeepEqual(Array.from(mesh.points), Array.from(unsmoothed.points), `case ${k}: smoothing moved vertices`);
+    assert.equal(await frame.locator('#smooth').isChecked(), true);
+    assert.equal(await frame.locator('#max-angle').inputValue(), options.maxAngle ? String(options.maxAngle) : '');
+  }
+  const badAngle = await ask(page, { type: 'ruppert:load', id: 'a', poly: RECTANGLE, options: { maxAngle: 50 } }, 'ruppert:error');
+  assert.equal(badAngle.code, 'INVALID_OPTION');
+  assert.match(badAngle.message, /maxAngle must be a number above 60 and below 180/);
+  const badSmooth = await ask(page, { type: 'ruppert:load', id: 's', poly: RECTANGLE, options: { smooth: 'yes' } }, 'ruppert:error');
+  assert.equal(badSmooth.code, 'INVALID_OPTION');
+  assert.match(badSmooth.message, /smooth must be true, false or a whole number of passes in \[0, 100\]/);
   assert.deepEqual(errors, []);
   await page.close();
 });

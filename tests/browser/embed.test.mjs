@@ -2,7 +2,7 @@
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { init } from '../../wasm/index.js';
-import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/drawing.js';
+import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/model/drawing.js';
 import { presetDrawing } from '../../web/panels/presets.js';
 import { encodeDrawing } from '../../web/io/url-state.js';
 import { SCREENSHOTS, launch, openPage, settle, startHostPage } from './harness.mjs';

@@ -5,7 +5,7 @@
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { EventKind, init } from '../../wasm/index.js';
-import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/drawing.js';
+import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/model/drawing.js';
 import { findPreset } from '../../web/panels/presets.js';
 import { SCREENSHOTS, launch, openPage, settle } from './harness.mjs';
 
@@ -132,7 +132,15 @@ test('triangles in small input angles and on seditious edges are counted as the 
   assert.match(legend, /in a small input angle \(exempt\)/);
   assert.match(legend, /seditious edge \(exempt\)/);
   // Zoomed to one of each: the violet hatching and the orange edges show there.
-  const { nestled: [first], seditious: [other] } = await page.evaluate(() => window.ruppertBench.exemptions());
+  const marked = await page.evaluate(() => window.ruppertBench.exemptions());
+  const { nestled: [first], seditious: [other] } = marked;
+  // They are the core's: mesh.triangleExemptions, 1 nestled, 2 seditious, as many as reasons count.
+  const flags = Array.from(mesh.triangleExemptions);
+  assert.equal(flags.length, mesh.triangles.length / 3);
+  assert.deepEqual(marked.nestled, flags.flatMap((f, t) => (f === 1 ? [t] : [])));
+  assert.deepEqual(marked.seditious, flags.flatMap((f, t) => (f === 2 ? [t] : [])));
+  assert.equal(marked.nestled.length, nestled);
+  assert.equal(marked.seditious.length, seditious);
   await zoomTo(first);
   const violet = await countColour([0x70, 0x48, 0xe8]);
   await page.screenshot({ path: `${SCREENSHOTS}exemptions-fan-nestled.png` });

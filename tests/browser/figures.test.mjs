@@ -3,7 +3,7 @@
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { init } from '../../wasm/index.js';
-import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/drawing.js';
+import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/model/drawing.js';
 import { triangleShape } from '../../web/geometry/mesh-geometry.js';
 import { DEFAULT_PRESET, PRESETS, findPreset } from '../../web/panels/presets.js';
 import { SCREENSHOTS, launch, openPage, readStats, settle } from './harness.mjs';

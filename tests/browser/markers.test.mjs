@@ -3,8 +3,14 @@
 // written by every export (.poly, .msh physical groups, .vtu point markers, .geojson edge markers,
 // the drawing's .poly).
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
+import { spawnSync } from 'node:child_process';
+import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { after, before, test } from 'node:test';
+import { fileURLToPath } from 'node:url';
+import { decodeDrawing } from '../../web/io/url-state.js';
+import { toMeshOptions } from '../../web/model/drawing.js';
 import { SCREENSHOTS, launch, openPage, settle, openExportMenu } from './harness.mjs';
 
 let harness;
@@ -44,6 +50,12 @@ const MARKED = `8 2 0 0
 0 5 5
 `;
 
+// The CLI's flags for the mesher's options the page sets.
+const CLI_FLAGS = {
+  minAngle: '--min-angle', maxAngle: '--max-angle', maxArea: '--max-area', maxSteiner: '--max-steiner',
+  placement: '--placement', encroachment: '--encroachment', variant: '--variant',
+};
+
 async function exportFile(button) {
   if (button.startsWith('#export-')) await openExportMenu(page);
   const [download] = await Promise.all([page.waitForEvent('download'), page.click(button)]);
@@ -79,6 +91,29 @@ test('markers 1-4 of a loaded .poly are shown and written by every export', asyn
   assert.deepEqual([...lineMarkers].sort(), [1, 2, 3, 4], 'the lines carry markers 1-4');
   assert.ok(cellMarkers.every((m, c) => types[c] === 3 || m === 0), 'the triangles have none');
   for (const name of ['regionAttribute', 'minAngle']) assert.equal(array(name).length, types.length, `${name}: one value a cell`);
+  // The core's writer made it: the CLI's --format vtu of the same input, with the page's options
+  // (the package's defaults), is the same text. The native CLI's too, when it is built, but for the
+  // last digits of the smallest angles, which come from the C library's atan2 (glibc's there,
+  // Emscripten's here): those are compared to 12 significant digits.
+  const roundAngles = (text) => text.replace(/(Name="minAngle" format="ascii">)([^<]*)</,
+    (all, open, values) => `${open}${values.trim().split(/\s+/).map((v) => Number(v).toPrecision(12)).join(' ')}<`);
+  const options = toMeshOptions(decodeDrawing(await page.evaluate(() => location.hash)));
+  const flags = Object.entries(CLI_FLAGS).flatMap(([key, flag]) => (options[key] === undefined ? [] : [flag, String(options[key])]));
+  assert.ok(flags.includes('--max-area'), `the page's options, the lake's max area among them: ${flags.join(' ')}`);
+  const dir = mkdtempSync(join(tmpdir(), 'ruppert-vtu-'));
+  try {
+    writeFileSync(join(dir, 'marked.poly'), MARKED);
+    const cliVtu = (command, args) => {
+      const run = spawnSync(command, [...args, ...flags, '--format', 'vtu', '-o', join(dir, 'cli'), join(dir, 'marked.poly')], { encoding: 'utf8' });
+      assert.equal(run.status, 0, run.stderr);
+      return readFileSync(join(dir, 'cli.vtu'), 'utf8');
+    };
+    assert.equal(vtu, cliVtu(process.execPath, [fileURLToPath(new URL('../../wasm/cli.js', import.meta.url))]), 'the package CLI\'s .vtu');
+    const native = fileURLToPath(new URL('../../build-native/core/ruppert', import.meta.url));
+    if (existsSync(native)) assert.equal(roundAngles(vtu), roundAngles(cliVtu(native, [])), 'the native CLI\'s .vtu');
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
   // .geojson: each triangle's edge markers.
   const geojson = JSON.parse(await exportFile('#export-geojson'));
   const edgeMarkers = new Set(geojson.features.flatMap((f) => f.properties.edgeMarkers));

@@ -4,7 +4,7 @@
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { EventKind, init } from '../../wasm/index.js';
-import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/drawing.js';
+import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/model/drawing.js';
 import { presetDrawing } from '../../web/panels/presets.js';
 import { SCREENSHOTS, canvasFingerprint, launch, openPage, settle } from './harness.mjs';
 

@@ -4,7 +4,7 @@
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { init } from '../../wasm/index.js';
-import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/drawing.js';
+import { DEFAULT_OPTIONS, toMeshOptions, toPlc } from '../../web/model/drawing.js';
 import { triangleShape } from '../../web/geometry/mesh-geometry.js';
 import { findPreset } from '../../web/panels/presets.js';
 import { SCREENSHOTS, canvasFingerprint, launch, openPage, readStats, settle } from './harness.mjs';

@@ -40,7 +40,8 @@ inline constexpr const char* kOutputFields[] = {
     "stats.vertices", "stats.triangles", "stats.minAngle", "stats.maxAngle", "stats.angleHistogram:f64",
     "stats.inputVertices", "stats.segmentVertices", "stats.interiorVertices", "stats.offCenterVertices",
     "stats.intersectionVertices", "stats.rejectedCircumcenters", "stats.lfsIntegral",
-    "stats.trianglesPerLfsIntegral", "stats.milliseconds", "stats.reachedAngle", "attributesPerPoint", "packedBytes"};
+    "stats.trianglesPerLfsIntegral", "stats.milliseconds", "stats.reachedAngle", "attributesPerPoint",
+    "triangleExemptions:u8", "packedBytes"};
 
 // Derived outputs: rp_stage_derived's table (the old mesh to refine, then order and voronoi) and
 // rp_derived_table's.

@@ -294,7 +294,8 @@ void writeOutputTable(Staged& s) {
   w.array(s.histogram).number(double(st.inputVertices)).number(double(st.segmentVertices));
   w.number(double(st.interiorVertices)).number(double(st.offCenterVertices)).number(double(st.intersectionVertices));
   w.number(double(st.rejectedCircumcenters)).number(st.lfsIntegral).number(st.trianglesPerLfsIntegral);
-  w.number(st.milliseconds).number(st.reachedAngle).number(double(m.attributesPerPoint)).number(0);
+  w.number(st.milliseconds).number(st.reachedAngle).number(double(m.attributesPerPoint));
+  w.array(m.triangleExemptions).number(0);
   w.end(s.outputTable, kOutputTableSize);
   packTable(s.outputTable, kPackedOutput, s.block);
 }

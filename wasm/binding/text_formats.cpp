@@ -60,7 +60,8 @@ val readPolyWithNode(std::string polyText, std::string polyName, std::string nod
 }
 
 // format: "node", "ele", "poly", "json", "svg", "msh", "vtu" or "geojson". `input` may be null (no holes or regions).
-val writeMesh(val meshJs, val inputJs, std::string format) {
+// segmentCells: the .vtu's VtuOptions::segmentCells (the other formats ignore it).
+val writeMesh(val meshJs, val inputJs, std::string format, bool segmentCells) {
   return guarded([&] {
     const ruppert::Mesh mesh = meshFromJs(meshJs);
     const ruppert::Plc input = inputJs.isNull() || inputJs.isUndefined() ? ruppert::Plc{} : plcFromJs(inputJs);
@@ -78,7 +79,7 @@ val writeMesh(val meshJs, val inputJs, std::string format) {
     } else if (format == "msh") {
       text = ruppert::toMsh(mesh, input);
     } else if (format == "vtu") {
-      text = ruppert::toVtu(mesh);
+      text = ruppert::toVtu(mesh, ruppert::VtuOptions{segmentCells});
     } else if (format == "geojson") {
       text = ruppert::toGeoJson(mesh);
     } else if (format == "edge") {

@@ -10,9 +10,9 @@
 // Nothing is added until the curve is complete (one undo step); Esc or another tool drops it.
 // With Select, a curve is picked by its stroke and dragged whole; its handles (an arc's centre, a
 // Bézier's controls) are dragged as curve-data.js's rules say, which keep every arc valid.
-import { Item, addPoint, hitTest, moveItem } from '../drawing.js';
-import { CurveItem, cloneCurves, curveShape, curvesOf, followPoints, handlesOf, twinArcs } from './curve-data.js';
-import { distanceTo, onBisector, segmentDistance2, shapeOf } from './curve-geometry.js';
+import { Item, addPoint, hitTest, moveItem } from '../model/drawing.js';
+import { CurveItem, cloneCurves, curveShape, curvesOf, followPoints, handlesOf, twinArcs } from '../model/curve-data.js';
+import { distanceTo, onBisector, segmentDistance2, shapeOf } from '../model/curve-geometry.js';
 
 export const CURVE_TOOLS = Object.freeze(['circle', 'arc', 'bezier']);
 export const isCurveTool = (tool) => CURVE_TOOLS.includes(tool);

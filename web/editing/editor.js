@@ -13,7 +13,7 @@
 // an undo step (a click, the end of a drag), false only re-meshes (while dragging).
 // Read-only (an embed without &edit=1): the drawing cannot change; pointer and arrows pan, the
 // wheel and +/- zoom, hovering still reports triangles.
-import { Item, addPoint, addSegment, hitTest, itemPosition, removeItem } from '../drawing.js';
+import { Item, addPoint, addSegment, hitTest, itemPosition, removeItem } from '../model/drawing.js';
 import { CURVE_TOOL_HINTS, CurveTools, hitWithCurves, isCurveTool, moveWithCurves, snapshot } from './curve-tools.js';
 import { snapToGrid } from '../rendering/view.js';
 

@@ -1,6 +1,6 @@
 // Undo/redo by snapshots: every committed edit pushes a copy of the drawing. Drawings are small
 // (a few thousand numbers), so whole copies are simpler and safer than inverse operations.
-import { cloneDrawing } from '../drawing.js';
+import { cloneDrawing } from '../model/drawing.js';
 
 const LIMIT = 200;
 

@@ -1,6 +1,6 @@
 // The toolbar's tools and edit and view buttons (undo, redo, delete, clear, fit, snap), and the
 // keys that are not the editor's own (editor.js passes them on).
-import { emptyDrawing } from '../drawing.js';
+import { emptyDrawing } from '../model/drawing.js';
 import { TOOL_HINTS } from './editor.js';
 
 const $ = (id) => document.getElementById(id);

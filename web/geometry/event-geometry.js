@@ -100,3 +100,18 @@ export function insertionsBefore(events, k) {
   }
   return counts[Math.max(0, Math.min(k, events.count))];
 }
+
+/**
+ * Whether a SEGMENT_SPLIT put its vertex off the chord of the subsegment it split: a curve's
+ * piece, split on its curve (a midpoint or shell split stays on the chord, to rounding). For the
+ * Mesh panel's event counts, which have the trace and the points alone.
+ */
+export function splitsCurve(events, e, points) {
+  if (events.kind[e] !== EventKind.SEGMENT_SPLIT) return false;
+  const a = events.a[e], b = events.b[e];
+  const ax = points[2 * a], ay = points[2 * a + 1];
+  const dx = points[2 * b] - ax, dy = points[2 * b + 1] - ay;
+  const length = Math.hypot(dx, dy);
+  const off = Math.abs(dx * (events.xy[2 * e + 1] - ay) - dy * (events.xy[2 * e] - ax)) / (length || 1);
+  return off > 1e-9 * length;
+}

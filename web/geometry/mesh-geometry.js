@@ -105,3 +105,74 @@ export function findTriangle(mesh, x, y, hint = -1) {
   for (let s = 0; s < n; s++) if (contains(mesh, s, x, y)) return s;
   return -1;
 }
+
+/** Bins of smallestAngleSummary's histogram: one degree each over [0, 60], the smallest angle's range. */
+export const SMALLEST_ANGLE_BINS = 60;
+
+/**
+ * What smoothing is meant to change, measured on one mesh: a histogram of the triangles' smallest
+ * angles (one-degree bins over [0, 60]; 60 itself in the last), their mean in degrees, and how
+ * many triangles are obtuse (largest angle over 90 degrees: the longest edge's square exceeds
+ * the sum of the other two's).
+ */
+export function smallestAngleSummary(mesh) {
+  const smallest = minAngles(mesh);
+  const histogram = new Uint32Array(SMALLEST_ANGLE_BINS);
+  let sum = 0;
+  for (const angle of smallest) {
+    histogram[Math.min(SMALLEST_ANGLE_BINS - 1, Math.floor(angle))]++;
+    sum += angle;
+  }
+  const p = mesh.points;
+  const tri = mesh.triangles;
+  let obtuse = 0;
+  for (let t = 0; t < smallest.length; t++) {
+    const i = 2 * tri[3 * t]; const j = 2 * tri[3 * t + 1]; const k = 2 * tri[3 * t + 2];
+    const a2 = (p[j] - p[i]) ** 2 + (p[j + 1] - p[i + 1]) ** 2;
+    const b2 = (p[k] - p[j]) ** 2 + (p[k + 1] - p[j + 1]) ** 2;
+    const c2 = (p[i] - p[k]) ** 2 + (p[i + 1] - p[k + 1]) ** 2;
+    const longest = Math.max(a2, b2, c2);
+    if (longest > a2 + b2 + c2 - longest) obtuse++;
+  }
+  return { histogram, mean: smallest.length ? sum / smallest.length : NaN, obtuse, triangles: smallest.length };
+}
+
+/** How many vertices sit elsewhere in `after` than in `before` (two meshes numbering the same vertices). */
+export function movedVertices(before, after) {
+  const n = Math.min(before.points.length, after.points.length) / 2;
+  let moved = 0;
+  for (let v = 0; v < n; v++) {
+    if (before.points[2 * v] !== after.points[2 * v] || before.points[2 * v + 1] !== after.points[2 * v + 1]) moved++;
+  }
+  return moved;
+}
+
+// mesh.triangleExemptions' values (the core's kExemptSmallInputAngle, kExemptSeditiousEdge).
+const SMALL_INPUT_ANGLE = 1;
+const SEDITIOUS_EDGE = 2;
+
+/**
+ * The triangles the core left below the bounds on purpose (§6.6), read from its per-triangle
+ * mesh.triangleExemptions (options.exemptions): { nestled, seditious: triangle indices,
+ * seditiousEdges: [u, w, ...] each seditious triangle's shortest edge, the one the rule is about },
+ * or null when the mesh has none recorded.
+ */
+export function exemptTriangles(mesh) {
+  const flags = mesh?.triangleExemptions;
+  if (!flags) return null;
+  const result = { nestled: [], seditious: [], seditiousEdges: [] };
+  const p = mesh.points;
+  const tri = mesh.triangles;
+  const length2 = (a, b) => (p[2 * b] - p[2 * a]) ** 2 + (p[2 * b + 1] - p[2 * a + 1]) ** 2;
+  for (let t = 0; t < flags.length; t++) {
+    if (flags[t] === SMALL_INPUT_ANGLE) result.nestled.push(t);
+    else if (flags[t] === SEDITIOUS_EDGE) {
+      result.seditious.push(t);
+      const v = [tri[3 * t], tri[3 * t + 1], tri[3 * t + 2]];
+      const l2 = [length2(v[1], v[2]), length2(v[2], v[0]), length2(v[0], v[1])];
+      const e = l2[0] <= l2[1] && l2[0] <= l2[2] ? 0 : l2[1] <= l2[2] ? 1 : 2;
+      result.seditiousEdges.push(v[(e + 1) % 3], v[(e + 2) % 3]);
+    }
+  }
+  return result;
+}

@@ -30,7 +30,7 @@
 // Replies go to the message's sender, the page's own news to window.parent (the page itself when
 // it is not in a frame: it ignores what it sent). They carry a drawing's mesh, nothing private, so
 // any origin may receive them ('*'); any origin may also send a drawing to show.
-import { DEFAULT_OPTIONS, MIN_ANGLE_RANGE, PACKAGE_OPTION_NAMES } from '../drawing.js';
+import { DEFAULT_OPTIONS, MIN_ANGLE_RANGE, PACKAGE_OPTION_NAMES, SMOOTH_PASSES_RANGE } from '../model/drawing.js';
 import { ENCROACHMENT_LABELS, PLACEMENT_LABELS, VARIANT_LABELS } from '../labels.js';
 
 /** The protocol's version: a host checks `ready.version` against the one it was written for. */
@@ -111,6 +111,11 @@ export function postMesh(mesh, id, target) {
 const { min, max } = MIN_ANGLE_RANGE;
 const OPTION_CHECKS = {
   minAngle: (v) => (typeof v === 'number' && v >= min && v <= max ? null : `must be a number in [${min}, ${max}]`),
+  // The package's own test (triangulate()'s): above 60 and below 180 degrees; 0 or null: none.
+  maxAngle: (v) => (v === null || v === 0 || (typeof v === 'number' && v > 60 && v < 180) ? null
+    : 'must be a number above 60 and below 180, or 0 or null for none'),
+  smooth: (v) => (typeof v === 'boolean' || (Number.isInteger(v) && v >= SMOOTH_PASSES_RANGE.min && v <= SMOOTH_PASSES_RANGE.max) ? null
+    : `must be true, false or a whole number of passes in [${SMOOTH_PASSES_RANGE.min}, ${SMOOTH_PASSES_RANGE.max}]`),
   maxArea: (v) => (v === null || (typeof v === 'number' && v >= 0 && v < Infinity) ? null : 'must be a number > 0, or 0 or null for none'),
   placement: (v) => oneOf(v, PLACEMENT_LABELS),
   variant: (v) => oneOf(v, VARIANT_LABELS),
@@ -147,7 +152,7 @@ export function loadOptions(given) {
     }
     const bad = check(value);
     if (bad) return { error: `options.${key} ${bad}, got ${JSON.stringify(value)}` };
-    options[name] = name === 'maxArea' && !(value > 0) ? null : value;
+    options[name] = (name === 'maxArea' || name === 'maxAngle') && !(value > 0) ? null : value;
   }
   return { options };
 }

@@ -1,10 +1,9 @@
 // The export buttons: the mesh in each of the package's formats or as a PNG of the canvas, the
 // drawing itself as a .poly, and the link to the page as it is.
-import { toPlc } from '../drawing.js';
+import { toPlc } from '../model/drawing.js';
 import { curveToleranceOf, flattenCurves } from './flatten-curves.js';
 import { canvasBlob, download, drawingPolyText, exportText } from './files.js';
-import { setStatus } from '../panels/status-line.js';
-import { drawingJsonText } from '../editing/curve-data.js';
+import { drawingJsonText } from '../model/curve-data.js';
 
 const $ = (id) => document.getElementById(id);
 const FORMATS = ['poly', 'json', 'svg', 'png', 'node', 'ele', 'msh', 'vtu', 'geojson'];
@@ -30,8 +29,10 @@ const FORMAT_NOTES = {
  * @param {() => void} drawForPrint draws the frame now without the editing aids (PNG)
  * @param {() => void} redraw draws the frame as the page shows it again
  * @param {() => boolean} writeLink writes the link into the URL; false when the drawing is too large for one
+ * @param {object} status the status line (panels/status-line.js): setStatus(text, kind), showNotices(notices, error)
  */
-export function createExportMenu({ meshed, drawing, renderer, drawForPrint, redraw, writeLink }) {
+export function createExportMenu({ meshed, drawing, renderer, drawForPrint, redraw, writeLink, status }) {
+  const { setStatus } = status;
   async function exportAs(format) {
     const { mesh, plc } = meshed();
     if (mesh === null) {

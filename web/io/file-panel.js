@@ -1,9 +1,7 @@
 // Opening files: the file picker and drag-and-drop onto the canvas (files.js reads them with the
 // package's readers).
-import { fromPlc } from '../drawing.js';
+import { fromPlc } from '../model/drawing.js';
 import { parseInput } from './files.js';
-import { loading } from '../meshing/meshing.js';
-import { setStatus, showNotices } from '../panels/status-line.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -11,8 +9,11 @@ const $ = (id) => document.getElementById(id);
  * @param {() => object} drawingOptions the drawing's options, which carry over to the file's
  * @param {(drawing) => void} setDrawing
  * @param {() => void} notPreset the presets box no longer names the drawing
+ * @param {() => () => void} loading marks the page busy reading a file; returns the function that ends it
+ * @param {object} status the status line (panels/status-line.js): setStatus(text, kind), showNotices(notices, error)
  */
-export function createFilePanel({ drawingOptions, setDrawing, notPreset }) {
+export function createFilePanel({ drawingOptions, setDrawing, notPreset, loading, status }) {
+  const { setStatus, showNotices } = status;
   async function loadFile(file) {
     const failed = loading();
     try {

@@ -35,7 +35,8 @@ export async function exportText(format, mesh, plc) {
     case 'node': return m.toNode(mesh);
     case 'ele': return m.toEle(mesh);
     case 'msh': return m.toMsh(mesh, plc);
-    case 'vtu': return withSegmentCells(m.toVtu(mesh), mesh);
+    // The boundary as line cells with their markers, as the CLI's --format vtu writes it.
+    case 'vtu': return m.toVtu(mesh, { segmentCells: true });
     case 'geojson': return withBoundary(m.toGeoJson(mesh), mesh);
     default: throw new Error(`unknown export format ${format}`);
   }
@@ -63,38 +64,6 @@ export function withBoundary(text, mesh) {
     feature.properties.edgeMarkers = [key(j, k), key(k, i), key(i, j)].map((e) => markers.get(e) ?? 0);
   }
   return JSON.stringify(collection);
-}
-
-const VTK_LINE = 3;
-
-/**
- * The package's .vtu (triangles, with point markers) with the boundary as the .msh has it: one
- * VTK_LINE cell per subsegment after the triangles, and a cell array `segmentMarker` holding each
- * line's marker (mesh.segmentMarkers; 0 for the triangles). The triangles' own arrays get 0 for
- * the lines (a line has no region and no angle), so that every cell array keeps one value a cell;
- * in ParaView, Threshold on segmentMarker picks out a boundary.
- */
-export function withSegmentCells(text, mesh) {
-  const lines = mesh.segments.length / 2;
-  if (lines === 0) return text;
-  const triangles = mesh.triangles.length / 3;
-  const zeros = ` ${new Array(lines).fill(0).join(' ')}`;
-  // Appends values to the ascii DataArray named `name` (its text ends before '</DataArray>').
-  const append = (xml, name, values) => xml.replace(new RegExp(`(<DataArray[^>]*Name="${name}"[^>]*>)([^<]*?)(\\s*</DataArray>)`),
-    (all, open, body, close) => `${open}${body.trimEnd()}${values}${close}`);
-  let out = text.replace(`NumberOfCells="${triangles}"`, `NumberOfCells="${triangles + lines}"`);
-  // Every cell array of the package's gets zeros for the lines; then the markers' own array.
-  const cellData = /<CellData>([\s\S]*?)<\/CellData>/.exec(out);
-  for (const [, name] of (cellData?.[1] ?? '').matchAll(/Name="([^"]+)"/g)) out = append(out, name, zeros);
-  const markers = `${new Array(triangles).fill(0).join(' ')} ${Array.from(mesh.segmentMarkers).join(' ')}`;
-  out = out.replace('</CellData>', `  <DataArray type="Int32" Name="segmentMarker" format="ascii">
-          ${markers}
-        </DataArray>
-      </CellData>`);
-  out = append(out, 'connectivity', ` ${Array.from(mesh.segments).join(' ')}`);
-  const offsets = Array.from({ length: lines }, (_, s) => 3 * triangles + 2 * (s + 1));
-  out = append(out, 'offsets', ` ${offsets.join(' ')}`);
-  return append(out, 'types', ` ${new Array(lines).fill(VTK_LINE).join(' ')}`);
 }
 
 // Numbers in the shortest text that reads back to the same double.

@@ -4,7 +4,7 @@
 // region seed that sat between a curve and its chords (inside the curved boundary, outside the
 // polygon of chords) is moved across the chord, so that it still marks the area it marked.
 // Pure numbers, no DOM: the tests import it in Node too.
-import { pointAt, segmentDistance2, shapeOf, subCubic } from '../editing/curve-geometry.js';
+import { pointAt, segmentDistance2, shapeOf, subCubic } from '../model/curve-geometry.js';
 
 // The core's automatic tolerance: this fraction of the diagonal of the input points' bounding box.
 const AUTO_TOLERANCE_FRACTION = 1e-3;

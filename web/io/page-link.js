@@ -1,7 +1,6 @@
 // The page's link: the drawing, its options, the step, the colouring and the view written into
 // the URL hash (url-state.js encodes them), read back when the page opens or the hash changes.
 import { MAX_HASH_LENGTH, decodeDrawing, encodeDrawing, encodePageState } from './url-state.js';
-import { setStatus } from '../panels/status-line.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -10,8 +9,10 @@ const $ = (id) => document.getElementById(id);
  * @param {object} view the View on screen
  * @param {() => number} stepIndex the step shown in step mode
  * @param {(drawing) => void} onLinkChanged a drawing from a hash the page did not write itself
+ * @param {object} status the status line (panels/status-line.js): setStatus(text, kind), showNotices(notices, error)
  */
-export function createPageLink({ app, view, stepIndex, onLinkChanged }) {
+export function createPageLink({ app, view, stepIndex, onLinkChanged, status }) {
+  const { setStatus } = status;
   // The hash this page wrote last ('' when the state was too long for a link): a hashchange to it
   // is the page's own, not a link opened.
   let written = '';

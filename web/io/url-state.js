@@ -4,7 +4,7 @@
 //   { "v": 1, "p": [x0, y0, ...], "s": [a0, b0, ...], "m": [marker per segment] (only if any), "h": [hx0, hy0, ...],
 //     "r": [[x, y, attribute, maxArea], ...],
 //     "o": [minAngle, maxArea, "o" | "c", maxSteiner, "c" | "b", "l" | "d", page flag bits (only if any is on)],
-//     "c": [curve, ...] (only if any: editing/curve-data.js), "t": curveTolerance (only if not 0),
+//     "c": [curve, ...] (only if any: model/curve-data.js), "t": curveTolerance (only if not 0),
 //     "a": maxAngle (only if set) }
 //
 // maxArea 0 = none, maxSteiner -1 = automatic, "o"/"c"/"p"/"t" = off-center / circumcenter / petal / optimal placement,
@@ -12,8 +12,8 @@
 // were appended later: links without them (or with unknown values) get the defaults, CDT and lens;
 // so was the seventh, the page flags that are on (drawing.js's PAGE_FLAGS, one bit each), present
 // only when one is (older links wrote 1 for the size measure, the first flag).
-import { DEFAULT_OPTIONS, MIN_ANGLE_RANGE, PAGE_FLAGS, flagOption } from '../drawing.js';
-import { decodeCurves, encodeCurves } from '../editing/curve-data.js';
+import { DEFAULT_OPTIONS, MIN_ANGLE_RANGE, PAGE_FLAGS, flagOption } from '../model/drawing.js';
+import { decodeCurves, encodeCurves } from '../model/curve-data.js';
 
 /** Links longer than this are not written (browsers and chat apps truncate them). */
 export const MAX_HASH_LENGTH = 64_000;
@@ -35,7 +35,7 @@ const PLACEMENT_CODES = new Map([['offcenter', 'o'], ['circumcenter', 'c'], ['pe
 const PLACEMENT_NAMES = new Map([...PLACEMENT_CODES].map(([name, code]) => [code, name]));
 
 /** The page flags that are on in these options, as bits in PAGE_FLAGS' order (0: none). */
-const pageFlagBits = (options) => PAGE_FLAGS.reduce((bits, id, k) => (options[flagOption(id)] === true ? bits | (1 << k) : bits), 0);
+const pageFlagBits = (options) => PAGE_FLAGS.reduce((bits, id, k) => (options[flagOption(id)] === true || options[flagOption(id)] > 0 ? bits | (1 << k) : bits), 0);
 
 export function encodeDrawing(d) {
   const o = d.options;

@@ -2,10 +2,9 @@
 // result or an error changes on the page (the mesh panel, the display panel's legend, step mode,
 // the status line, the host). body[data-mesh-state] tells tests and hosts where it stands:
 // 'queued', 'meshing', 'done', 'cancelled', 'error', 'empty', or 'loading' while a file is read.
-import { pointCount, toMeshOptions, toPlc } from '../drawing.js';
-import { postError, postMeshed } from '../io/embed.js';
+import { isSmoothed, pointCount, toMeshOptions, toPlc } from '../model/drawing.js';
 import { MeshScheduler } from './mesh-scheduler.js';
-import { setStatus, showNotices, showProgress, startProgress, stopProgress } from '../panels/status-line.js';
+import { UnsmoothedMesher } from './unsmoothed-mesher.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -20,12 +19,28 @@ export function loading() {
  * @param {object} app the page's state (drawing, stepMode; mesh, meshedPlc, notices,
  *   hoverTriangle, stepMesh, exemptions are set here)
  * @param {object} renderer the Renderer
- * @param {object} meshPanel, display, steps the panels a mesh changes
+ * @param {object} meshPanel, display, steps, smoothingEffect the panels a mesh changes
  * @param {() => void} scheduleDraw
  * @param {(() => void) | null} onArrival called first when a mesh arrives (`?bench=1`)
  * @param {() => void} onMeshed called after a mesh of a changed drawing or options is shown
+ * @param {object} host the embed protocol's news for a host (io/embed.js): postMeshed(mesh, id), postError(error, id)
+ * @param {object} status the status line (panels/status-line.js): setStatus, showNotices, startProgress,
+ *   showProgress, stopProgress
  */
-export function createMeshing({ app, renderer, meshPanel, display, steps, scheduleDraw, onArrival = null, onMeshed = () => {} }) {
+export function createMeshing({
+  app, renderer, meshPanel, display, steps, smoothingEffect, scheduleDraw, host, status, onArrival = null, onMeshed = () => {},
+}) {
+  const { postError, postMeshed } = host;
+  const { setStatus, showNotices, showProgress, startProgress, stopProgress } = status;
+  // A smoothed mesh is compared with the same mesh unsmoothed, meshed after it.
+  const unsmoothed = new UnsmoothedMesher((refined, smoothed) => {
+    if (smoothed !== app.mesh) return;
+    app.refinedMesh = refined;
+    const moved = smoothingEffect.show(refined, smoothed, app.meshedOptions.minAngle);
+    steps.refined(refined, moved);
+    document.body.dataset.smoothingState = 'shown';
+    scheduleDraw();
+  });
   const scheduler = new MeshScheduler({
     onStart() {
       document.body.dataset.meshState = 'meshing';
@@ -37,6 +52,8 @@ export function createMeshing({ app, renderer, meshPanel, display, steps, schedu
       stopProgress();
       app.mesh = mesh;
       app.meshedPlc = request.plc;
+      app.meshedOptions = request.options;
+      app.refinedMesh = null;
       app.notices = mesh.notices;
       app.hoverTriangle = -1;
       app.stepMesh = null;
@@ -46,6 +63,7 @@ export function createMeshing({ app, renderer, meshPanel, display, steps, schedu
       showNotices(mesh.notices);
       display.updateLegend();
       steps.meshed(mesh, request);
+      compareUnsmoothed(mesh, request);
       const s = mesh.stats;
       const summary = `${s.triangles.toLocaleString('en-US')} triangles, ${s.vertices.toLocaleString('en-US')} vertices, ` +
         `min angle ${s.minAngle.toFixed(2)}° in ${s.milliseconds.toFixed(1)} ms`;
@@ -90,10 +108,24 @@ export function createMeshing({ app, renderer, meshPanel, display, steps, schedu
   });
   $('cancel').addEventListener('click', () => scheduler.cancel());
 
+  /** A smoothed mesh: its smoothing rows wait for the unsmoothed mesh (body[data-smoothing-state]). */
+  function compareUnsmoothed(mesh, request) {
+    const smoothed = isSmoothed(request.options);
+    unsmoothed.request(request, mesh);
+    if (smoothed) smoothingEffect.waiting();
+    else smoothingEffect.hide();
+    document.body.dataset.smoothingState = smoothed ? 'waiting' : 'none';
+  }
+
   /** No mesh on the page (an error, or too few points). */
   function clear() {
     app.mesh = null;
     app.meshedPlc = null;
+    app.meshedOptions = null;
+    app.refinedMesh = null;
+    unsmoothed.clear();
+    smoothingEffect.hide();
+    document.body.dataset.smoothingState = 'none';
     app.notices = [];
     app.hoverTriangle = -1;
     $('hover-info').hidden = true;

@@ -1,9 +1,8 @@
 // The Mesh panel: counts, angle range, completeness with reasons, the angle histogram, the event
 // counts and the triangles left skinny on purpose.
 import { EventKind } from '../../wasm/index.js';
-import { rejectedIsCircumcenter, splitShell, undoMove } from '../geometry/event-geometry.js';
-import { splitsCurve } from '../steps/curve-events.js';
-import { findExemptions } from '../geometry/exemptions.js';
+import { rejectedIsCircumcenter, splitShell, splitsCurve, undoMove } from '../geometry/event-geometry.js';
+import { exemptTriangles } from '../geometry/mesh-geometry.js';
 import { EVENT_KIND_LABELS, EXEMPTION_LABELS } from '../labels.js';
 
 /**
@@ -208,17 +207,13 @@ export function showEventCounts(element, mesh) {
     : counts.map(([name, n]) => `${n.toLocaleString('en-US')} ${name}${n === 1 ? '' : 's'}`).join(', ');
 }
 
-/** The Exempt row: triangles left skinny on purpose (exemptions.js), marked on the canvas. */
+/** The Exempt row: triangles left skinny on purpose (the core's mesh.triangleExemptions), marked on the canvas. */
 export function showExemptions(element, exemptions) {
   if (!exemptions) { element.textContent = '–'; return; }
   const { nestled, seditious } = exemptions;
   element.textContent = nestled.length + seditious.length === 0 ? 'none'
     : `${nestled.length} ${EXEMPTION_LABELS.SMALL_INPUT_ANGLE.row}, ${seditious.length} ${EXEMPTION_LABELS.SEDITIOUS_EDGE.row}`;
 }
-
-// Triangles left skinny on purpose (§6.6) are not looked for in meshes above this many triangles
-// (the search would hold up their first picture).
-const EXEMPTIONS_UP_TO = 200_000;
 
 /** The panel's rows in the page (index.html). */
 export function createMeshPanel() {
@@ -229,13 +224,10 @@ export function createMeshPanel() {
     reasons: $('reasons'), histogram: $('histogram'), lfsIntegral: $('stat-size-measure'),
   };
 
-  /** The triangles left skinny on purpose in the mesh, marked in the panel: the exemptions or null. */
-  function markExemptions(mesh, request) {
-    if (mesh.triangles.length / 3 > EXEMPTIONS_UP_TO) {
-      $('stat-exempt').textContent = `not looked for above ${EXEMPTIONS_UP_TO.toLocaleString('en-US')} triangles`;
-      return null;
-    }
-    const exemptions = { mesh, ...findExemptions(mesh, request.plc, request.options.minAngle) };
+  /** The triangles left skinny on purpose in the mesh (as the core marks them), in the panel: the exemptions or null. */
+  function markExemptions(mesh) {
+    const found = exemptTriangles(mesh);
+    const exemptions = found && { mesh, ...found };
     showExemptions($('stat-exempt'), exemptions);
     return exemptions;
   }
@@ -253,7 +245,7 @@ export function createMeshPanel() {
       title('Mesh');
       showStats(elements, mesh, bound);
       showEventCounts($('stat-events'), mesh);
-      return markExemptions(mesh, request);
+      return markExemptions(mesh);
     },
     /**
      * Step mode: the counts, angles, completeness and histogram of step k's mesh (of count); the

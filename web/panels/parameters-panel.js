@@ -2,10 +2,9 @@
 // encroachment, Steiner budget, the region seed fields (for new seeds, or the selected one) and the
 // selected segment's marker.
 // Each field writes app.drawing.options and reports the change; sync() shows a drawing's options.
-import { DEFAULT_OPTIONS, Item, MIN_ANGLE_RANGE, PAGE_FLAGS, flagOption, segmentMarkers } from '../drawing.js';
+import { DEFAULT_OPTIONS, Item, MIN_ANGLE_RANGE, PAGE_FLAGS, flagOption, segmentMarkers } from '../model/drawing.js';
 import { ENCROACHMENT_LABELS, PLACEMENT_LABELS, PRACTICAL_ANGLE, VARIANT_LABELS } from '../labels.js';
-import { setStatus } from './status-line.js';
-import { curveMarkerOf, setCurveMarker, syncCurveTolerance } from '../editing/curve-fields.js';
+import { curveMarkerOf, setCurveMarker, syncCurveTolerance } from './curve-fields.js';
 import { checkOptions } from '../../wasm/input-checks.js';
 
 const $ = (id) => document.getElementById(id);
@@ -53,8 +52,10 @@ function fillSelect(select, labels) {
  * @param {object} app the page's state (drawing)
  * @param {object} editor the Editor (its selection: the region seed the fields edit)
  * @param {(commit: boolean) => void} changed an option changed; `commit` records an undo step
+ * @param {object} status the status line (panels/status-line.js): setStatus(text, kind), showNotices(notices, error)
  */
-export function createParametersPanel({ app, editor, changed }) {
+export function createParametersPanel({ app, editor, changed, status }) {
+  const { setStatus } = status;
   fillSelect($('placement'), PLACEMENT_LABELS);
   fillSelect($('variant'), VARIANT_LABELS);
   fillSelect($('encroachment'), ENCROACHMENT_LABELS);

@@ -1,10 +1,7 @@
 // The presets box: the chapter's figures and other examples (presets.js) with their captions,
 // and, when the server offers it, the corpus of real PLCs beside the repository.
-import { DEFAULT_OPTIONS, fromPlc } from '../drawing.js';
-import { parseInput } from '../io/files.js';
-import { loading } from '../meshing/meshing.js';
+import { DEFAULT_OPTIONS, fromPlc } from '../model/drawing.js';
 import { DEFAULT_PRESET, PRESETS, findPreset } from './presets.js';
-import { setStatus } from './status-line.js';
 
 const $ = (id) => document.getElementById(id);
 const SHARED_PRESET = 'shared:';
@@ -21,8 +18,12 @@ function showCaption(text) {
  * @param {(stages: Function|null) => void} setStages the preset's figure stages (presets.js), or none
  * @param {object} compare the side-by-side view (compare-view.js): a preset with `compare` shows it
  * @param {boolean} shared whether to look for the corpus (not in an embed)
+ * @param {(text, name) => Promise<object>} parseInput reads a PLC file of the corpus (io/files.js)
+ * @param {() => () => void} loading marks the page busy reading a file; returns the function that ends it
+ * @param {object} status the status line (panels/status-line.js): setStatus(text, kind), showNotices(notices, error)
  */
-export function createPresetBox({ drawingOptions, setDrawing, restartSteps, setStages, compare, shared }) {
+export function createPresetBox({ drawingOptions, setDrawing, restartSteps, setStages, compare, shared, parseInput, loading, status }) {
+  const { setStatus } = status;
   for (const preset of PRESETS) {
     const option = document.createElement('option');
     option.value = preset.id;

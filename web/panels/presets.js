@@ -4,7 +4,7 @@
 // open it in step-by-step mode, and `stages` (a function of the trace) to name the steps that
 // show a figure's snapshots.
 import { EventKind } from '../../wasm/index.js';
-import { flagOptions } from '../drawing.js';
+import { flagOptions } from '../model/drawing.js';
 
 /** Adds a closed polygon (a ring of segments) and returns its first point index. */
 function ring(d, coordinates) {

@@ -6,10 +6,10 @@
 // closing it brings the main canvas back.
 import { createMeshWorker } from '../../wasm/index.js';
 import { boundsOf } from '../geometry/bounds.js';
-import { toMeshOptions, toPlc } from '../drawing.js';
+import { toMeshOptions, toPlc } from '../model/drawing.js';
 import { PLACEMENT_LABELS } from '../labels.js';
 import { minAngles } from '../geometry/mesh-geometry.js';
-import { ANGLE_CLASSES, COLOURS } from './render.js';
+import { ANGLE_CLASSES, COLOURS } from './colours.js';
 
 const $ = (id) => document.getElementById(id);
 

@@ -3,9 +3,9 @@
 // written at its middle; the selected or hovered one thick; when the page may be edited, the
 // handles (an arc's centre, with thin lines to its ends; a Bézier's controls, with lines to the
 // ends they belong to); and the curve a curve tool is making, dashed up to the pointer.
-import { COLOURS, markerColour } from './render.js';
-import { curveShape, curvesOf, handlesOf } from '../editing/curve-data.js';
-import { pointAt, tracePath } from '../editing/curve-geometry.js';
+import { COLOURS, markerColour } from './colours.js';
+import { curveShape, curvesOf, handlesOf } from '../model/curve-data.js';
+import { pointAt, tracePath } from '../model/curve-geometry.js';
 
 const HANDLE_COLOUR = '#5f6b7a';
 

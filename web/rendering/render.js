@@ -7,56 +7,15 @@
 import { minAngleOf, minAngles } from '../geometry/mesh-geometry.js';
 import { GlMesh } from './gl-mesh.js';
 import { EXEMPTION_LABELS } from '../labels.js';
-import { drawStep, showsStep } from '../steps/step-overlay.js';
-import { curveMarkers } from '../editing/curve-data.js';
+import { curveMarkers } from '../model/curve-data.js';
 import { drawCurves } from './curve-draw.js';
+import { ANGLE_CLASSES, COLOURS, REGION_COLOURS, markerColour } from './colours.js';
+
+const MARKER_LABELS_UP_TO = 300;  // segment markers are written beside their segments up to this many segments
 
 export const LARGE_MESH = 200_000;
 /** Vertex numbers are drawn for meshes of up to this many vertices (more would not be legible). */
 export const VERTEX_NUMBERS_UP_TO = 1000;
-
-/** Min-angle classes for colouring: [upper bound in degrees, colour]. */
-export const ANGLE_CLASSES = [
-  [10, '#b2182b'],
-  [20, '#e0603f'],
-  [25, '#f4a259'],
-  [30, '#f6d77a'],
-  [35, '#c7e3a5'],
-  [40, '#88c9a1'],
-  [50, '#5aa9c9'],
-  [60.0001, '#4a78b5'],
-];
-
-const REGION_COLOURS = ['#dbe7f5', '#f6d8b8', '#cfe8cf', '#ead1ef', '#f8f1b6', '#cdeaea', '#f3cdd3', '#e0e0e0'];
-
-export const COLOURS = {
-  background: '#ffffff',
-  grid: '#eef0f4',
-  gridStrong: '#d9dde6',
-  edge: 'rgba(40, 48, 70, 0.55)',
-  segment: '#111827',
-  point: '#111827',
-  selected: '#d6336c',
-  hover: '#1d4ed8',
-  hole: '#c92a2a',
-  region: '#5f3dc4',
-  notice: '#e8590c',
-  exempt: '#7048e8',     // triangles nestled in small input angles (§6.6), hatched
-  // Seditious edges and their triangles (§6.6): teal, a hue none of the angle classes has (the
-  // 20-25° class is orange).
-  seditious: '#0b7285',
-};
-
-// Segment markers (boundary markers): one colour each, strong hues drawn over the fills; 0 (no
-// marker) in the segments' black. Markers above the table's length reuse its colours in turn.
-const MARKER_COLOURS = ['#1c7ed6', '#c2255c', '#2b8a3e', '#862e9c', '#0b7285', '#5c940d', '#a61e4d', '#364fc7'];
-const MARKER_LABELS_UP_TO = 300;
-
-export function markerColour(marker) {
-  if (!marker) return COLOURS.segment;
-  const n = MARKER_COLOURS.length;
-  return MARKER_COLOURS[(((Math.trunc(marker) - 1) % n) + n) % n];
-}
 
 /** Legend rows of the segment markers of a drawing: [{ colour, label }]. */
 export function markerLegend(drawing) {
@@ -69,7 +28,7 @@ function angleClass(angle) {
   return ANGLE_CLASSES.length - 1;
 }
 
-/** Legend rows of the exemptions marked on the canvas (exemptions.js). */
+/** Legend rows of the exemptions marked on the canvas (the core's mesh.triangleExemptions). */
 export function exemptionLegend(exemptions) {
   const rows = [];
   if (exemptions?.nestled.length) rows.push({ colour: COLOURS.exempt, label: EXEMPTION_LABELS.SMALL_INPUT_ANGLE.legend, hatched: true });
@@ -125,8 +84,15 @@ export class Renderer {
    * @param {HTMLCanvasElement} canvas the 2D canvas (the overlays; everything when there is no WebGL)
    * @param {HTMLCanvasElement} [glCanvas] a canvas under it for the mesh in WebGL, if the browser has it
    */
-  constructor(canvas, glCanvas = null) {
+  /**
+   * @param {HTMLCanvasElement} canvas the 2D canvas (the overlays, and the mesh without WebGL)
+   * @param {HTMLCanvasElement|null} glCanvas the canvas under it for the mesh in WebGL, or null
+   * @param {{ draw: Function, shows: Function }|null} stepOverlay step mode's overlay (steps/
+   *   step-overlay.js's drawStep and showsStep), handed in by the composition root
+   */
+  constructor(canvas, glCanvas = null, stepOverlay = null) {
     this.canvas = canvas;
+    this.stepOverlay = stepOverlay;
     this.ctx = canvas.getContext('2d');
     this.dpr = 1;
     this.mesh = null;
@@ -156,6 +122,11 @@ export class Renderer {
       this.canvas.height = h;
     }
     this.gl?.resize(w, h);
+  }
+
+  /** Whether the mesh on screen is already that of the step wanted (else it is dimmed). */
+  showsStep(step) {
+    return this.stepOverlay === null || this.stepOverlay.shows(step, this.mesh);
   }
 
   setMesh(mesh) {
@@ -204,7 +175,7 @@ export class Renderer {
       if (s.snap) lines(step, COLOURS.grid);
       lines(step * 5, COLOURS.gridStrong);
     }
-    const alpha = this.mesh && s.step && !showsStep(s.step, this.mesh) ? 0.35 : 1;
+    const alpha = this.mesh && s.step && !this.showsStep(s.step) ? 0.35 : 1;
     this.gl.draw(view, this.dpr, { background: COLOURS.background, grid, edgeColour: COLOURS.edge, alpha });
   }
 
@@ -260,7 +231,7 @@ export class Renderer {
    *   pendingChain: { from: pointIndex, to: {x,y}, first } | null, keyCursor: {x,y} | null (keyboard cursor),
    *   notices, step: { final, events, index, shown } | null: `final` the full mesh (its points
    *   number every vertex of every step), `index` the step wanted, `shown` the mesh on screen;
-   *   exemptions (exemptions.js, of `exemptions.mesh`) | null, vertexNumbers: whether to number the vertices
+   *   exemptions (mesh-geometry.js's exemptTriangles, of `exemptions.mesh`) | null, vertexNumbers: whether to number the vertices
    */
   draw(s) {
     const { ctx, dpr } = this;
@@ -293,7 +264,7 @@ export class Renderer {
       world();
       // Step mode: the mesh is that of the step (StepReplay); dimmed only while it is still on
       // its way, when the picture under the event is the previous step's.
-      ctx.globalAlpha = s.step && !showsStep(s.step, this.mesh) ? 0.35 : 1;
+      ctx.globalAlpha = s.step && !this.showsStep(s.step) ? 0.35 : 1;
       for (const { colour, path } of this.cache.fills) {
         ctx.fillStyle = colour;
         ctx.fill(path);
@@ -312,7 +283,7 @@ export class Renderer {
 
     if (s.exemptions && this.mesh === s.exemptions.mesh) this.drawExemptions(s.exemptions, view, world, screen, px);
     this.drawDrawing(s, world, screen, px);
-    if (s.step) drawStep(ctx, this.mesh, s.step, view, world, screen, px);
+    if (s.step && this.stepOverlay) this.stepOverlay.draw(ctx, this.mesh, s.step, view, world, screen, px);
     if (s.vertexNumbers) this.drawVertexNumbers(view);
     this.drawNotices(s.notices ?? [], view);
   }
@@ -330,7 +301,7 @@ export class Renderer {
   }
 
   /**
-   * The triangles left skinny on purpose (§6.6, exemptions.js): those nestled in a small input
+   * The triangles left skinny on purpose (§6.6, as the core marks them): those nestled in a small input
    * angle hatched, those on a seditious edge outlined, the seditious edge itself thick, in teal.
    */
   drawExemptions(x, view, world, screen, px) {

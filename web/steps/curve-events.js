@@ -4,7 +4,7 @@
 // vertex stays on its piece's subsegments to the end, and their segmentIds entry is the number of
 // input segments plus the curve's index (README's output table). No change to the core's trace.
 import { EventKind } from '../../wasm/index.js';
-import { parameterOf, shapeOf, tracePath } from '../editing/curve-geometry.js';
+import { parameterOf, shapeOf, tracePath } from '../model/curve-geometry.js';
 import { pointsAtStep, rejectedIsCircumcenter } from '../geometry/event-geometry.js';
 import { EVENT_KIND_LABELS as L } from '../labels.js';
 
@@ -37,21 +37,6 @@ export function curveOfEvent(events, e, context) {
   if (kind !== EventKind.SEGMENT_SPLIT && kind !== EventKind.REJECTED) return null;
   const k = vertexSegmentIds(context)[events.vertex[e]] - context.segmentCount;
   return k >= 0 && k < context.curves.length ? k : null;
-}
-
-/**
- * Whether a SEGMENT_SPLIT put its vertex off the chord of the subsegment it split: a curve's
- * piece, split on its curve (a midpoint or shell split stays on the chord, to rounding). For the
- * Mesh panel's event counts, which have the trace and the points alone.
- */
-export function splitsCurve(events, e, points) {
-  if (events.kind[e] !== EventKind.SEGMENT_SPLIT) return false;
-  const a = events.a[e], b = events.b[e];
-  const ax = points[2 * a], ay = points[2 * a + 1];
-  const dx = points[2 * b] - ax, dy = points[2 * b + 1] - ay;
-  const length = Math.hypot(dx, dy);
-  const off = Math.abs(dx * (events.xy[2 * e + 1] - ay) - dy * (events.xy[2 * e] - ax)) / (length || 1);
-  return off > 1e-9 * length;
 }
 
 /**

@@ -82,6 +82,11 @@ export function drawStep(ctx, mesh, step, view, world, screen, px) {
     return;
   }
   if (index === 0) return;
+  // The step after the last event: the smoothing of a smoothed mesh.
+  if (index > events.count) {
+    if (step.smoothed) drawSmoothingMoves(ctx, final.points, step.smoothed.points, view);
+    return;
+  }
   const e = index - 1;
   const p = pointsAtStep(events, e, final.points);
   const at = (v) => view.toScreen(p[2 * v], p[2 * v + 1]);
@@ -297,4 +302,19 @@ function hatch(ctx) {
   t.beginPath(); t.moveTo(-1, 7); t.lineTo(7, -1); t.moveTo(5, 7); t.lineTo(7, 5); t.moveTo(-1, 1); t.lineTo(1, -1); t.stroke();
   hatchPattern = { pattern: ctx.createPattern(tile, 'repeat') };
   return hatchPattern.pattern;
+}
+
+/** The smoothing step: a short line from each vertex's refined place to its smoothed one, ending in a dot. */
+function drawSmoothingMoves(ctx, before, after, view) {
+  ctx.strokeStyle = STEP_COLOURS.step;
+  ctx.fillStyle = STEP_COLOURS.step;
+  ctx.lineWidth = 1.5;
+  const n = Math.min(before.length, after.length) / 2;
+  for (let v = 0; v < n; v++) {
+    if (before[2 * v] === after[2 * v] && before[2 * v + 1] === after[2 * v + 1]) continue;
+    const from = view.toScreen(before[2 * v], before[2 * v + 1]);
+    const to = view.toScreen(after[2 * v], after[2 * v + 1]);
+    ctx.beginPath(); ctx.moveTo(from.x, from.y); ctx.lineTo(to.x, to.y); ctx.stroke();
+    ctx.beginPath(); ctx.arc(to.x, to.y, 2, 0, 2 * Math.PI); ctx.fill();
+  }
 }

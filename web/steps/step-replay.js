@@ -8,8 +8,11 @@
 // page's main mesher is never interrupted. Requests do not abort one another (aborting terminates
 // a worker, and a new one costs more than most steps): while one step is being meshed, only the
 // newest wanted step is remembered, and it is meshed next. Recent steps are cached, so stepping
-// back and forth is instant.
+// back and forth is instant. A smoothed mesh has one step more than its events: steps up to the
+// events' count are meshed without smoothing (smoothing runs after refinement, whatever its
+// budget), and the last is the final, smoothed mesh.
 import { createMeshWorker } from '../../wasm/index.js';
+import { isSmoothed } from '../model/drawing.js';
 
 const CACHE_SIZE = 64;
 
@@ -29,14 +32,15 @@ export class StepReplay {
    * A new final mesh (with its trace): steps refer to it from now on.
    * @param {object} plc the input it was meshed from
    * @param {object} options its options (trace included)
-   * @param {object} final the mesh; its events count the steps
+   * @param {object} final the mesh; its events count the steps (one more when it was smoothed)
    */
   reset(plc, options, final) {
     this.generation++;
     this.cache.clear();
     this.wanted = -1;
-    const count = final?.events?.count ?? 0;
-    this.source = final ? { plc, options, final, count, generation: this.generation } : null;
+    const smoothed = isSmoothed(options);
+    const count = (final?.events?.count ?? 0) + (final && smoothed ? 1 : 0);
+    this.source = final ? { plc, options, final, count, smoothed, generation: this.generation } : null;
   }
 
   clear() { this.reset(null, null, null); }
@@ -71,7 +75,7 @@ export class StepReplay {
     this.wanted = -1;
     this.busy = true;
     this.worker ??= createMeshWorker();
-    const options = { ...source.options, trace: false, maxSteiner: k };
+    const options = { ...source.options, trace: false, maxSteiner: k, ...(source.smoothed ? { smooth: 0 } : {}) };
     this.worker.triangulate(source.plc, options).then(
       (mesh) => this.arrived(source, k, mesh),
       () => this.arrived(source, k, null),

@@ -127,6 +127,7 @@ export class Stepper {
     this.el = el;
     this.onChange = onChange;
     this.events = null;
+    this.smoothing = null;  // { moved } for a smoothed mesh, else null
     this.index = 0;
     this.timer = null;
     el.first.addEventListener('click', () => this.go(0));
@@ -138,15 +139,39 @@ export class Stepper {
     el.speed.addEventListener('change', () => { if (this.playing) { this.pause(); this.play(); } });
   }
 
-  /** The number of events: positions run from 0 (none) to count (the final mesh). */
-  get count() { return this.events ? this.events.count : 0; }
+  /**
+   * The number of steps: positions run from 0 (none) to count (the final mesh). A smoothed mesh
+   * has one more than its events: the last step is the smoothing of the refined mesh.
+   */
+  get count() { return this.events ? this.events.count + (this.smoothing ? 1 : 0) : 0; }
   get playing() { return this.timer !== null; }
 
+  /** The text of step `index` (> 0): its event's, or the smoothing's for the last of a smoothed mesh. */
+  describe(index) {
+    if (this.smoothing && index === this.count) {
+      const { moved } = this.smoothing;
+      const what = moved === null ? 'vertices moved (counting…)' : `${moved.toLocaleString('en-US')} vertices moved`;
+      return `Smoothing: ${what}; the refined mesh of the step before, smoothed into the final mesh.`;
+    }
+    return describeEvent(this.events, index - 1, this.context);
+  }
+
+  /** How many vertices smoothing moved, once known (the last step's text says it). */
+  setSmoothingMoved(moved) {
+    if (!this.smoothing) return;
+    this.smoothing.moved = moved;
+    this.go(this.index, false);
+  }
+
   /** New events (a new mesh): keep the position if it still exists. */
-  /** @param {object|null} events @param {object|null} context { points, minAngle } for the texts */
-  setEvents(events, context = null) {
+  /**
+   * @param {object|null} events @param {object|null} context { points, minAngle } for the texts
+   * @param {boolean} smoothed the mesh was smoothed after refinement: one more step
+   */
+  setEvents(events, context = null, smoothed = false) {
     this.events = events ?? null;
     this.context = context;
+    this.smoothing = events && smoothed ? { moved: null } : null;
     const count = this.count;
     this.el.scrub.max = String(count);
     this.el.scrub.disabled = count === 0;
@@ -163,7 +188,7 @@ export class Stepper {
       ? 'No refinement events: the input already meets the bounds.'
       : `Step ${this.index.toLocaleString('en-US')} of ${count.toLocaleString('en-US')}: ${this.index === 0
         ? 'the constrained Delaunay triangulation of the input, before refinement.'
-        : describeEvent(this.events, this.index - 1, this.context)}`;
+        : this.describe(this.index)}`;
     if (notify) this.onChange(this.index);
   }
 

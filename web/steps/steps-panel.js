@@ -1,11 +1,10 @@
 // Step-by-step mode: the checkbox, the step controls (Stepper, stepper.js), the mesh of each step
 // (StepReplay, step-replay.js, meshed on demand), and the step a link or a host asked for, shown
 // once the mesh with its trace arrives.
-import { postStepped } from '../io/embed.js';
+import { isSmoothed } from '../model/drawing.js';
 import { stepLegend } from './step-overlay.js';
 import { StepReplay } from './step-replay.js';
-import { Stepper, describeEvent } from './stepper.js';
-import { setStatus } from '../panels/status-line.js';
+import { Stepper } from './stepper.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -16,8 +15,11 @@ const $ = (id) => document.getElementById(id);
  * @param {() => void} scheduleDraw
  * @param {() => void} writeLinkSoon the step is in the link
  * @param {() => void} remeshNow mesh again (the trace is recorded only in step mode)
+ * @param {(message: object) => void} postStepped tells a host of the step shown (io/embed.js)
+ * @param {object} status the status line (panels/status-line.js): setStatus(text, kind), showNotices(notices, error)
  */
-export function createStepsPanel({ app, renderer, meshPanel, scheduleDraw, writeLinkSoon, remeshNow }) {
+export function createStepsPanel({ app, renderer, meshPanel, scheduleDraw, writeLinkSoon, remeshNow, postStepped, status }) {
+  const { setStatus } = status;
   // A host's 'ruppert:step' waiting for its reply: { index, id }.
   let hostRequest = null;
   // A figure's stages (presets.js): the function that finds them in a trace, those of the trace
@@ -42,7 +44,6 @@ export function createStepsPanel({ app, renderer, meshPanel, scheduleDraw, write
     meshPanel.showStep(mesh, k, stepper.count);
     setStatus(`Step ${at} of ${stepper.count.toLocaleString('en-US')}: ${summary}${k === stepper.count ? ' (the final mesh)' : ''}.`, 'info');
     document.body.dataset.stepShown = String(k);
-    const events = app.mesh.events;
     let id = null;
     if (hostRequest !== null && Math.min(hostRequest.index, stepper.count) === k) {
       id = hostRequest.id;
@@ -50,7 +51,7 @@ export function createStepsPanel({ app, renderer, meshPanel, scheduleDraw, write
     }
     postStepped({
       id, index: k, total: stepper.count, vertices, triangles, minAngle, maxAngle,
-      event: k > 0 ? describeEvent(events, k - 1, stepper.context) : null,
+      event: k > 0 ? stepper.describe(k) : null,
     });
     scheduleDraw();
   });
@@ -173,8 +174,19 @@ export function createStepsPanel({ app, renderer, meshPanel, scheduleDraw, write
     showLegend({ ...request.options, curves: request.plc.curves });
     // The curves and the final mesh's subsegments tell which splits were a curve's (steps/curve-events.js).
     const curves = { curves: request.plc.curves ?? [], segmentCount: request.plc.segments.length / 2, segments: mesh.segments, segmentIds: mesh.segmentIds };
+    const smoothed = isSmoothed(request.options);
     stepper.setEvents(app.stepMode ? mesh.events : null,
-      { points: mesh.points, minAngle, placement, maxArea: maxArea ?? null, encroachment, regions: request.plc.regions, ...curves });
+      { points: mesh.points, minAngle, placement, maxArea: maxArea ?? null, encroachment, regions: request.plc.regions, ...curves },
+      smoothed);
+  }
+
+  /**
+   * A smoothed mesh's mesh before smoothing: the events' texts measure its places, and the last
+   * step says how many vertices smoothing moved.
+   */
+  function refined(mesh, moved) {
+    if (stepper.context) stepper.context = { ...stepper.context, points: mesh.points };
+    stepper.setSmoothingMoved(moved);
   }
 
   function clear() {
@@ -228,6 +240,6 @@ export function createStepsPanel({ app, renderer, meshPanel, scheduleDraw, write
     get context() { return stepper.context; },
     /** The preset's stages (a function of the trace, presets.js), or null. */
     setStages(fn) { stagesOf = fn; },
-    turnOn, restart, leave, meshed, clear, showPending, hostStep, shortcut,
+    turnOn, restart, leave, meshed, refined, clear, showPending, hostStep, shortcut,
   };
 }

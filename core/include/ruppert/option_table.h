@@ -61,6 +61,8 @@ static_assert(RUPPERT_SMOOTH_PASSES_TEXT[0] - '0' == kSmoothPassesWhenOn && RUPP
 //   autoHoles    with no hole seeds: regions at odd nesting depth are domain, even are holes.
 //   trace        record Mesh::events (every insertion, for step-by-step replay).
 //   sizeMeasure  compute Stats::lfsIntegral (§6.5; one shortest-path pass over the mesh).
+//   exemptions   fill Mesh::triangleExemptions: per triangle, whether §6.6 exempts it, by the rules
+//                refinement itself applies (refine/exemptions.h), for pages that draw them.
 //   edges        fill Mesh::edges and Mesh::edgeMarkers (meshEdges), after Triangle's -e.
 //   noBoundarySteiner  no new vertex on a subsegment of the domain's boundary (Triangle's -Y).
 //   noSegmentSteiner   no new vertex on any subsegment (-YY); implies noBoundarySteiner.
@@ -100,6 +102,7 @@ static_assert(RUPPERT_SMOOTH_PASSES_TEXT[0] - '0' == kSmoothPassesWhenOn && RUPP
   X(autoHoles, "--auto-holes", false, 0, 0, "", "without hole seeds: regions at even nesting depth become holes") \
   X(trace, "", false, 0, 0, "", "")                                                                      \
   X(sizeMeasure, "", false, 0, 0, "", "")                                                                \
+  X(exemptions, "", false, 0, 0, "", "")                                                                 \
   X(edges, "-e|--edges", false, 0, 0, "",                                                                \
     "also write BASE.edge: every edge once, with its boundary marker (triangle format only)")             \
   X(noBoundarySteiner, "--no-boundary-steiner", false, 0, 0, "",                                         \

@@ -343,6 +343,11 @@ inline constexpr const char* kEventKindNames[] = {"SEGMENT_SPLIT", "CIRCUMCENTER
 static_assert(detail::countOf(kEventKindNames) == 1 + static_cast<std::size_t>(EventKind::Relocated));
 constexpr const char* enumName(EventKind k) { return detail::nameIn(kEventKindNames, k); }
 
+// Mesh::triangleExemptions' values: a triangle that meets the bounds (or is not exempt), one whose
+// smallest angle is an input angle (both edges there are subsegments), one whose shortest edge is
+// seditious (between split vertices of segments meeting at under 45 degrees, on one shell).
+inline constexpr std::uint8_t kNotExempt = 0, kExemptSmallInputAngle = 1, kExemptSeditiousEdge = 2;
+
 // Vertex ids are indices into Mesh::points, or kNoVertex for a vertex that is not in the output (in
 // the bounding-box variant, vertices inserted outside the domain are removed with it).
 struct Event {
@@ -388,6 +393,9 @@ struct Mesh {
   // outside the domain (or otherwise unused) to -1. Unused points are then left out of points, and
   // every other array is numbered accordingly.
   std::vector<std::int32_t> inputToOutput;
+  // With Options::exemptions (else empty): 1 per triangle, why refinement left it below the angle
+  // bounds on purpose (§6.6): kNotExempt, kExemptSmallInputAngle or kExemptSeditiousEdge.
+  std::vector<std::uint8_t> triangleExemptions;
   int indexBase = 0;                      // copied from the input, for writers
   bool complete = true;                   // every bound met, except the chapter's exemptions (§6.6)
   std::vector<Reason> reasons;            // what is unmet and why; SmallInputAngle / SeditiousEdge
@@ -519,8 +527,15 @@ void writeMsh(std::ostream& out, const Mesh& mesh, const Plc& input);
 std::string toMsh(const Mesh& mesh, const Plc& input);
 // VTK XML UnstructuredGrid (.vtu), ASCII: points (z = 0), triangles; point data "pointMarker" (when
 // the mesh has them) and "vertexKind"; cell data "regionAttribute" and "minAngle" (degrees).
-void writeVtu(std::ostream& out, const Mesh& mesh);
-std::string toVtu(const Mesh& mesh);
+struct VtuOptions {
+  // The boundary as .msh has it: one line cell per subsegment after the triangles, and a cell array
+  // "segmentMarker" with each line's marker (Mesh::segmentMarkers; 0 for the triangles, and 0 for
+  // the lines in the triangles' arrays), so that a viewer can pick a boundary out by its marker.
+  // The CLI's --format vtu writes them.
+  bool segmentCells = false;
+};
+void writeVtu(std::ostream& out, const Mesh& mesh, const VtuOptions& options = {});
+std::string toVtu(const Mesh& mesh, const VtuOptions& options = {});
 // GeoJSON FeatureCollection: one Polygon Feature per triangle with properties "triangle",
 // "vertices", "regionAttribute" and "minAngle".
 void writeGeoJson(std::ostream& out, const Mesh& mesh);

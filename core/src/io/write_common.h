@@ -37,6 +37,18 @@ inline void requireTriangleIndices(const Mesh& mesh) {
   }
 }
 
+// Every subsegment's ends must name points (the .msh and .vtu write them as lines).
+inline void requireSegmentIndices(const Mesh& mesh) {
+  const std::size_t n = mesh.points.size() / 2;
+  for (std::size_t i = 0; i < mesh.segments.size(); ++i) {
+    if (mesh.segments[i] >= n) {
+      throw Error(ErrorCode::IndexOutOfRange, "segments[" + std::to_string(i) + "] = " +
+                                                  std::to_string(mesh.segments[i]) + " but there are " +
+                                                  std::to_string(n) + " points");
+    }
+  }
+}
+
 // Smallest angle of triangle t in degrees.
 inline double smallestAngleDegrees(const Mesh& mesh, std::size_t t) {
   const double* p[3];

@@ -96,17 +96,6 @@ std::vector<Group> curveGroups(const Mesh& mesh, const Plc& input) {
   return groups;
 }
 
-void requireSegmentIndices(const Mesh& mesh) {
-  const std::size_t n = mesh.points.size() / 2;
-  for (std::size_t i = 0; i < mesh.segments.size(); ++i) {
-    if (mesh.segments[i] >= n) {
-      throw Error(ErrorCode::IndexOutOfRange, "segments[" + std::to_string(i) + "] = " +
-                                                  std::to_string(mesh.segments[i]) + " but there are " +
-                                                  std::to_string(n) + " points");
-    }
-  }
-}
-
 // "5" for whole numbers, else %.17g: the names are for people reading Gmsh's tree.
 std::string valueName(double v) {
   if (v == std::floor(v) && std::fabs(v) < 1e15) return std::to_string(static_cast<std::int64_t>(v));
@@ -180,7 +169,7 @@ void printMsh(TextOut& out, const Mesh& mesh, const Plc& input) {
   detail::requireFiniteValues(mesh.points, "points");
   detail::requireFiniteValues(mesh.triangleAttributes, "triangleAttributes");
   detail::requireTriangleIndices(mesh);
-  requireSegmentIndices(mesh);
+  detail::requireSegmentIndices(mesh);
   const std::vector<Group> surfaces = surfaceGroups(mesh);
   const std::vector<Group> curves = curveGroups(mesh, input);
   printHeaderAndNames(out, surfaces, curves);

@@ -12,6 +12,8 @@
 #include "output/boundary_markers.h"
 #include "mesh/huge_pages.h"
 #include "output/jettison.h"
+#include "refine/exemptions.h"
+#include "cold_code.h"
 
 namespace ruppert::detail {
 namespace {
@@ -115,6 +117,20 @@ void scanTriangles(MeshState& m, Mesh& mesh, std::vector<std::uint8_t>& boundary
   st.triangles = count;
 }
 
+// Options::exemptions: each triangle's §6.6 exemption under the bounds asked for, by refinement's
+// own rules, while the slots still carry their labels and the vertices their kinds. Once per
+// call, on request: compiled for size (cold_code.h).
+RUPPERT_COLD_BEGIN
+void markExemptions(const MeshState& m, Mesh& mesh) {
+  const ExemptionBounds bounds = exemptionBounds(*m.options);
+  mesh.triangleExemptions.assign(mesh.stats.triangles, kNotExempt);
+  for (std::uint32_t s = 0; s < m.tri.slotCount(); ++s) {
+    const std::uint32_t out = m.tri.label(s);
+    if (out != kNone) mesh.triangleExemptions[out] = exemptionOf(m, s, bounds);
+  }
+}
+RUPPERT_COLD_END
+
 // mesh.triangles, neighbors and triangleAttributes. The output's corners are written over the
 // triangulation's slots in place (a triangle's output index is never above its slot) and copied
 // out of the slot records, which then go; each array goes as soon as it is read.
@@ -174,6 +190,7 @@ Mesh assembleMesh(MeshState& m) {
   // Each part of the state goes once read (see writeTriangleArrays).
   std::vector<std::uint8_t> boundarySubsegment;
   scanTriangles(m, mesh, boundarySubsegment);
+  if (m.options->exemptions) markExemptions(m, mesh);
   release(m.maxArea), release(m.inDomain);
   m.tri.releaseScratch();
   writeVertices(m, outVertices, mesh);

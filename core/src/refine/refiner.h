@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "refine/bad_triangle_queue.h"
+#include "refine/exemptions.h"
 #include "refine/above34/bound_push.h"
 #include "mesh_state.h"
 #include "refine/placement/optimal_placement.h"
@@ -228,15 +229,11 @@ class Refiner {
   // encroaches no subsegment. False if none does.
   bool placeAwayFromForbidden(const BadTriangle& bt, const double* const* p, const double* refused);
 
-  // ---- exemptions (§6.6) -------------------------------------------------------------------------
-  // The triangle's smallest angle is an input angle: both edges at that corner are subsegments.
-  bool nestledInInputAngle(std::uint32_t s, const TriangleShape& sh) const;
-
-  // Shortest edge u-w is seditious: u and w split two different segments that meet at a vertex z at
-  // less than kSeditiousAngle, at the same distance from z (the same concentric shell). z is an
-  // endpoint the segments share, or the point where they cross (an intersection vertex: shells are
-  // measured from it too).
-  bool seditious(std::uint32_t s, const TriangleShape& sh) const;
+  // ---- exemptions (§6.6): the rules are exemptions.h's, shared with the output ------------------
+  bool nestledInInputAngle(std::uint32_t s, const TriangleShape& sh) const {
+    return detail::nestledInInputAngle(m_, s, sh);
+  }
+  bool seditious(std::uint32_t s, const TriangleShape& sh) const { return seditiousShortestEdge(m_, s, sh); }
 
   // ---- insertion ---------------------------------------------------------------------------------
   // Insert vertex v at `loc`; new triangles inherit region data and are checked; their

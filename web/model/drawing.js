@@ -13,12 +13,12 @@
 //            absent from older drawings: none)
 //   options  { minAngle, maxAngle, maxArea, placement, maxSteiner, variant, encroachment }
 //            maxAngle/maxArea/maxSteiner: null = none/automatic; variant 'cdt' | 'box'; encroachment 'lens' | 'disk'
-import { OPTIONS } from '../wasm/dist/names.js';
-import { boundsOf, hasBounds, includePoint } from './geometry/bounds.js';
+import { OPTIONS } from '../../wasm/dist/names.js';
+import { boundsOf, hasBounds, includePoint } from '../geometry/bounds.js';
 import {
   CurveItem, cloneCurves, curveItemPosition, curvesForPlc, curvesFromPlc, dropPointFromCurves, includeCurves,
   moveCurveItem, removeCurve,
-} from './editing/curve-data.js';
+} from './curve-data.js';
 
 // The package's options as the binding describes them (core/include/ruppert/option_table.h): the
 // page takes its defaults and the angle's range from there rather than writing them again.
@@ -26,6 +26,9 @@ const PACKAGE_OPTIONS = Object.fromEntries(OPTIONS.map((option) => [option.name,
 
 /** The min angle's range in degrees: { min, max }. */
 export const MIN_ANGLE_RANGE = Object.freeze({ min: PACKAGE_OPTIONS.minAngle.min, max: PACKAGE_OPTIONS.minAngle.max });
+
+/** The whole number range of smoothing's passes: { min, max } (true stands for the usual passes). */
+export const SMOOTH_PASSES_RANGE = Object.freeze({ min: PACKAGE_OPTIONS.smooth.min, max: PACKAGE_OPTIONS.smooth.max });
 
 /** The package's option names, for hosts that pass options the page does not offer. */
 export const PACKAGE_OPTION_NAMES = Object.freeze(OPTIONS.map((option) => option.name));
@@ -105,14 +108,23 @@ export function toMeshOptions(d, { trace = false } = {}) {
     variant: o.variant ?? DEFAULT_OPTIONS.variant,
     encroachment: o.encroachment ?? DEFAULT_OPTIONS.encroachment,
     trace,
+    // The triangles the chapter exempts (§6.6), as the core decides, for the canvas and the Mesh panel.
+    exemptions: true,
   };
   if (o.maxArea > 0) options.maxArea = o.maxArea;
   if (o.maxAngle > 0) options.maxAngle = o.maxAngle;
   if (Number.isInteger(o.maxSteiner) && o.maxSteiner >= 0) options.maxSteiner = o.maxSteiner;
-  for (const id of PAGE_FLAGS) if (o[flagOption(id)] === true) options[flagOption(id)] = true;
+  // A flag is on or off; smoothing may also be a number of passes (a host's load).
+  for (const id of PAGE_FLAGS) {
+    const value = o[flagOption(id)];
+    if (value === true || (Number.isInteger(value) && value > 0)) options[flagOption(id)] = value;
+  }
   if (o.curveTolerance > 0) options.curveTolerance = o.curveTolerance;
   return options;
 }
+
+/** Whether mesher options ask for smoothing (true, or a number of passes). */
+export const isSmoothed = (options) => options?.smooth === true || options?.smooth > 0;
 
 /** A drawing from a parsed file (ParsedPlc), keeping the given options. */
 export function fromPlc(plc, options = DEFAULT_OPTIONS) {

@@ -1,7 +1,7 @@
 // The Parameters panel's fields for curves: the curve tolerance (options.curveTolerance; empty or
 // 0 is the core's automatic 1e-3 of the drawing's diagonal) and the selected curve's marker (the
 // segment marker field serves a selected curve too).
-import { CurveItem } from './curve-data.js';
+import { CurveItem } from '../model/curve-data.js';
 
 const $ = (id) => document.getElementById(id);
 
