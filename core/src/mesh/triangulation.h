@@ -31,9 +31,10 @@ void release(Vector& v) {
   Vector().swap(v);
 }
 
-// A hint that *p is read soon (no effect where the compiler has no such instruction).
+// A hint that *p is read soon (none in WebAssembly, which has no such instruction: left out there,
+// with the loads that would compute its address).
 inline void prefetch(const void* p) {
-#if defined(__GNUC__) || defined(__clang__)
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__wasm__)
   __builtin_prefetch(p);
 #else
   (void)p;
@@ -41,7 +42,7 @@ inline void prefetch(const void* p) {
 }
 // The same for memory about to be written.
 inline void prefetchForWrite(const void* p) {
-#if defined(__GNUC__) || defined(__clang__)
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__wasm__)
   __builtin_prefetch(p, 1);
 #else
   (void)p;

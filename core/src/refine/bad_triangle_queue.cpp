@@ -167,34 +167,35 @@ namespace {
 
 // Position along a Hilbert curve through a 2^16 x 2^16 grid. Digit by digit from the top, each
 // quadrant's digit depends on the orientation the levels above left (swapped axes, mirrored axes:
-// four states); a table steps four levels at once (a nibble of x and of y), four steps per key.
+// four states); a table steps two levels at once (two bits of x and of y), eight steps per key.
+// (Two levels, not more: a 64-byte table, where four levels' 2 KB would weigh on the wasm module.)
 class HilbertCurve {
  public:
   HilbertCurve() {
     for (std::uint32_t state = 0; state < 4; ++state)
-      for (std::uint32_t nibbles = 0; nibbles < 256; ++nibbles) {
+      for (std::uint32_t bits = 0; bits < 16; ++bits) {
         std::uint32_t s = state, digits = 0;
-        for (int level = 3; level >= 0; --level) {
-          std::uint32_t rx = (nibbles >> (4 + level)) & 1, ry = (nibbles >> level) & 1;
+        for (int level = 1; level >= 0; --level) {
+          std::uint32_t rx = (bits >> (2 + level)) & 1, ry = (bits >> level) & 1;
           if (s & 1) std::swap(rx, ry);
           if (s & 2) rx ^= 1, ry ^= 1;
           digits = digits << 2 | ((3 * rx) ^ ry);
           if (ry == 0) s ^= 1 | (rx << 1);  // a quarter turn, mirrored in the far quadrant
         }
-        step_[state << 8 | nibbles] = static_cast<std::uint16_t>(digits << 2 | s);
+        step_[state << 4 | bits] = static_cast<std::uint8_t>(digits << 2 | s);
       }
   }
   std::uint32_t index(std::uint32_t x, std::uint32_t y) const {
     std::uint32_t d = 0, state = 0;
-    for (int shift = 12; shift >= 0; shift -= 4) {
-      const std::uint32_t e = step_[state << 8 | ((x >> shift) & 15) << 4 | ((y >> shift) & 15)];
-      d = d << 8 | e >> 2, state = e & 3;
+    for (int shift = 14; shift >= 0; shift -= 2) {
+      const std::uint32_t e = step_[state << 4 | ((x >> shift) & 3) << 2 | ((y >> shift) & 3)];
+      d = d << 4 | e >> 2, state = e & 3;
     }
     return d;
   }
 
  private:
-  std::uint16_t step_[4 * 256];
+  std::uint8_t step_[4 * 16];
 };
 
 // A mesh of fewer slots than this fits in the cache: it gains nothing from plane order and pays
