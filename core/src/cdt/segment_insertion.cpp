@@ -458,8 +458,8 @@ void insertHull(MeshState& m) {
   SegmentInserter inserter(m);
   for (std::size_t k = 0; k < hull.size(); ++k) inserter.insert(hull[k], hull[(k + 1) % hull.size()], kHullEdge);
   // After the segments (no region enclosed), hull edges a few ulps from nearly collinear segments
-  // can cross their chains; those repairs need the same last Lawson pass as insertSegments' (issue
-  // 19: a careless PLC whose points all lay within rounding of one line kept a non-Delaunay edge).
+  // can cross their chains; those repairs need the same last Lawson pass as insertSegments' (a
+  // careless PLC whose points all lay within rounding of one line kept a non-Delaunay edge).
   if (inserter.repairs() > 0) m.tri.legalizeAll();
 }
 RUPPERT_COLD_END

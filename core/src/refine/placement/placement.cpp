@@ -116,8 +116,8 @@ PetalPlacement::PetalPlacement(double theta) {
     }
   }
   // At most 52 points, once per bound: an insertion sort (stable: a point and its mirror image, whose
-  // bounds tie, keep their order) instead of a std::sort instantiation of its own, which was 6 KB
-  // of the wasm module.
+  // bounds tie, keep their order) rather than a std::sort instantiation of its own, which would add
+  // several KB to the wasm module.
   for (std::size_t i = 1; i < petal_.size(); ++i)
     for (std::size_t j = i; j > 0 && petal_[j].bound > petal_[j - 1].bound; --j) std::swap(petal_[j], petal_[j - 1]);
 }
