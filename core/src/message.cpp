@@ -1,7 +1,6 @@
 #include "message.h"
 
 #include <cmath>
-#include <cstdlib>
 
 #include "cold_code.h"
 #include "decimal_text.h"
@@ -21,7 +20,7 @@ std::string formatNumber(double v) {
   std::string text;
   for (int digits = 6; digits <= 17; ++digits) {
     text = formatSignificant(v, digits);
-    if (std::isnan(v) || std::strtod(text.c_str(), nullptr) == v) break;
+    if (std::isnan(v) || parseDecimal(text) == v) break;
   }
   return text;
 }

@@ -75,3 +75,52 @@ TEST_CASE("special values are written as printf writes them", "[messages]") {
   CHECK(ruppert::detail::formatNumber(1.0 / 3) == "0.3333333333333333");
   CHECK(ruppert::detail::formatNumber(-2.5e-300) == "-2.5e-300");
 }
+
+namespace {
+
+// Numbers as text of every kind strtod reads: random digits and exponents across the whole range
+// (subnormals, overflow), long digit strings, and the exact halfway points between neighboring
+// doubles (from long double, which holds them exactly on x86) and a hair either side of them.
+std::vector<std::string> decimalTexts() {
+  std::vector<std::string> out = {"0", "-0", "0.0", "1", "-1", "0.1", "1e22", "1e23", "9007199254740993", "123456789012345678",
+                                  "2.2250738585072011e-308", "2.2250738585072014e-308", "4.9406564584124654e-324",
+                                  "2.4703282292062327e-324", "2.4703282292062328e-324", "1.7976931348623157e308",
+                                  "1.7976931348623158e308", "1.7976931348623159e308", "1e309", "1e-400", "00012.5000",
+                                  "0.000000000000000000000000000000001", "1E+5", "1e-5", "-7.25E-3"};
+  std::mt19937_64 random(71203);
+  for (int i = 0; i < 4000; ++i) {
+    std::string text = random() % 2 ? "-" : "";
+    const int digits = 1 + int(random() % (i % 4 == 0 ? 40 : 17));
+    for (int k = 0; k < digits; ++k) text.push_back(char('0' + random() % 10));
+    if (random() % 2) text.insert(text.size() - std::size_t(random() % digits), ".");
+    if (text.back() == '.' || text[text.size() - 1 - (text[0] == '-')] == '.') text += "5";
+    if (random() % 2) text += "e" + std::to_string(int(random() % 660) - 340);
+    out.push_back(text);
+  }
+  for (int i = 0; i < 1500; ++i) {
+    const std::uint64_t bits = random() & ~(std::uint64_t(0x7FF) << 52) | (random() % 0x7FE) << 52;
+    double a;
+    std::memcpy(&a, &bits, sizeof a);
+    const double b = std::nextafter(a, std::numeric_limits<double>::infinity());
+    char buf[2000];
+    std::snprintf(buf, sizeof buf, "%.1100Lg", (static_cast<long double>(a) + b) / 2);
+    out.push_back(buf);
+    std::string text(buf);
+    if (text.find('e') == std::string::npos) {
+      out.push_back(text + "0000000000000000000000000000001");
+      std::snprintf(buf, sizeof buf, "%.60Lg", (static_cast<long double>(a) + b) / 2);
+      out.push_back(buf);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("parseDecimal reads what strtod reads", "[messages]") {
+  for (const std::string& text : decimalTexts()) {
+    INFO(text);
+    const double expected = std::strtod(text.c_str(), nullptr), got = ruppert::detail::parseDecimal(text);
+    REQUIRE(std::memcmp(&expected, &got, sizeof got) == 0);
+  }
+}

@@ -2,14 +2,14 @@
 #include "io/json_tree.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <string>
+#include <string_view>
 
 #include "ruppert/ruppert.h"
 
 #include "cold_code.h"
+#include "decimal_text.h"
 
 RUPPERT_COLD_BEGIN
 namespace ruppert::detail {
@@ -184,12 +184,11 @@ class TreeParser {
       if (p_ < text_.size() && (text_[p_] == '+' || text_[p_] == '-')) ++p_;
       if (!digits()) fail("a number needs digits in its exponent");
     }
-    const std::string token = text_.substr(start, p_ - start);
-    errno = 0;
-    const double d = std::strtod(token.c_str(), nullptr);
+    const std::string_view token(text_.data() + start, p_ - start);
+    const double d = parseDecimal(token);
     if (!std::isfinite(d)) {
       p_ = start;
-      fail("the number " + token + " is too large for a double");
+      fail("the number " + std::string(token) + " is too large for a double");
     }
     return d;
   }
