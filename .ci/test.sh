@@ -14,10 +14,10 @@ else
   bash tests/run-native.sh
 fi
 
-# The code's shape (issue 18): no source file over 600 lines, no C++ function over 80 (clang-tidy).
+# The code's shape: no source file over 600 lines, no C++ function over 80 (clang-tidy).
 bash tests/run-code-shape.sh
 
-# Hostile input (issue 6): the core tests again under AddressSanitizer + UBSan, then each libFuzzer
+# Hostile input: the core tests again under AddressSanitizer + UBSan, then each libFuzzer
 # target for 60 s (any crash, sanitizer report, hang or runaway memory fails the run).
 bash tests/run-sanitize.sh
 bash tests/run-fuzz.sh 60

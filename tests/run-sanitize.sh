@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Core tests under AddressSanitizer + UndefinedBehaviorSanitizer (issue 6).
+# Core tests under AddressSanitizer + UndefinedBehaviorSanitizer.
 #
 # Configures its own build directory (build-sanitize) with -DRUPPERT_SANITIZE=ON, builds the test
 # binary (and the CLI it runs), then runs ctest. Any sanitizer report aborts the test that caused it

@@ -1,10 +1,9 @@
 #include "message.h"
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "cold_code.h"
+#include "decimal_text.h"
 
 // Messages are built on error and notice paths only: compiled for size (cold_code.h).
 RUPPERT_COLD_BEGIN
@@ -18,12 +17,12 @@ std::string message(std::initializer_list<std::string_view> parts) {
 }
 
 std::string formatNumber(double v) {
-  char buf[40];
+  std::string text;
   for (int digits = 6; digits <= 17; ++digits) {
-    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-    if (std::strtod(buf, nullptr) == v || std::isnan(v)) break;
+    text = formatSignificant(v, digits);
+    if (std::isnan(v) || parseDecimal(text) == v) break;
   }
-  return buf;
+  return text;
 }
 
 }  // namespace ruppert::detail

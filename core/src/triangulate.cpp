@@ -6,9 +6,13 @@
 //   6.8) -> smooth (smooth/, Options::smooth) -> output (output/assemble_output.cpp).
 // The decisions between stages are made here: the convex hull stands in for segments that enclose
 // nothing, and the variant says when the outside goes (before refining, or after it in the box).
-#include <chrono>
 #include <optional>
 #include <utility>
+#if defined(__unix__) || defined(__APPLE__) || defined(__EMSCRIPTEN__)
+#include <time.h>
+#else
+#include <chrono>
+#endif
 
 #include "output/assemble_output.h"
 #include "cold_code.h"
@@ -51,9 +55,26 @@ Domain meshHullInstead(MeshState& m, const Domain& first) {
 // The steps, once per call (the work is in what they call): compiled for size (cold_code.h).
 RUPPERT_COLD_BEGIN
 
+namespace {
+
+// A monotonic clock in milliseconds, for Stats::milliseconds. Not std::chrono::steady_clock where
+// POSIX's clock is there: libc++'s reports a failing clock with std::system_error, whose message
+// formatting links printf's whole formatter into the WebAssembly module.
+double nowMilliseconds() {
+#if defined(__unix__) || defined(__APPLE__) || defined(__EMSCRIPTEN__)
+  timespec now{};
+  clock_gettime(CLOCK_MONOTONIC, &now);
+  return double(now.tv_sec) * 1e3 + double(now.tv_nsec) * 1e-6;
+#else
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+#endif
+}
+
+}  // namespace
+
 Mesh triangulate(const Plc& userPlc, const Options& options) {
   using namespace detail;
-  const auto start = std::chrono::steady_clock::now();
+  const double start = nowMilliseconds();
   const bool box = options.variant == Variant::BoundingBox;
   // The caller's indices and markers, before curves' pieces add points: a segment's index past the
   // input's points would name one of them (found by fuzz_mesh; tests/core/test_curves.cpp, "bad
@@ -104,8 +125,7 @@ Mesh triangulate(const Plc& userPlc, const Options& options) {
   if (options.sizeMeasure) outcome.lfsIntegral = estimateLfsIntegral(m);
 
   Mesh mesh = assembleOutput(m, std::move(outcome));
-  mesh.stats.milliseconds =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  mesh.stats.milliseconds = nowMilliseconds() - start;
   return mesh;
 }
 

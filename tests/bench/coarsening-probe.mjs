@@ -1,4 +1,4 @@
-// Probe (issue 42, the size of meshes above 34 degrees): how many triangles would greedy vertex
+// Probe (the size of meshes above 34 degrees): how many triangles would greedy vertex
 // removal take out of a finished mesh? Each free Steiner vertex (a circumcenter or off-center, not
 // on a segment) is removed when the Delaunay triangulation of its star's ring has every angle at the
 // bound; passes repeat until none goes. If the meshes at 38-40 degrees were bloated by vertices the

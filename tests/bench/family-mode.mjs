@@ -1,6 +1,6 @@
 // Family mode of compare-triangle.mjs (--dir DIR): ruppert against Triangle over the generated shape
 // families (build-native/tests/write_shape_families DIR writes DIR/<family>-<seed>.poly), per family
-// and per placement, with the measures of issue 14's "Done when":
+// and per placement, with the measures its targets name:
 //   * at the compared angles (default 20, 25, 30, 33): ruppert / Triangle triangle counts, geometric
 //     means per family and over all PLCs, the worst family;
 //   * at the ruppert-only angles (default 35, 38, 40): the share of PLCs where ruppert is complete AND

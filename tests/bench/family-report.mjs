@@ -26,7 +26,7 @@ function ratios(rows, angle) {
 function highAngleMeasures(rows, angle) {
   const misses = [];
   const times = [];
-  const heldOver33 = [];  // a held mesh's triangles over the same PLC's 33-degree mesh's (issue 42)
+  const heldOver33 = [];  // a held mesh's triangles over the same PLC's 33-degree mesh's
   let held = 0;
   for (const row of rows) {
     const r = row.ruppert[angle];
@@ -69,7 +69,7 @@ function measures(rows, options) {
   return { compared, high };
 }
 
-// Issues 14's and 42's "Done when" for this placement, each check with its measured value.
+// The targets for this placement, each check with its measured value.
 function doneWhen(overall, families, options) {
   const checks = [];
   const geoAt = (a) => overall.compared[a]?.geoMean;
@@ -79,7 +79,7 @@ function doneWhen(overall, families, options) {
     const above = families.filter((f) => f.compared[angle].geoMean > 1);
     checks.push({ what: `no family above 1.0x at ${angle}°`, value: above.map((f) => `${f.family} ${fmt(f.compared[angle].geoMean)}`).join(', ') || 'none', ok: above.length === 0 });
   }
-  // Issue 42's: the share held, and the held meshes' size over the 33-degree mesh (geometric mean).
+  // Above 34 degrees: the share held, and the held meshes' size over the 33-degree mesh (geometric mean).
   const targets = { 35: 0.98, 38: 0.95, 40: 0.9, 42: 0.6 };
   const sizeTargets = { 35: 1.3, 38: 2.0, 40: 2.5 };
   for (const angle of options.highAngles) {
@@ -147,7 +147,7 @@ export function familyMarkdown(report) {
     `"Bound held": ruppert says complete and every triangle that is not exempt (the chapter's exemptions, §6.6: nestled in a small input angle, or with a seditious shortest edge; judged from the output arrays by tests/bench/mesh-exemptions.mjs) has its smallest angle >= the bound. Time limit ${options.ruppertTimeoutMs / 1000} s per ruppert run (wall time of one call, copy in and out included).`, '');
   lines.push('## Summary', '');
   summaryTables(report, lines);
-  lines.push('', '## Done when (issues 14 and 42)', '', '| check | measured | met |', '|---|---|---|');
+  lines.push('', '## Targets', '', '| check | measured | met |', '|---|---|---|');
   for (const c of summary.doneWhen) lines.push(`| ${c.what} | ${c.value} | ${c.ok ? 'yes' : '**no**'} |`);
   lines.push('', '## Per family', '', `Columns ${options.angles.map((a) => `${a}°`).join(', ')}: geometric mean of ruppert/Triangle triangle counts. "held": PLCs where the bound held. "worst miss ∠": the smallest non-exempt angle of a result that missed its bound (at any ruppert-only angle); "max miss / 33°": its triangles over the same PLC's 33° mesh.`, '');
   familyTable(report, lines);

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Instructions per phase, ruppert's core against Triangle's, natively under callgrind (issue 41):
+# Instructions per phase, ruppert's core against Triangle's, natively under callgrind:
 # one PLC per shape family (seed 1 unless --seed S), a quality bound of ANGLE degrees.
 #
 #   build-native/tests/write_shape_families /tmp/families

@@ -1,4 +1,4 @@
-// The page for courses, its smaller promises (issue 44): an editable embed shows its tools, the
+// The page for courses, its smaller promises: an editable embed shows its tools, the
 // canvas fills a small window, the histogram has a count axis and the bound and is in view, Clear
 // takes the caption away, the hover box hides off the mesh, a resize keeps the drawing in view,
 // notices read as words and short numbers, and a first visit gets a dismissible "Start here".

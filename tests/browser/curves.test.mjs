@@ -1,8 +1,8 @@
-// Curves on the page (issue 45): the circle, arc and Bézier tools driven by the mouse, meshing on
+// Curves on the page: the circle, arc and Bézier tools driven by the mouse, meshing on
 // the curves (every boundary vertex of a curve on it), the exports (.msh, .vtu, the mesh's .json and
 // the drawing's .json with its curves, read back by the file panel), dragging a handle, undo,
-// Delete, and a replay step that splits a curve's piece. Done-when of issue 45 item 5: "The page
-// draws, meshes and exports a plate with a round hole made with its circle tool".
+// Delete, and a replay step that splits a curve's piece. And the
+// whole round trip: a plate with a round hole drawn with the circle tool, meshed and exported.
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { after, before, test } from 'node:test';

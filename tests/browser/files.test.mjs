@@ -47,7 +47,7 @@ const PENTAGON = `# pentagon with a hole
 1 5 4.6
 `;
 
-// Issue 15: the page meshes in a worker on the mesher module alone (144 KB gzipped); the text
+// The page meshes in a worker on the mesher module alone (the smaller download); the text
 // formats module comes with the first file read or written.
 test('the page fetches only the mesher to mesh, and the text formats with the first file', async () => {
   assert.deepEqual(wasmFetched, ['/wasm/dist/ruppert.wasm']);

@@ -1,4 +1,4 @@
-// Checks shared by the marker, edge, attribute and boundary-Steiner tests (issue 16): what the
+// Checks shared by the marker, edge, attribute and boundary-Steiner tests: what the
 // output must say, computed independently from the geometry of the mesh and its input.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Shape families: generated PLCs of the kinds of shape where refinement is judged (issue 14), each
+// Shape families: generated PLCs of the kinds of shape where refinement is judged, each
 // parameterised by a seed and a size, used by the refinement tests ("[families]") and, written to
 // .poly files by tests/tools/write_shape_families.cpp, by tests/bench/compare-triangle.mjs --dir.
 //

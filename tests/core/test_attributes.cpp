@@ -1,4 +1,4 @@
-// Per-point attributes (issue 16, item 6): read from the .node/.poly attribute columns, carried onto
+// Per-point attributes: read from the .node/.poly attribute columns, carried onto
 // every new vertex by linear interpolation, written back in the output .node. A linear field
 // a x + b y + c given at the input points must come back, to rounding, at every output vertex.
 #include <catch2/catch.hpp>

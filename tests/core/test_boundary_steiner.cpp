@@ -1,4 +1,4 @@
-// Options::noBoundarySteiner / noSegmentSteiner (Triangle's -Y / -YY; issue 16, item 7): refinement
+// Options::noBoundarySteiner / noSegmentSteiner (Triangle's -Y / -YY): refinement
 // ends, no new vertex lies on a forbidden subsegment, the result is a valid CDT with every input
 // segment a chain, and what stays bad is reported as SegmentSplitForbidden.
 #include <catch2/catch.hpp>

@@ -517,8 +517,8 @@ TEST_CASE("the validator rejects broken meshes", "[cdt][validator]") {
 }
 
 // The chain check cuts an uncovered stretch at the mesh vertices exactly on it and judges the pieces
-// one by one, and counts only mesh vertices as stations (issue 19: three judge false positives of
-// the careless-PLC sweep, now fixtures in tests/hostile). Those relaxations must not hide a real gap:
+// one by one, and counts only mesh vertices as stations (three judge false positives of the
+// careless-PLC sweep, fixtures in tests/hostile). Those relaxations must not hide a real gap:
 // half of an interior segment through a vertex, or its last subsegment, taken out of a true mesh.
 TEST_CASE("the chain check still finds a missing piece of a segment through a vertex", "[cdt][validator]") {
   Plc plc;

@@ -1,4 +1,4 @@
-// The CLI's solver formats and pipelines (issue 16, items 9 and 10): --format msh|vtu|geojson,
+// The CLI's solver formats and pipelines: --format msh|vtu|geojson,
 // - as INPUT (standard input, its format from --input-format or sniffed), -o - (standard output),
 // and the progress line on a terminal.
 #include <catch2/catch.hpp>

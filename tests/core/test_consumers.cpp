@@ -1,4 +1,4 @@
-// The .msh and .vtu writers judged by the programs that read them (issue 16, item 11): meshio
+// The .msh and .vtu writers judged by the programs that read them: meshio
 // (Debian's python3-meshio, through /usr/bin/python3) reads both files back and must find the same
 // points, triangles (count and connectivity), lines and cell data as the mesh in memory; Gmsh opens
 // the .msh (`gmsh -check`) and must report no error and the right node and element counts. Both

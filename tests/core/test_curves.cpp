@@ -1,4 +1,4 @@
-// Curved boundaries (Plc::curves, issue 45): refined on the curve. Every mesh is judged by the
+// Curved boundaries (Plc::curves): refined on the curve. Every mesh is judged by the
 // validator (Delaunay, the angle bound with the chapter's exemptions, the input) and by the
 // independent curve check (curve_checks.h): vertices on their curves, pieces within the tolerance
 // of them, and the mesh's area within the chords' error of the curved domain's.

@@ -164,11 +164,10 @@ TEST_CASE("shape families: scaling by 2^k gives the same mesh size, integer shif
   }
 }
 
-// Issue 14's yardstick at a small bound, on the family that was at parity there: Triangle 1.6's
-// triangle counts (triangle-wasm 1.0.0, switches -pzQq25) for serpentine corridors, seeds 1 to 20.
-// Before rejected first choices below 28 degrees split the subsegment they encroach
-// (optimal_placement.h: kSplitBeforeSearchBelowDegrees) the default made 1.002 times as many
-// (geometric mean); 0.993 with it.
+// The size yardstick at a small bound, on the family closest to parity: Triangle 1.6's triangle
+// counts (triangle-wasm 1.0.0, switches -pzQq25) for serpentine corridors, seeds 1 to 20. Rejected
+// first choices below 28 degrees split the subsegment they encroach
+// (optimal_placement.h: kSplitBeforeSearchBelowDegrees), which keeps the default at or under them.
 TEST_CASE("serpentine corridors at 25 degrees: no more triangles than Triangle makes", "[families]") {
   const double triangleCounts[] = {266, 308, 138, 128, 45, 366, 180, 216, 101, 323,
                                    117, 290, 104, 297, 216, 231, 358, 257, 280, 305};

@@ -1,4 +1,4 @@
-// The hostile-input catalogue (tests/hostile, issue 6): every file there, with the outcome listed in
+// The hostile-input catalogue (tests/hostile): every file there, with the outcome listed in
 // tests/hostile/expectations.txt, through the library (readFile + triangulate, plain CDT and
 // minAngle 30 and 40, at most 20000 Steiner vertices) and through the native CLI. An input must
 // end in either the listed error code or a mesh the validator accepts; the CLI must exit 0, or 1

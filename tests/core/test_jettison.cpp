@@ -1,4 +1,4 @@
-// Options::jettison (Triangle's -j; issue 16, item 8): unused input points (merged duplicates,
+// Options::jettison (Triangle's -j): unused input points (merged duplicates,
 // points outside the domain) are left out, the rest renumbered in order, and Mesh::inputToOutput says
 // where every input point went.
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// Boundary markers and edges (issue 16, items 1 and 2): Triangle's box.poly keeps its markers 5, 10
+// Boundary markers and edges: Triangle's box.poly keeps its markers 5, 10
 // and 33 where they belong; random markers on generated PLCs land on exactly the subsegments and
 // vertices that lie on their segments; the edge list holds every edge once with the right marker.
 #include <catch2/catch.hpp>

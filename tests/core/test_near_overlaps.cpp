@@ -1,4 +1,4 @@
-// Segments that nearly overlap (issue 19): pairs and fans meeting at 1e-3 to 1e-12 rad, sharing an
+// Segments that nearly overlap: pairs and fans meeting at 1e-3 to 1e-12 rad, sharing an
 // apex or starting and ending a hair apart, crossed by others (nearOverlaps in plc_generators.h),
 // and the three careless inputs that an independent checker flagged (tests/hostile/). The rule
 // (ruppert.h, "Segments that nearly overlap"): each stays its own constrained chain all the way,

@@ -1,4 +1,4 @@
-// Outlines centred on the origin (issue 42): a boundary edge from (+c, y1) to (-c, y2) has its
+// Outlines centred on the origin: a boundary edge from (+c, y1) to (-c, y2) has its
 // midpoint on x = 0, rounded in y to either side of the edge. Such shapes, their mirror images and
 // their shifted copies must all refine completely and validly: a split point's nudge onto the
 // domain's side must not depend on the ulp of a coordinate that is 0.

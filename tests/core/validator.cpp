@@ -708,7 +708,7 @@ void checkSegmentCoverage(const Scaled& s, const EdgeMaps& maps, const ValidateO
     // Stations are the vertices of the segment's own subsegments and those exactly on it. A carrier
     // passing beside a station (one strictly between its ends along the segment) covers nothing, so a
     // chain that steps back past a vertex of its segment leaves a gap; the other carriers cover
-    // their stretch. A segment meeting this one at a tiny angle (issue 19) has vertices within the
+    // their stretch. A segment meeting this one at a tiny angle has vertices within the
     // tolerance that are on its own chain, not this one's: they are not stations, and its carriers
     // may pass beside this one's stations, which this one's own chain then covers.
     std::unordered_set<std::uint32_t> own;

@@ -1,4 +1,4 @@
-// libFuzzer target: the GeoJSON reader on arbitrary bytes (issue 16). Every input must either be
+// libFuzzer target: the GeoJSON reader on arbitrary bytes. Every input must either be
 // read into a Plc that keeps the reader's promises (plc_invariants.h) or be rejected with a
 // ruppert::Error; crashes, sanitizer reports, hangs (deep nesting, many rings: the reader meshes a
 // CDT of the rings to place hole seeds) and huge allocations are findings.

@@ -1,4 +1,4 @@
-// Curved boundaries (issue 45) through the installed package: plc.curves and options.curveTolerance.
+// Curved boundaries through the installed package: plc.curves and options.curveTolerance.
 // Each mesh is judged by the package's validator (Delaunay, the angle and area bounds) and by the
 // checks below, computed from the input's curves alone: every vertex of a curve's pieces on the
 // curve (within 1e-12 of its size), every piece within the tolerance of its stretch of curve, and the

@@ -1,4 +1,4 @@
-// Issue 16, derived outputs through the installed package: refining a mesh (triangles,
+// Derived outputs through the installed package: refining a mesh (triangles,
 // triangleMaxArea, parseEle, the CLI's BASE.ele), quadratic elements (order: 2) and the Voronoi dual
 // (voronoi: true), with the bounds and geometry re-checked here in plain JavaScript.
 import assert from 'node:assert/strict';

@@ -1,4 +1,4 @@
-// toMsh, toVtu, toGeoJson and parseGeoJson through the installed tarball (issue 16, items 9 and 11),
+// toMsh, toVtu, toGeoJson and parseGeoJson through the installed tarball,
 // and the package CLI's --format msh|vtu|geojson, - and -o -. When Debian's python3-meshio is
 // installed, meshio reads the package's .msh and .vtu back too.
 import assert from 'node:assert/strict';

@@ -1,5 +1,5 @@
 // The package tests' chain check (validate-chains.mjs) must still find real gaps after the
-// relaxations the careless-PLC sweep called for (issue 19): an uncovered stretch is cut at the mesh
+// relaxations the careless-PLC sweep called for: an uncovered stretch is cut at the mesh
 // vertices exactly on it and judged piece by piece, midpoints are located exactly, and only mesh
 // vertices are stations. Half of an interior segment through a vertex, taken out of a true mesh,
 // must be reported; the true mesh must not.

@@ -1,4 +1,4 @@
-// Boundary markers and edges from the installed package (issue 16, items 1 and 2): box.poly keeps
+// Boundary markers and edges from the installed package: box.poly keeps
 // Triangle's markers 5, 10 and 33; random markers on random PLCs land on exactly the subsegments and
 // vertices of their segments; `edges: true` lists every edge once with its marker; the CLI's -e.
 import assert from 'node:assert/strict';

@@ -1,4 +1,4 @@
-// One set of names per enum (issue 18): the core declares them (core/include/ruppert/ruppert.h's
+// One set of names per enum: the core declares them (core/include/ruppert/ruppert.h's
 // k...Names), the binding exports them (wasm/binding/describe.cpp), and the package's JavaScript and
 // its index.d.ts must use exactly those. The .d.ts has to spell them out (TypeScript needs literal
 // unions), so this test reads its text and fails on any name that differs, is missing or is extra.
@@ -137,7 +137,7 @@ test("the page's words (web/labels.js) are keyed by the core's names", async () 
   for (const reason of keys(labels.EXEMPTION_LABELS)) assert.ok(names.reasons.includes(reason), reason);
 });
 
-// Options (issue 43): every option's name, type, default and range is written once, in
+// Options: every option's name, type, default and range is written once, in
 // core/include/ruppert/option_table.h; the binding describes them, triangulate() and the CLI take
 // them from there, and index.d.ts, which spells them out, must agree.
 // Only the CLI's module (ruppert-cli.wasm) describes them, which keeps the mesher small.

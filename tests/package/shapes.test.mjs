@@ -26,7 +26,7 @@ test('an unknown key of the input, a region or the options is an error naming it
       /the input has an unknown key 'Segments' \(did you mean 'segments'\?\)/],
     [{ ...square, hole: [0.5, 0.5] }, {}, 'MALFORMED_INPUT', /unknown key 'hole' \(did you mean 'holes'\?\)/],
     [{ ...square, point_markers: [1, 1, 1, 1] }, {}, 'MALFORMED_INPUT', /'point_markers' \(did you mean 'pointMarkers'\?\)/],
-    // `triangles` is a key since issue 16 (refining a mesh); a near miss still gets its did-you-mean.
+    // `triangles` is a key (refining a mesh); a near miss still gets its did-you-mean.
     [{ ...square, triangle: [0, 1, 2] }, {}, 'MALFORMED_INPUT', /unknown key 'triangle' \(did you mean 'triangles'\?\); the keys are points, segments/],
     [{ ...square, elements: [0, 1, 2] }, {}, 'MALFORMED_INPUT', /unknown key 'elements'; the keys are points, segments/],
     [{ ...square, regions: [{ x: 0.5, y: 0.5, area: 0.1 }] }, {}, 'MALFORMED_INPUT',

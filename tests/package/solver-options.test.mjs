@@ -1,4 +1,4 @@
-// The solver-facing options of issue 16 from the installed package: pointAttributes interpolated
+// The solver-facing options from the installed package: pointAttributes interpolated
 // onto new vertices, noBoundarySteiner / noSegmentSteiner, jettison; and their CLI switches.
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';

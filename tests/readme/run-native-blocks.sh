@@ -79,7 +79,7 @@ usage_block="$(grep -l '^usage: ruppert' "$work"/blocks/*.txt | head -1)"
 "$build/core/ruppert" --help | sed '/^$/,$d' >"$work/usage"
 diff -u "$work/usage" "$usage_block" || fail "README.md's usage block differs from ruppert --help"
 
-# The manual stays a manual (issue 43): at most 300 lines and 3 commit hashes; figures and their
+# The manual stays a manual: at most 300 lines and 3 commit hashes; figures and their
 # history go to docs/measurements.md.
 lines=$(wc -l <"$readme")
 [[ $lines -le 300 ]] || fail "README.md has $lines lines (limit 300): move details into docs/"

@@ -1,14 +1,12 @@
 // operator new and delete for the WebAssembly modules: blocks up to 64 KB come from free lists of
 // power-of-two sizes, refilled from malloc, so that a call's many short-lived vectors (about 64
 // allocations for a single triangle: the mesh's arrays, the refiner's scratch, the output) cost a
-// list push and pop instead of a trip through emmalloc each. Larger blocks go to malloc as before.
+// list push and pop instead of a trip through emmalloc each. Larger blocks go to malloc.
 //
 // Why here and not in the core: natively glibc's per-thread caches do this already; emmalloc has no
-// such cache, and in a profile of a one-triangle call in Node its allocate and free were 12% of the
-// call. With these lists, 11 of the per-call benchmark's smallest inputs take 3.5-7% less time per
-// call and a single triangle 5-7% (in one Node process, alternating with the build without them,
-// both orders); cdt_guitar and earcut_earcut the same. Each list keeps at most keepLimit(c) blocks
-// (64, and no more than 64 KB), so that after a large mesh the lists hold under 13 x 64 KB.
+// such cache, and its allocate and free are a visible share of a small call's time in Node
+// (docs/measurements.md). Each list keeps at most keepLimit(c) blocks (64, and no more than 64 KB),
+// so that after a large mesh the lists hold under 13 x 64 KB.
 // Single-threaded, as the modules are.
 #include <cstddef>
 #include <cstdint>

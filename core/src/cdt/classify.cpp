@@ -13,7 +13,6 @@
 #include "cdt/classify.h"
 
 #include <algorithm>
-#include <deque>
 #include <string>
 
 #include "cold_code.h"
@@ -115,22 +114,23 @@ std::vector<std::uint8_t> outsideTriangles(MeshState& m) {
   }
   const auto& holes = m.input.holes;
   if (holes.empty() && m.options->autoHoles) {
-    // Depth by 0-1 BFS from the exterior; crossing a constrained edge costs one.
-    std::vector<std::uint32_t> depth(slots, kNone);
-    std::deque<std::uint32_t> dq;
+    // Depth from the exterior, one level at a time: a flood through free edges spreads a level,
+    // whose constrained edges seed the next (crossing one costs one).
+    std::vector<std::uint32_t> depth(slots, kNone), level, next;
     for (std::uint32_t s = 0; s < slots; ++s)
-      if (t.alive(s) && state[s] == kOutside) depth[s] = 0, dq.push_back(s);
-    while (!dq.empty()) {
-      const std::uint32_t u = dq.front();
-      dq.pop_front();
-      for (std::uint32_t i = 0; i < 3; ++i) {
-        const std::uint32_t h = 3 * u + i;
-        if (t.twin[h] == kNone) continue;
-        const std::uint32_t w = t.twin[h] / 3;
-        const std::uint32_t d = depth[u] + (t.con[h] != kFree ? 1 : 0);
-        if (d >= depth[w]) continue;
-        depth[w] = d;
-        if (t.con[h] != kFree) dq.push_back(w); else dq.push_front(w);
+      if (t.alive(s) && state[s] == kOutside) depth[s] = 0, level.push_back(s);
+    for (std::uint32_t d = 0; !level.empty(); ++d, level.swap(next)) {
+      next.clear();
+      for (std::size_t k = 0; k < level.size(); ++k) {
+        const std::uint32_t u = level[k];
+        if (depth[u] != d) continue;  // reached at a smaller depth meanwhile
+        for (std::uint32_t i = 0; i < 3; ++i) {
+          const std::uint32_t h = 3 * u + i;
+          if (t.twin[h] == kNone) continue;
+          const std::uint32_t w = t.twin[h] / 3;
+          if (t.con[h] == kFree && depth[w] > d) depth[w] = d, level.push_back(w);
+          else if (t.con[h] != kFree && depth[w] > d + 1) depth[w] = d + 1, next.push_back(w);
+        }
       }
     }
     for (std::uint32_t s = 0; s < slots; ++s)

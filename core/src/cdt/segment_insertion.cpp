@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <string>
 #include <vector>
 
@@ -365,14 +364,17 @@ class SegmentInserter {
   void flipAway(std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t>& crossed) {
     const double* pa = t_.pt(a);
     const double* pb = t_.pt(b);
-    std::deque<std::pair<std::uint32_t, std::uint32_t>> queue;
+    // A first-in first-out queue of vertex pairs: queue[head..] waits (a vector read from the front,
+    // compacted when half is read).
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> queue;
+    std::size_t head = 0;
     for (std::size_t k = 0; k < crossed.size(); k += 2) queue.emplace_back(crossed[k], crossed[k + 1]);
     newEdges_.clear();
     const std::uint64_t limit = 1000 + 100ull * queue.size() * queue.size();
-    for (std::uint64_t step = 0; !queue.empty(); ++step) {
+    for (std::uint64_t step = 0; head < queue.size(); ++step) {
       if (step > limit) throw Error(ErrorCode::Internal, "segment recovery did not converge");
-      const auto [u, v] = queue.front();
-      queue.pop_front();
+      const auto [u, v] = queue[head++];
+      if (head > 64 && 2 * head > queue.size()) queue.erase(queue.begin(), queue.begin() + std::ptrdiff_t(head)), head = 0;
       const std::uint32_t h = t_.findEdge(u, v);
       if (h == kNone) continue;
       const std::uint32_t x = t_.apex(h), y = t_.apex(t_.twin[h]);
@@ -458,8 +460,8 @@ void insertHull(MeshState& m) {
   SegmentInserter inserter(m);
   for (std::size_t k = 0; k < hull.size(); ++k) inserter.insert(hull[k], hull[(k + 1) % hull.size()], kHullEdge);
   // After the segments (no region enclosed), hull edges a few ulps from nearly collinear segments
-  // can cross their chains; those repairs need the same last Lawson pass as insertSegments' (issue
-  // 19: a careless PLC whose points all lay within rounding of one line kept a non-Delaunay edge).
+  // can cross their chains; those repairs need the same last Lawson pass as insertSegments' (a
+  // careless PLC whose points all lay within rounding of one line kept a non-Delaunay edge).
   if (inserter.repairs() > 0) m.tri.legalizeAll();
 }
 RUPPERT_COLD_END

@@ -2,14 +2,16 @@
 #include "io/json_tree.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
+#include <cstdint>
 #include <string>
+#include <string_view>
+#include <utility>
 
 #include "ruppert/ruppert.h"
 
 #include "cold_code.h"
+#include "decimal_text.h"
 
 RUPPERT_COLD_BEGIN
 namespace ruppert::detail {
@@ -141,15 +143,22 @@ class TreeParser {
   // RFC 8259 leaves duplicate names to the reader; two "type"s or "coordinates" are refused, as the
   // .json reader refuses them, instead of silently taking one.
   void requireUniqueKeys(const JsonValue& v) const {
-    std::vector<const std::string*> keys;
-    for (const auto& member : v.members) keys.push_back(&member.first);
-    std::sort(keys.begin(), keys.end(), [](const std::string* a, const std::string* b) { return *a < *b; });
-    for (std::size_t i = 1; i < keys.size(); ++i) {
-      if (*keys[i] == *keys[i - 1]) {
-        throw Error(ErrorCode::MalformedInput,
-                    name_ + ":" + jsonPosition(text_, v.offset) + ": duplicate key \"" + *keys[i] + "\" in an object");
-      }
+    // Keys sorted by a hash (FNV-1a), then compared within runs of equal hashes: the sort is one
+    // the core instantiates anyway, where one ordering strings would be a copy of its own.
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys;
+    for (std::size_t k = 0; k < v.members.size(); ++k) {
+      std::uint64_t hash = 14695981039346656037ull;
+      for (unsigned char c : v.members[k].first) hash = (hash ^ c) * 1099511628211ull;
+      keys.emplace_back(hash, static_cast<std::uint32_t>(k));
     }
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      for (std::size_t j = i + 1; j < keys.size() && keys[j].first == keys[i].first; ++j) {
+        const std::string& key = v.members[keys[j].second].first;
+        if (key == v.members[keys[i].second].first)
+          throw Error(ErrorCode::MalformedInput,
+                      name_ + ":" + jsonPosition(text_, v.offset) + ": duplicate key \"" + key + "\" in an object");
+      }
   }
 
   // A numeric array that met a non-number: its numbers become values (their offsets are lost; the
@@ -184,12 +193,11 @@ class TreeParser {
       if (p_ < text_.size() && (text_[p_] == '+' || text_[p_] == '-')) ++p_;
       if (!digits()) fail("a number needs digits in its exponent");
     }
-    const std::string token = text_.substr(start, p_ - start);
-    errno = 0;
-    const double d = std::strtod(token.c_str(), nullptr);
+    const std::string_view token(text_.data() + start, p_ - start);
+    const double d = parseDecimal(token);
     if (!std::isfinite(d)) {
       p_ = start;
-      fail("the number " + token + " is too large for a double");
+      fail("the number " + std::string(token) + " is too large for a double");
     }
     return d;
   }

@@ -57,10 +57,12 @@ void addQuadraticNodes(Mesh& mesh) {
   }
   // Subsegments by their ends, with their markers (Mesh::segmentMarkers, else 1): a midpoint node on
   // a subsegment takes its marker, as a vertex inserted on a segment does.
-  std::vector<std::pair<std::uint64_t, std::int32_t>> subsegments;
+  // (The marker is kept as unsigned bits: the pair type then shares the sort the triangulation's
+  // edge keys instantiate.)
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> subsegments;
   for (std::size_t s = 0; s + 1 < mesh.segments.size(); s += 2) {
     const std::int32_t marker = s / 2 < mesh.segmentMarkers.size() ? mesh.segmentMarkers[s / 2] : 1;
-    subsegments.emplace_back(edgeKey(mesh.segments[s], mesh.segments[s + 1]), marker);
+    subsegments.emplace_back(edgeKey(mesh.segments[s], mesh.segments[s + 1]), static_cast<std::uint32_t>(marker));
   }
   std::sort(subsegments.begin(), subsegments.end());
   const std::size_t k = mesh.attributesPerPoint;
@@ -80,8 +82,8 @@ void addQuadraticNodes(Mesh& mesh) {
       // Halving is exact (short of the subnormals), so this is the midpoint rounded once.
       mesh.points.push_back(0.5 * mesh.points[2 * std::size_t(a)] + 0.5 * mesh.points[2 * std::size_t(b)]);
       mesh.points.push_back(0.5 * mesh.points[2 * std::size_t(a) + 1] + 0.5 * mesh.points[2 * std::size_t(b) + 1]);
-      const auto sub = std::lower_bound(subsegments.begin(), subsegments.end(), std::make_pair(edgeKey(a, b), INT32_MIN));
-      if (sub != subsegments.end() && sub->first == edgeKey(a, b)) mesh.pointMarkers.push_back(sub->second);
+      const auto sub = std::lower_bound(subsegments.begin(), subsegments.end(), std::make_pair(edgeKey(a, b), 0u));
+      if (sub != subsegments.end() && sub->first == edgeKey(a, b)) mesh.pointMarkers.push_back(static_cast<std::int32_t>(sub->second));
       else mesh.pointMarkers.push_back(g == kNoNeighbor ? 1 : 0);
       // Attributes interpolated linearly: the mean of the edge's ends.
       for (std::size_t j = 0; attributes && j < k; ++j)

@@ -4,10 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "cold_code.h"
+#include "decimal_text.h"
 #include "refine/refine_setup.h"
 
 // Runs once per refinement: compiled for size (cold_code.h).
@@ -37,8 +37,7 @@ Refiner::Unmet Refiner::countUnmet() const {
 }
 
 std::string Refiner::guardMessage(std::uint64_t unmet) const {
-  char measure[64];
-  std::snprintf(measure, sizeof measure, "%.4g", guardIntegral_);
+  const std::string measure = formatSignificant(guardIntegral_, 4);
   return "refinement stopped after " + std::to_string(plan_.used + inserted_) +
          " steps, more than the automatic budget, " + std::to_string(int(kGuardStepsPerInverseRadian)) +
          " per inverse radian of the input's acute corners and " + std::to_string(int(kGuardStepsPerLfsUnit)) +
@@ -48,8 +47,8 @@ std::string Refiner::guardMessage(std::uint64_t unmet) const {
 }
 
 std::string Refiner::unreachableMessage(std::uint64_t unmet, double reached) const {
-  char angles[96];
-  std::snprintf(angles, sizeof angles, "%.6g degrees is out of reach; the smallest angle reached is %.2f", plan_.requested, reached);
+  const std::string angles = formatSignificant(plan_.requested, 6) +
+                             " degrees is out of reach; the smallest angle reached is " + formatFixed(reached, 2);
   // The direct attempts (above34/staged.cpp's directPlan) and their caps.
   const char* direct =
       secondDirectAttempt(o_)

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <new>
 
 #include "cdt/old_mesh.h"
@@ -24,6 +26,27 @@ namespace ruppert::detail {
 // sharper (refine_split.cpp). The directions are gathered per vertex in one flat array (counting
 // sort by vertex), and the gaps are between neighbours in angular order: sorted, O(d log d) for a
 // vertex of degree d.
+namespace {
+
+// A double's bits as an integer that orders as the double does (the sign bit flipped for
+// nonnegatives, every bit for negatives): sorting these pairs shares the sort instantiated for edge
+// keys, where one of (double, bool) pairs would be a copy of its own in the WebAssembly module.
+std::uint64_t orderedBits(double x) {
+  x += 0.0;  // -0 as +0: they compare equal as doubles
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  return bits >> 63 ? ~bits : bits | std::uint64_t(1) << 63;
+}
+
+double fromOrderedBits(std::uint64_t key) {
+  const std::uint64_t bits = key >> 63 ? key & ~(std::uint64_t(1) << 63) : ~key;
+  double x;
+  std::memcpy(&x, &bits, sizeof x);
+  return x;
+}
+
+}  // namespace
+
 std::vector<std::uint8_t> acuteCorners(const MeshState& m, double* inverseGaps) {
   const Triangulation& t = m.tri;
   const std::uint32_t n = t.vertexCount();
@@ -46,12 +69,13 @@ std::vector<std::uint8_t> acuteCorners(const MeshState& m, double* inverseGaps) 
   };
   forEachEnd([&](std::uint32_t v, std::uint32_t, bool) { ++start[v + 1]; });
   for (std::uint32_t v = 0; v < n; ++v) start[v + 1] += start[v];
-  // Per end: its direction's angle, and whether the domain follows it counterclockwise.
-  std::vector<std::pair<double, bool>> ends(start[n]);
+  // Per end: its direction's angle (as orderedBits), and whether the domain follows it
+  // counterclockwise.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> ends(start[n]);
   std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
   forEachEnd([&](std::uint32_t v, std::uint32_t w, bool domainAfter) {
     const double dx = t.xy[2 * w] - t.xy[2 * v], dy = t.xy[2 * w + 1] - t.xy[2 * v + 1];
-    ends[fill[v]++] = {std::atan2(dy, dx), domainAfter};
+    ends[fill[v]++] = {orderedBits(std::atan2(dy, dx)), domainAfter};
   });
   for (std::uint32_t v = 0; v < n; ++v) {
     if (start[v + 1] - start[v] < 2) continue;
@@ -59,8 +83,8 @@ std::vector<std::uint8_t> acuteCorners(const MeshState& m, double* inverseGaps) 
     std::sort(first, last);
     double gap = 2 * kPi;
     for (auto e = first; e != last; ++e) {
-      const double next = e + 1 != last ? (e + 1)->first : first->first + 2 * kPi;
-      if (e->second) gap = std::min(gap, next - e->first);
+      const double next = e + 1 != last ? fromOrderedBits((e + 1)->first) : fromOrderedBits(first->first) + 2 * kPi;
+      if (e->second) gap = std::min(gap, next - fromOrderedBits(e->first));
     }
     // cos(gap) > sin(1e-12): the gap is below 90 degrees by more than rounding (a reflex gap of the
     // domain, past 270 degrees, has a positive cosine too).

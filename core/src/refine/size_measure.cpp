@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "mesh/predicates.h"
@@ -77,7 +78,7 @@ class FeatureGrid {
       for (std::uint32_t f : cells_[std::size_t(y) * side_ + x]) {
         if (stamp_[f] == query_) continue;
         stamp_[f] = query_;
-        pending_.push_back({distance(c, features_[f]), f});
+        pending_.push_back({~bitsOf(distance(c, features_[f])), ~f});
       }
     };
     for (std::int64_t r = 0; r <= side_; ++r) {
@@ -90,13 +91,14 @@ class FeatureGrid {
         }
       }
       const double covered = r == side_ ? HUGE_VAL : outside + r * cell_;
-      std::sort(pending_.begin(), pending_.end(), std::greater<>());  // nearest at the back
-      while (!pending_.empty() && pending_.back().first <= covered) {
-        const auto next = pending_.back();
+      std::sort(pending_.begin(), pending_.end());  // nearest at the back
+      while (!pending_.empty() && distanceOf(pending_.back()) <= covered) {
+        const double d = distanceOf(pending_.back());
+        const std::uint32_t f = ~pending_.back().second;
         pending_.pop_back();
         for (std::uint32_t earlier : done_)
-          if (disjoint(features_[earlier], features_[next.second])) return next.first;
-        done_.push_back(next.second);
+          if (disjoint(features_[earlier], features_[f])) return d;
+        done_.push_back(f);
       }
     }
     return HUGE_VAL;  // fewer than two disjoint features exist
@@ -106,7 +108,21 @@ class FeatureGrid {
   const std::vector<double>& xy_;
   std::vector<Feature> features_;
   std::vector<std::vector<std::uint32_t>> cells_;
-  std::vector<std::pair<double, std::uint32_t>> pending_;
+  // Per feature met: (~ the bits of its distance, ~ its index). A nonnegative double's bits order
+  // as it does, so sorting these puts the farthest first and the nearest (lowest index first among
+  // equals) at the back; the pair sort is the one the triangulation's edge keys instantiate.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> pending_;
+  static std::uint64_t bitsOf(double distance) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &distance, sizeof bits);
+    return bits;
+  }
+  static double distanceOf(const std::pair<std::uint64_t, std::uint32_t>& item) {
+    const std::uint64_t bits = ~item.first;
+    double distance;
+    std::memcpy(&distance, &bits, sizeof distance);
+    return distance;
+  }
   std::vector<std::uint32_t> done_, stamp_;
   std::uint32_t query_ = 0;
   double origin_[2] = {0, 0}, cell_ = 1;

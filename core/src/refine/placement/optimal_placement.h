@@ -28,11 +28,8 @@ inline constexpr double kStrictBelowBoundGain = 1.0;
 // Below this bound, a first choice that cannot go in (it encroaches a subsegment, say) is rejected
 // as usual, and the subsegment split, rather than searched around. A new vertex on the domain's
 // boundary adds one triangle, one inside it two (Euler's formula), and at small bounds the split
-// rarely cascades: over the 300 generated PLCs of 15 families, the default's triangles with the
-// split against the search (geometric mean) were 0.997 at 22 degrees, 0.9985 at 26, 1.0001 at 27,
-// 1.001 at 28 and 1.0018 at 29; over the corpus's 61, 0.9856 at 20, 0.9953 at 25, 0.994 at 27 and
-// 1.0073 at 30 (scratch builds, the native CLI; serpentine corridors at 25 degrees went from 1.002
-// to 0.993 times Triangle's triangles).
+// rarely cascades: on the generated families and the corpus, the split makes fewer triangles than
+// the search below about 28 degrees and more above (docs/measurements.md, "split before search").
 inline constexpr double kSplitBeforeSearchBelowDegrees = 28;
 
 class OptimalPlacement {

@@ -116,8 +116,8 @@ PetalPlacement::PetalPlacement(double theta) {
     }
   }
   // At most 52 points, once per bound: an insertion sort (stable: a point and its mirror image, whose
-  // bounds tie, keep their order) instead of a std::sort instantiation of its own, which was 6 KB
-  // of the wasm module.
+  // bounds tie, keep their order) rather than a std::sort instantiation of its own, which would add
+  // several KB to the wasm module.
   for (std::size_t i = 1; i < petal_.size(); ++i)
     for (std::size_t j = i; j > 0 && petal_[j].bound > petal_[j - 1].bound; --j) std::swap(petal_[j], petal_[j - 1]);
 }
@@ -125,11 +125,8 @@ PetalPlacement::PetalPlacement(double theta) {
 // Whether searching the petal can pay: the first choice makes a skinny triangle, and every such
 // triangle stands on a cavity edge less than kPetalReach times the shortest edge. A longer edge
 // makes a flat triangle with the first choice; the petal's points all lie within about one shortest
-// edge of it, so they make the same flat triangle. Measured on the shared PLCs at 33 degrees: of
-// 89,541 searches 9,955 found a point; where such an edge was over 8 times the shortest, 2 of
-// 31,000; over 4 times, 300 of 55,000. With 4, the geo-mean triangle ratio to Triangle moves from
-// 0.882 to 0.887 at 30 degrees and 0.859 to 0.861 at 33, and petal costs about 2x the off-centers'
-// time instead of 4-7x (cdt_sweden.poly at 33: 94 -> 32 ms, 15 ms).
+// edge of it, so they make the same flat triangle: searches past such an edge almost never find a
+// point, and skipping them is most of petal's time (docs/measurements.md, "petal reach").
 bool PetalPlacement::mayHelp(const MeshAccess& mesh, const SkinnyTriangle& st) const {
   const Triangulation& t = mesh.tri;
   bool skinny = false;
@@ -143,9 +140,8 @@ bool PetalPlacement::mayHelp(const MeshAccess& mesh, const SkinnyTriangle& st) c
   return skinny;
 }
 
-// Measured on the 61 shared PLCs (geo-mean triangle count against Triangle's, off-centers -> petal):
-// 0.973 -> 0.887 at 30 degrees, 0.987 -> 0.861 at 33, at about twice the refinement time without an
-// area bound (most searches that mayHelp lets through still find no such point).
+// Fewer triangles than off-centers at about twice the refinement time without an area bound: most
+// searches that mayHelp lets through still find no such point (docs/measurements.md, "petal reach").
 bool PetalPlacement::propose(const MeshAccess& mesh, const SkinnyTriangle& st, double target[2], Location& loc) {
   if (!mayHelp(mesh, st)) return false;
   const Triangulation& t = mesh.tri;

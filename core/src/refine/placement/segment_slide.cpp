@@ -24,8 +24,8 @@ constexpr int kFirstPlace = 6, kPlaces = 29;
 // p of h when h is a subsegment, or a of the new subsegment (p, w) or b of (u, p). A fan whose
 // triangles meet the bound encroaches nothing under diametral lenses, but can under closed
 // diametral disks (an angle of 120 degrees at 30), and each encroachment splits a subsegment whose
-// new vertices slide again: cdt_guitar.poly at 30 degrees with disks went from 29 to 147 vertices
-// on segments, down to the length floor, and ended incomplete.
+// new vertices slide again, which can run down to the length floor and end incomplete
+// (cdt_guitar.poly at 30 degrees with disks, without this check; docs/measurements.md).
 bool encroachesAround(const Triangulation& t, std::uint32_t h, const double* a, const double* b, const double* u,
                       const double* w, const double* p, double lensCos2) {
   if (t.con[h] != kFree && encroaches(p, a, b, lensCos2)) return true;
