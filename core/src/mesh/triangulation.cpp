@@ -1,5 +1,6 @@
 #include "mesh/triangulation.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "mesh/predicates.h"
@@ -10,15 +11,13 @@ std::uint32_t Triangulation::addVertex(double x, double y) {
   xy.push_back(x);
   xy.push_back(y);
   vtri.push_back(kNone);
-  scratch_.push_back(kNone);
   return vertexCount() - 1;
 }
 
 void Triangulation::adoptVertices(std::vector<double>&& coordinates, std::size_t vertices) {
   xy = std::move(coordinates);
-  reserveHuge(xy, 2 * vertices), reserveHuge(vtri, vertices), reserveHuge(scratch_, vertices);
+  reserveHuge(xy, 2 * vertices), reserveHuge(vtri, vertices);
   vtri.assign(xy.size() / 2, kNone);
-  scratch_.assign(xy.size() / 2, kNone);
 }
 
 std::vector<std::uint32_t> Triangulation::takeCorners(std::uint32_t count) {
@@ -190,6 +189,10 @@ void Triangulation::cavity(const double* p, const Location& loc, std::vector<std
       if (n.mark != out && incircle(pt(n.tv[0]), pt(n.tv[1]), pt(n.tv[2]), p) > 0) {
         n.mark = in;
         tris.push_back(g / 3);
+        // Its neighbors are tested after the triangles queued before it: asking for their records
+        // now overlaps those misses with that work.
+        for (std::uint32_t j = 0; j < 3; ++j)
+          if (n.twin[j] != kNone) prefetch(&slots_[n.twin[j] / 3]);
       } else {
         n.mark = out;
         boundary.push_back(h);
@@ -205,41 +208,80 @@ bool Triangulation::insertVertex(std::uint32_t v, const Location& loc, std::vect
   return fillCavity(v, loc, tris, boundary, newTris, parents, checkOrientation);
 }
 
+namespace {
+
+// One side of a cavity's boundary, u -> w seen from inside, becoming the new triangle (v, u, w).
+struct FanSide {
+  std::uint32_t u, w, outer, from;
+  std::int32_t c;
+};
+
+// The sides of a fan found by their first vertex u, in a small open-addressing table (twice as
+// many places as sides) rather than a per-vertex table, whose entries for a cavity's vertices,
+// scattered through the vertex arrays, would each be a cache miss on a mesh larger than the cache.
+class FanIndex {
+ public:
+  // False if some vertex starts two sides (the domain touching itself there: no fan).
+  bool build(const std::vector<FanSide>& sides) {
+    std::uint32_t bits = 4;
+    while ((std::size_t(1) << bits) < 2 * sides.size()) ++bits;
+    shift_ = 32 - bits;
+    places_.assign(std::size_t(1) << bits, kEmpty);
+    for (std::size_t k = 0; k < sides.size(); ++k) {
+      const std::uint32_t u = sides[k].u;
+      std::size_t p = placeOf(u);
+      for (; places_[p] != kEmpty; p = (p + 1) & (places_.size() - 1))
+        if (places_[p] >> 32 == u) return false;
+      places_[p] = std::uint64_t(u) << 32 | k;
+    }
+    return true;
+  }
+  // The index of the side starting at x, or kNone.
+  std::uint32_t find(std::uint32_t x) const {
+    for (std::size_t p = placeOf(x); places_[p] != kEmpty; p = (p + 1) & (places_.size() - 1))
+      if (places_[p] >> 32 == x) return static_cast<std::uint32_t>(places_[p]);
+    return kNone;
+  }
+
+ private:
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t(0);
+  std::uint32_t shift_ = 28;
+  std::vector<std::uint64_t> places_;  // u << 32 | side index, or kEmpty
+  std::size_t placeOf(std::uint32_t x) const { return (x * 0x9E3779B1u) >> shift_; }
+};
+
+}  // namespace
+
 bool Triangulation::fillCavity(std::uint32_t v, const Location& loc, const std::vector<std::uint32_t>& tris,
                                const std::vector<std::uint32_t>& boundary, std::vector<std::uint32_t>* newTris,
                                std::vector<std::uint32_t>* parents, bool checkOrientation) {
-  struct Side { std::uint32_t u, w, outer, from; std::int32_t c; };
-  static thread_local std::vector<Side> sides;
+  static thread_local std::vector<FanSide> sides;
+  static thread_local FanIndex index;
   const double* p = pt(v);
   sides.clear();
-  bool ok = true;
   for (std::uint32_t h : boundary) {
     const std::uint32_t t = h / 3, i = h - 3 * t;
     const TriangleSlot& r = slots_[t];
     const std::uint32_t u = r.tv[i == 2 ? 0 : i + 1], w = r.tv[i == 0 ? 2 : i - 1];
-    // A vertex twice on the boundary (the domain touching itself there) would break the fan.
-    if ((checkOrientation && !(orient2d(pt(u), pt(w), p) > 0)) || scratch_[u] != kNone) {
-      ok = false;
-      break;
-    }
-    scratch_[u] = 0;
+    if (checkOrientation && !(orient2d(pt(u), pt(w), p) > 0)) return false;
     sides.push_back({u, w, r.twin[i], t, r.con[i]});
   }
+  // A vertex twice on the boundary (the domain touching itself there) would break the fan.
+  if (!index.build(sides)) return false;
   // Every vertex of the cavity must be on its boundary, or the fan would drop it. Exactly Delaunay
   // cavities always pass; a rounded split point a hair from a vertex can take in every triangle
   // around it (found by fuzzing, tests/hostile/shell-split-a-hair-from-a-vertex-dropped-it.poly: a
-  // shell split 2.6e-8 from an input vertex lost it).
-  // (Splitting an edge with no triangle beyond, the boundary is open: the edge's origin ends it.)
+  // shell split 2.6e-8 from an input vertex lost it). Counted, not searched: the cavity is
+  // connected and no vertex starts two of its boundary edges, so it is a planar surface whose
+  // boundary is simple cycles, and Euler's formula makes it a disk with no vertex inside exactly
+  // when it has k - 2 triangles for k boundary edges (k - 1 when splitting an edge with no triangle
+  // beyond: the boundary is then a path, closed by the split edge, whose origin must then start no
+  // other boundary edge).
   // A point located exactly with no constraints around (checkOrientation false) has a Delaunay
   // cavity, which passes: the test is left out with the orientations.
-  const std::uint32_t edgeOrigin = loc.kind == Location::OnEdge ? origin(loc.edge) : kNone;
-  for (std::size_t k = 0; ok && checkOrientation && k < tris.size(); ++k)
-    for (std::uint32_t i = 0; i < 3; ++i) {
-      const std::uint32_t x = slots_[tris[k]].tv[i];
-      if (scratch_[x] == kNone && x != edgeOrigin) ok = false;
-    }
-  for (const Side& s : sides) scratch_[s.u] = kNone;
-  if (!ok) return false;
+  const bool open = loc.kind == Location::OnEdge && twin[loc.edge] == kNone;
+  const bool disk = tris.size() + (open ? 1 : 2) == sides.size() && !(open && index.find(origin(loc.edge)) != kNone);
+  if (checkOrientation && !disk) return false;
   std::uint32_t sa = kNone, sb = kNone;
   std::int32_t splitCon = kFree;
   if (loc.kind == Location::OnEdge) {
@@ -251,30 +293,28 @@ bool Triangulation::fillCavity(std::uint32_t v, const Location& loc, const std::
   if (parents) parents->clear();
   // Fan of new triangles {v, u, w}: edge 0 (u->w) faces the old outside, edge 1 (w->v) and
   // edge 2 (v->u) face the neighbouring new triangles.
-  const std::size_t first = sides.size();
   static thread_local std::vector<std::uint32_t> made;
-  made.resize(first);
+  made.resize(sides.size());
   // The cavity's slots are refilled last first, the slots killing them and taking free slots back
   // would give (so the numbering is the same), without passing them through freeSlots.
   std::size_t reuse = tris.size();
   for (std::size_t k = 0; k < sides.size(); ++k) {
-    const Side& s = sides[k];
+    const FanSide& s = sides[k];
     const std::uint32_t t = reuse > 0 ? refillTriangle(tris[--reuse], v, s.u, s.w) : newTriangle(v, s.u, s.w);
     made[k] = t;
     slots_[t].twin[0] = s.outer;
     if (s.outer != kNone) twin[s.outer] = 3 * t;
     slots_[t].con[0] = s.c;
-    scratch_[s.u] = t;
     if (newTris) newTris->push_back(t);
     if (parents) parents->push_back(s.from);
   }
   for (std::size_t k = 0; k < reuse; ++k) killTriangle(tris[k]);  // (a fan has more triangles: none)
   for (std::size_t k = 0; k < sides.size(); ++k) {
-    const std::uint32_t t = made[k];
-    const std::uint32_t nb = scratch_[sides[k].w];
-    if (nb != kNone) slots_[t].twin[1] = 3 * nb + 2, slots_[nb].twin[2] = 3 * t + 1;
+    const std::uint32_t j = index.find(sides[k].w);
+    if (j == kNone) continue;
+    const std::uint32_t t = made[k], nb = made[j];
+    slots_[t].twin[1] = 3 * nb + 2, slots_[nb].twin[2] = 3 * t + 1;
   }
-  for (const Side& s : sides) scratch_[s.u] = kNone;
   if (splitCon != kFree) {
     for (std::uint32_t t : made) {
       TriangleSlot& r = slots_[t];

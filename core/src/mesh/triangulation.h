@@ -31,6 +31,23 @@ void release(Vector& v) {
   Vector().swap(v);
 }
 
+// A hint that *p is read soon (no effect where the compiler has no such instruction).
+inline void prefetch(const void* p) {
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
+// The same for memory about to be written.
+inline void prefetchForWrite(const void* p) {
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p, 1);
+#else
+  (void)p;
+#endif
+}
+
 inline std::uint32_t next3(std::uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; }
 inline std::uint32_t prev3(std::uint32_t h) { return h % 3 == 0 ? h + 2 : h - 1; }
 
@@ -123,6 +140,19 @@ class Triangulation : public SlotRecords {
     return slots_[t].tv[i == 0 ? 2 : i - 1];
   }
   std::uint32_t apex(std::uint32_t h) const { return tv[h]; }  // vertex opposite h
+  // For passes over every slot in order: the records stream in, but the corners' coordinates and
+  // the neighbors' records are scattered, one miss after another unless asked for ahead (at slot
+  // s + kScanAhead while at s).
+  static constexpr std::uint32_t kScanAhead = 8;
+  void prefetchCorners(std::uint32_t s) const {
+    if (s >= slotCount() || slots_[s].tv[0] == kNone) return;
+    for (std::uint32_t i = 0; i < 3; ++i) prefetch(pt(slots_[s].tv[i]));
+  }
+  void prefetchNeighbors(std::uint32_t s) const {
+    if (s >= slotCount()) return;
+    for (std::uint32_t i = 0; i < 3; ++i)
+      if (slots_[s].twin[i] != kNone) prefetch(&slots_[slots_[s].twin[i] / 3]);
+  }
 
   std::uint32_t addVertex(double x, double y);
   // Takes `coordinates` (x0,y0,x1,y1,...) as the first vertices, none in the mesh yet, without
@@ -139,6 +169,10 @@ class Triangulation : public SlotRecords {
     const std::uint32_t f = static_cast<std::uint32_t>(kFree);
     words_.insert(words_.end(), {0, a, b, c, kNone, kNone, kNone, f, f, f});
     aim();
+    // Slots are appended a few per insertion, too slowly for the hardware to see a stream: the
+    // record after next is asked for now, so that writing it later does not wait for memory.
+    if (words_.capacity() - words_.size() > 2 * kSlotWords)
+      prefetchForWrite(words_.data() + words_.size() + kSlotWords);
     vtri[a] = vtri[b] = vtri[c] = t;
     return t;
   }
@@ -154,19 +188,22 @@ class Triangulation : public SlotRecords {
   // Room for this many vertices and triangle slots without regrowing (a small mesh otherwise spends
   // a sixth of its time growing these arrays from empty one doubling at a time).
   void reserve(std::size_t vertices, std::size_t slots) {
-    reserveHuge(xy, 2 * vertices), reserveHuge(vtri, vertices), reserveHuge(scratch_, vertices);
+    reserveHuge(xy, 2 * vertices), reserveHuge(vtri, vertices);
     reserveHuge(words_, kSlotWords * slots);
     aim();
   }
-  // Frees what only insertion and search use (the per-vertex fan table, the free-slot list).
-  void releaseScratch() { release(scratch_), release(freeSlots); }
+  // Frees what only insertion and search use (the free-slot list).
+  void releaseScratch() { release(freeSlots); }
   // Output's per-slot label (a slot's triangle index in the output), kept in the word of the
   // slot's search stamp, free once searches are over: no per-slot array at the output's peak.
   std::uint32_t label(std::uint32_t t) const { return slots_[t].mark; }
   void setLabel(std::uint32_t t, std::uint32_t value) { slots_[t].mark = value; }
-  // The per-vertex table's memory handed over for output's per-vertex map (its size is the vertex
-  // count; values unspecified): no new pages for it at the output's peak.
-  std::vector<std::uint32_t> takeVertexScratch() { return std::move(scratch_); }
+  // Room for output's per-vertex map (capacity for every vertex, empty).
+  std::vector<std::uint32_t> takeVertexScratch() const {
+    std::vector<std::uint32_t> map;
+    map.reserve(vertexCount());
+    return map;
+  }
   // The corners of slots 0..count-1 (3 per slot) in the records' own memory, which is handed over:
   // every slot is gone afterwards.
   std::vector<std::uint32_t> takeCorners(std::uint32_t count);
@@ -236,7 +273,6 @@ class Triangulation : public SlotRecords {
 
  private:
   mutable std::uint32_t stamp_ = 0;
-  std::vector<std::uint32_t> scratch_;        // per-vertex: new triangle whose boundary edge starts there
   mutable std::uint64_t rng_ = 0x9E3779B97F4A7C15ull;
   std::uint32_t nextStamp() const;
   std::uint32_t findEdgeFrom(std::uint32_t a, std::uint32_t b) const;

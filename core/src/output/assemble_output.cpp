@@ -95,6 +95,7 @@ void scanTriangles(MeshState& m, Mesh& mesh, std::vector<std::uint8_t>& boundary
   AngleStats angles;
   std::uint32_t count = 0;
   for (std::uint32_t s = 0; s < t.slotCount(); ++s) {
+    t.prefetchCorners(s + Triangulation::kScanAhead);
     if (!t.alive(s)) {
       t.setLabel(s, kNone);
       continue;
@@ -149,6 +150,7 @@ void writeTriangleArrays(MeshState& m, Mesh& mesh) {
   mesh.neighbors.resize(3 * std::size_t(count));
   // Slot o's corners are written after slot s's (o <= s) are read, and the labels are left alone.
   for (std::uint32_t s = 0; s < slots; ++s) {
+    t.prefetchNeighbors(s + Triangulation::kScanAhead);
     const std::uint32_t o = t.label(s);
     if (o == kNone) continue;
     for (std::uint32_t i = 0; i < 3; ++i) {

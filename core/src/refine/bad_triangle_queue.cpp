@@ -68,6 +68,7 @@ int BadTriangleQueue::sizeClassOf(double area) {
 void BadTriangleQueue::push(const Triangulation& t, std::uint32_t s, bool skinny, double key, double sin2MinAngle) {
   const auto angleClass =
       static_cast<std::uint8_t>(std::min<double>(kAngleClasses - 1, sin2MinAngle / 0.75 * (kAngleClasses - 1)));
+  mesh_ = &t;
   const TriangleSlot& r = t.slot(s);
   const BadTriangle e{s, r.tv[0], r.tv[1], r.tv[2], skinny ? 0 : planeKey(t, r.tv[0]), angleClass};
   ++queuedByAngle_[angleClass];
@@ -114,7 +115,34 @@ bool BadTriangleQueue::take(std::vector<BadTriangle>& bucket, BadTriangle& out) 
   bucket.pop_back();
   --queued_;
   --queuedByAngle_[out.angleClass];
+  if (mesh_) prefetchAhead(bucket);
   return true;
+}
+
+// The next entries are split after this one's insertion, each after the one before; their cavities
+// are their triangles and the neighbors around them. Three steps, an insertion apart, each reading
+// what the step before asked for: the third entry's record, then the second's corners and
+// neighbors' records, then the next one's neighbors' apices. Their cache misses then overlap the
+// insertions instead of stalling the cavity search.
+void BadTriangleQueue::prefetchAhead(const std::vector<BadTriangle>& bucket) const {
+  const Triangulation& t = *mesh_;
+  const std::size_t n = bucket.size();
+  if (n >= 3) prefetch(&t.slot(bucket[n - 3].slot));
+  if (n >= 2) {
+    const TriangleSlot& r = t.slot(bucket[n - 2].slot);
+    for (std::uint32_t i = 0; i < 3 && r.tv[0] != kNone; ++i) {
+      prefetch(t.pt(r.tv[i]));
+      if (r.twin[i] != kNone) prefetch(&t.slot(r.twin[i] / 3));
+    }
+  }
+  if (n >= 1) {
+    const TriangleSlot& r = t.slot(bucket[n - 1].slot);
+    for (std::uint32_t i = 0; i < 3 && r.tv[0] != kNone; ++i) {
+      if (r.twin[i] == kNone) continue;
+      const TriangleSlot& beyond = t.slot(r.twin[i] / 3);
+      if (beyond.tv[0] != kNone) prefetch(t.pt(beyond.tv[r.twin[i] % 3]));
+    }
+  }
 }
 
 bool BadTriangleQueue::pop(BadTriangle& out) {
@@ -137,20 +165,37 @@ bool BadTriangleQueue::pop(BadTriangle& out) {
 
 namespace {
 
-// Position along a Hilbert curve through a 2^16 x 2^16 grid.
-std::uint32_t hilbertIndex(std::uint32_t x, std::uint32_t y) {
-  constexpr std::uint32_t n = 1u << 16;
-  std::uint32_t d = 0;
-  for (std::uint32_t s = n / 2; s > 0; s /= 2) {
-    const std::uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
-    d += s * s * ((3 * rx) ^ ry);
-    if (ry == 0) {
-      if (rx == 1) x = n - 1 - x, y = n - 1 - y;
-      std::swap(x, y);
-    }
+// Position along a Hilbert curve through a 2^16 x 2^16 grid. Digit by digit from the top, each
+// quadrant's digit depends on the orientation the levels above left (swapped axes, mirrored axes:
+// four states); a table steps four levels at once (a nibble of x and of y), four steps per key.
+class HilbertCurve {
+ public:
+  HilbertCurve() {
+    for (std::uint32_t state = 0; state < 4; ++state)
+      for (std::uint32_t nibbles = 0; nibbles < 256; ++nibbles) {
+        std::uint32_t s = state, digits = 0;
+        for (int level = 3; level >= 0; --level) {
+          std::uint32_t rx = (nibbles >> (4 + level)) & 1, ry = (nibbles >> level) & 1;
+          if (s & 1) std::swap(rx, ry);
+          if (s & 2) rx ^= 1, ry ^= 1;
+          digits = digits << 2 | ((3 * rx) ^ ry);
+          if (ry == 0) s ^= 1 | (rx << 1);  // a quarter turn, mirrored in the far quadrant
+        }
+        step_[state << 8 | nibbles] = static_cast<std::uint16_t>(digits << 2 | s);
+      }
   }
-  return d;
-}
+  std::uint32_t index(std::uint32_t x, std::uint32_t y) const {
+    std::uint32_t d = 0, state = 0;
+    for (int shift = 12; shift >= 0; shift -= 4) {
+      const std::uint32_t e = step_[state << 8 | ((x >> shift) & 15) << 4 | ((y >> shift) & 15)];
+      d = d << 8 | e >> 2, state = e & 3;
+    }
+    return d;
+  }
+
+ private:
+  std::uint16_t step_[4 * 256];
+};
 
 // A mesh of fewer slots than this fits in the cache: it gains nothing from plane order and pays
 // for the keys and sorts, so it keeps the order of pushes (and so its exact mesh).
@@ -172,7 +217,8 @@ std::uint32_t BadTriangleQueue::planeKey(const Triangulation& t, std::uint32_t a
   const double* p = t.pt(a);
   const double x = std::clamp((p[0] - frameLow_[0]) * frameScale_, 0.0, 65535.0);
   const double y = std::clamp((p[1] - frameLow_[1]) * frameScale_, 0.0, 65535.0);
-  return hilbertIndex(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
+  static const HilbertCurve curve;
+  return curve.index(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
 }
 
 // A size class is taken in the order of a Hilbert curve through the triangles' first corners, so

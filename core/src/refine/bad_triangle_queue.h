@@ -76,6 +76,7 @@ class BadTriangleQueue {
   int highestSkinny_ = -1;       // no skinny class above this one holds an entry
   int usedLow_ = kBuckets, usedHigh_ = -1;  // no bucket outside these has capacity
   bool largestFirst_ = false;
+  const Triangulation* mesh_ = nullptr;  // the mesh of the last push, for prefetching the next entry
   std::uint64_t queuedByAngle_[kAngleClasses] = {};
   std::uint64_t queued_ = 0, compactAt_ = 1u << 20;  // entries in buckets_; when to drop stale ones
 
@@ -90,6 +91,7 @@ class BadTriangleQueue {
   void sortInPlaneOrder(std::vector<BadTriangle>& bucket);
   static int sizeClassOf(double area);
   bool take(std::vector<BadTriangle>& bucket, BadTriangle& out);
+  void prefetchAhead(const std::vector<BadTriangle>& bucket) const;
   void dropStaleEntries(const Triangulation& t);
 };
 

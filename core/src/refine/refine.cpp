@@ -171,6 +171,7 @@ void Refiner::endPush() {
 MeshScore Refiner::score() const {
   MeshScore sc;
   for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
+    t_.prefetchCorners(s + Triangulation::kScanAhead);
     if (!t_.alive(s)) continue;
     ++sc.triangles;
     sc.domainTriangles += m_.inDomain.empty() || m_.inDomain[s];

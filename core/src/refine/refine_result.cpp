@@ -18,6 +18,7 @@ namespace ruppert::detail {
 Refiner::Unmet Refiner::countUnmet() const {
   Unmet u;
   for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
+    t_.prefetchCorners(s + Triangulation::kScanAhead);
     if (!t_.alive(s)) continue;
     const TriangleQuality q = qualityAt(s);
     const double bound = maxAreaAt(s);
