@@ -175,7 +175,7 @@ export interface TriangulateOptions {
 
 /** The dual of a mesh (options.voronoi): one vertex per triangle, one edge per mesh edge. */
 export interface Voronoi {
-  /** Circumcentre of triangle t at 2t, 2t+1 (it may lie outside its triangle and the domain). */
+  /** Circumcenter of triangle t at 2t, 2t+1 (it may lie outside its triangle and the domain). */
   points: Float64Array;
   /** Two Voronoi vertex indices per mesh edge; the second is -1 for a ray (a boundary edge). */
   edges: Int32Array;
@@ -324,7 +324,7 @@ export interface Mesh {
   events?: Events;
   /**
    * Only with options.order = 2: six per triangle: its corners (as in triangles), then the midpoint
-   * nodes of the edges opposite corners 0, 1, 2 (Triangle's -o2 order); shared between neighbours.
+   * nodes of the edges opposite corners 0, 1, 2 (Triangle's -o2 order); shared between neighbors.
    */
   triangles6?: Uint32Array;
   /** Only with options.voronoi. */

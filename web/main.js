@@ -51,7 +51,7 @@ $('renderer-note').hidden = renderer.gl !== null || !wantGl;
 renderer.onReady = () => scheduleDraw();
 renderer.onFallback = () => {
   document.body.dataset.renderer = '2d';
-  $('renderer-note').textContent = 'The WebGL context was lost: the mesh is drawn with the 2D canvas now, slower, and above 200,000 triangles without its colours.';
+  $('renderer-note').textContent = 'The WebGL context was lost: the mesh is drawn with the 2D canvas now, slower, and above 200,000 triangles without its colors.';
   $('renderer-note').hidden = false;
   scheduleDraw();
 };
@@ -188,7 +188,7 @@ function changed(commit) {
   scheduleDraw();
 }
 
-/** Replaces the drawing (preset, file, link, message); `fit` re-centres the view. */
+/** Replaces the drawing (preset, file, link, message); `fit` re-centers the view. */
 function setDrawing(drawing, { commit = true, fit = true } = {}) {
   app.drawing = cloneDrawing(drawing);
   editor.reset();

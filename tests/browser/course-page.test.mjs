@@ -60,7 +60,7 @@ test('the histogram has a count axis and a line at the bound, in view at 1440 x 
     return { ...canvas.dataset, boundPixel: pixel(Number(canvas.dataset.boundX), middle), axisPixel: pixel(33, middle) };
   });
   assert.equal(Number(drawn.bound), Number(await page.inputValue('#min-angle')), 'the line is at the min angle in force');
-  // The bound's line is teal (#0b7285), the axis dark grey (#343a40).
+  // The bound's line is teal (#0b7285), the axis dark gray (#343a40).
   const [r, g, b] = drawn.boundPixel;
   assert.ok(r < 60 && g > 80 && b > 100, `bound line pixel ${drawn.boundPixel}`);
   assert.ok(drawn.axisPixel[3] > 200 && drawn.axisPixel.slice(0, 3).every((c) => c < 110), `axis pixel ${drawn.axisPixel}`);

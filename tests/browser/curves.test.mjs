@@ -56,7 +56,7 @@ test('a plate with a round hole made with the circle tool is meshed on the circl
   assert.equal(await settle(page), 'empty');
   await page.click('[data-tool="polyline"]');
   for (const [x, y] of [[200, 100], [560, 100], [560, 460], [200, 460], [200, 100]]) await clickCanvas(page, x, y);
-  // The circle tool: press at the centre, drag to the radius.
+  // The circle tool: press at the center, drag to the radius.
   await page.keyboard.press('c');
   assert.equal(await page.getAttribute('[data-tool="circle"]', 'aria-pressed'), 'true');
   await dragOnCanvas([380, 280], [470, 280]);
@@ -156,7 +156,7 @@ test('the Bézier and arc tools make curved boundaries; the preview shows the cu
   assert.equal((await linked()).curves.length, 0, 'Delete removed the curve');
   assert.equal((await linked()).segments.length, 2);
 
-  // Arc: start, end, then the centre (put on the ends' bisector): a circular segment with the chord.
+  // Arc: start, end, then the center (put on the ends' bisector): a circular segment with the chord.
   await page.click('#clear');
   await settle(page);
   await page.keyboard.press('a');
@@ -170,24 +170,24 @@ test('the Bézier and arc tools make curved boundaries; the preview shows the cu
   const arc = arcDrawing.curves[0];
   assert.equal(arc.type, 'arc');
   const radius = (i) => Math.hypot(arcDrawing.points[2 * i] - arc.center[0], arcDrawing.points[2 * i + 1] - arc.center[1]);
-  assert.ok(Math.abs(radius(arc.from) - radius(arc.to)) <= 1e-12 * radius(arc.from), 'the centre is on the bisector');
+  assert.ok(Math.abs(radius(arc.from) - radius(arc.to)) <= 1e-12 * radius(arc.from), 'the center is on the bisector');
   assert.equal((await readStats(page)).complete, 'yes');
   assert.deepEqual(errors, []);
 });
 
-test('dragging a circle\'s centre handle or an end re-meshes with valid arcs; undo restores it', async () => {
+test('dragging a circle\'s center handle or an end re-meshes with valid arcs; undo restores it', async () => {
   await page.selectOption('#preset', 'plate-round-hole');
   assert.equal(await settle(page), 'done');
   const before = await readStats(page);
   await page.keyboard.press('v');
-  const centre = await toScreen(0.5, 0.5);
-  // Down 30 pixels: the centre moves along the vertical bisector of the ends, and the circle grows.
-  await dragOnCanvas([centre.x, centre.y], [centre.x + 12, centre.y + 30]);
+  const center = await toScreen(0.5, 0.5);
+  // Down 30 pixels: the center moves along the vertical bisector of the ends, and the circle grows.
+  await dragOnCanvas([center.x, center.y], [center.x + 12, center.y + 30]);
   assert.equal(await settle(page), 'done');
   const dragged = await linked();
   const [a, b] = dragged.curves;
-  assert.equal(a.center[0], 0.5, 'the centre stays on the bisector x = 0.5');
-  assert.ok(a.center[1] < 0.49, `the centre moved down to ${a.center[1]}`);
+  assert.equal(a.center[0], 0.5, 'the center stays on the bisector x = 0.5');
+  assert.ok(a.center[1] < 0.49, `the center moved down to ${a.center[1]}`);
   assert.deepEqual(b.center, a.center, 'both halves of the circle follow');
   const after = await readStats(page);
   assert.notEqual(after.triangles, before.triangles, 'a different mesh');
@@ -195,17 +195,17 @@ test('dragging a circle\'s centre handle or an end re-meshes with valid arcs; un
 
   await page.keyboard.press('Control+z');
   assert.equal(await settle(page), 'done');
-  assert.deepEqual((await linked()).curves[0].center, [0.5, 0.5], 'undo put the centre back');
+  assert.deepEqual((await linked()).curves[0].center, [0.5, 0.5], 'undo put the center back');
   assert.equal((await readStats(page)).triangles, before.triangles);
 
-  // An end dragged: the arcs' centre goes to the new bisector, so both ends stay equidistant.
+  // An end dragged: the arcs' center goes to the new bisector, so both ends stay equidistant.
   const end = await toScreen(0.75, 0.5);
   await dragOnCanvas([end.x, end.y], [end.x + 15, end.y - 10]);
   assert.equal(await settle(page), 'done');
   const moved = await linked();
   const c = moved.curves[0].center;
   const r = (i) => Math.hypot(moved.points[2 * i] - c[0], moved.points[2 * i + 1] - c[1]);
-  assert.ok(Math.abs(r(4) - r(5)) <= 1e-12 * r(4), `ends at ${r(4)} and ${r(5)} from the centre`);
+  assert.ok(Math.abs(r(4) - r(5)) <= 1e-12 * r(4), `ends at ${r(4)} and ${r(5)} from the center`);
   assert.deepEqual(moved.curves[1].center, c);
   assert.equal((await readStats(page)).complete, 'yes');
   await page.keyboard.press('Control+z');

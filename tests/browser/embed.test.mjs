@@ -136,7 +136,7 @@ test('the embed shows the step controls, the legend and a link to the full page 
   await framed.close();
 });
 
-test('the link keeps the step, the colouring and the view', async () => {
+test('the link keeps the step, the coloring and the view', async () => {
   const drawing = { ...presetDrawing('comb'), options: { ...DEFAULT_OPTIONS } };
   const url = `${harness.baseUrl}/web/#${encodeDrawing(drawing)}&step=7&color=region&view=1.5,0.5,80`;
   const { page: opened, errors: own } = await openPage(harness.context, url);

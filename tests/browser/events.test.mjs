@@ -1,7 +1,7 @@
 // Events named as such and counted, and the section 6.6 exemptions marked: the stats panel's
 // Events row gives the count of each kind the package's trace has; petal and optimal points are
 // their own events with their own text; the fan's triangles in small input angles and on
-// seditious edges are counted as the core counts them (mesh.reasons) and drawn in their colours.
+// seditious edges are counted as the core counts them (mesh.reasons) and drawn in their colors.
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { EventKind, init } from '../../wasm/index.js';
@@ -93,7 +93,7 @@ for (const [placement, kind, name] of [['petal', EventKind.PETAL_POINT, 'petal p
 }
 
 /** Pixels of the 2D canvas (the overlays) drawn in about rgb (un-premultiplied, half opaque or more). */
-function countColour(rgb) {
+function countColor(rgb) {
   return page.evaluate((want) => {
     const c = document.getElementById('canvas');
     const data = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
@@ -105,7 +105,7 @@ function countColour(rgb) {
   }, rgb);
 }
 
-/** Centres the view on triangle t of the mesh on screen, about `size` pixels across. */
+/** Centers the view on triangle t of the mesh on screen, about `size` pixels across. */
 function zoomTo(t, size = 150) {
   return page.evaluate(([tri, px]) => {
     const { view, renderer, draw } = window.ruppertBench;
@@ -142,10 +142,10 @@ test('triangles in small input angles and on seditious edges are counted as the 
   assert.equal(marked.nestled.length, nestled);
   assert.equal(marked.seditious.length, seditious);
   await zoomTo(first);
-  const violet = await countColour([0x70, 0x48, 0xe8]);
+  const violet = await countColor([0x70, 0x48, 0xe8]);
   await page.screenshot({ path: `${SCREENSHOTS}exemptions-fan-nestled.png` });
   await zoomTo(other);
-  const teal = await countColour([0x0b, 0x72, 0x85]);
+  const teal = await countColor([0x0b, 0x72, 0x85]);
   await page.screenshot({ path: `${SCREENSHOTS}exemptions-fan-seditious.png` });
   assert.ok(violet > 50, `${violet} violet pixels around nestled triangle ${first}`);
   assert.ok(teal > 50, `${teal} teal pixels around seditious triangle ${other}`);

@@ -50,7 +50,7 @@ async function emptyWithTool(key) {
   await page.keyboard.press(key);
 }
 
-test('touch: taps add vertices, a two-finger pinch zooms about its centre and adds none', async () => {
+test('touch: taps add vertices, a two-finger pinch zooms about its center and adds none', async () => {
   await emptyWithTool('p');
   await tap(200, 200);
   await tap(300, 200);
@@ -58,7 +58,7 @@ test('touch: taps add vertices, a two-finger pinch zooms about its centre and ad
   assert.equal(p.length, 4, `two taps, two points: ${p}`);
   const before = Math.hypot(p[2] - p[0], p[3] - p[1]);
 
-  // Fingers 100 px apart move to 200 px apart: a zoom of 2 (and the centre moves 50 px: a pan).
+  // Fingers 100 px apart move to 200 px apart: a zoom of 2 (and the center moves 50 px: a pan).
   await touches('touchStart', [[2, 300, 300]]);
   await touches('touchStart', [[2, 300, 300], [3, 400, 300]]);
   for (let x = 420; x <= 500; x += 20) await touches('touchMove', [[2, 300, 300], [3, x, 300]]);
@@ -104,7 +104,7 @@ test('keyboard: arrows move a cursor on the focused canvas, Enter draws there', 
   const path = ['ArrowRight', 'ArrowUp', 'ArrowLeft'];
   await page.keyboard.press('Enter');  // no cursor yet (clearing hides it): nothing happens
   assert.equal((await points()).length, 0);
-  await page.keyboard.press('ArrowDown');  // the cursor appears near the centre
+  await page.keyboard.press('ArrowDown');  // the cursor appears near the center
   await page.keyboard.press('Enter');
   for (const key of path) {
     for (let i = 0; i < 3; i++) await page.keyboard.press(`Shift+${key}`);

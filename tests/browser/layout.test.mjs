@@ -1,4 +1,4 @@
-// Layout at desktop and phone widths, labelled controls, keyboard operation, the static server.
+// Layout at desktop and phone widths, labeled controls, keyboard operation, the static server.
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { SCREENSHOTS, launch, openPage, readStats, settle } from './harness.mjs';
@@ -66,10 +66,10 @@ test('every control has an accessible name', async () => {
   const { page } = await openPage(harness.context, `${harness.baseUrl}/web/`);
   const unnamed = await page.evaluate(() => [...document.querySelectorAll('button, input, select, canvas#canvas')]
     .filter((el) => {
-      const labelled = (el.labels && [...el.labels].some((l) => l.textContent.trim())) ||
+      const labeled = (el.labels && [...el.labels].some((l) => l.textContent.trim())) ||
         el.getAttribute('aria-label') || el.getAttribute('aria-labelledby') ||
         (el.tagName === 'BUTTON' && el.textContent.trim());
-      return !labelled;
+      return !labeled;
     })
     .map((el) => el.outerHTML.slice(0, 80)));
   assert.deepEqual(unnamed, []);

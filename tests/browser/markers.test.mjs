@@ -1,4 +1,4 @@
-// Boundary markers on the page: segment markers kept from a loaded .poly, shown (a colour and a
+// Boundary markers on the page: segment markers kept from a loaded .poly, shown (a color and a
 // label per marker, in the legend too), set per segment in the editor, kept in the link, and
 // written by every export (.poly, .msh physical groups, .vtu point markers, .geojson edge markers,
 // the drawing's .poly).

@@ -1,6 +1,6 @@
-// The WebGL renderer: it draws (the canvas is not blank), each triangle is filled with the colour
+// The WebGL renderer: it draws (the canvas is not blank), each triangle is filled with the color
 // the legend gives its smallest angle (on a small mesh, and zoomed into a mesh above 200 000
-// triangles, where the 2D path drops the colours), hover names the triangle under the pointer
+// triangles, where the 2D path drops the colors), hover names the triangle under the pointer
 // (found from the spatial index), and the page falls back to the 2D canvas, saying so, without
 // WebGL2. `?bench=1` exposes the page's view and renderer (web/main.js).
 import assert from 'node:assert/strict';
@@ -19,7 +19,7 @@ after(async () => {
 
 const SQUARE = '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n';
 // An irregular pentagon: under an area bound alone the square is split into a grid of congruent
-// right triangles (the largest first), all of one colour; this one's triangles span several classes.
+// right triangles (the largest first), all of one color; this one's triangles span several classes.
 const PENTAGON = '5 2 0 0\n1 0 0\n2 1 0.1\n3 0.9 0.9\n4 0.3 1\n5 -0.1 0.5\n5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 1\n0\n';
 
 /** Loads a .poly (the square unless given) with the options through the host protocol; waits for its picture. */
@@ -32,7 +32,7 @@ async function loadSquare(page, options, poly = SQUARE) {
 
 /**
  * Triangles whose incircle is at least `minRadius` CSS pixels, with the screen point of their
- * incentre, their smallest angle, and the colour of the WebGL canvas there (after the frame the
+ * incenter, their smallest angle, and the color of the WebGL canvas there (after the frame the
  * page draws next: a large mesh's triangles reach the GPU a little after its first picture).
  */
 function sampleTriangles(page, { minRadius = 5, limit = 40 } = {}) {
@@ -78,7 +78,7 @@ function readLegend(page) {
   }));
 }
 
-function checkColours(samples, legend, what) {
+function checkColors(samples, legend, what) {
   assert.ok(samples.length >= 5, `${what}: only ${samples.length} triangles large enough to sample`);
   const classes = new Set();
   for (const s of samples) {
@@ -95,7 +95,7 @@ function checkColours(samples, legend, what) {
   return classes;
 }
 
-test('the WebGL renderer draws the triangles in the colours of the legend', async () => {
+test('the WebGL renderer draws the triangles in the colors of the legend', async () => {
   const { page, errors } = await openPage(harness.context, `${harness.baseUrl}/web/?bench=1`);
   assert.equal(await settle(page), 'done');
   assert.equal(await page.evaluate(() => document.body.dataset.renderer), 'webgl', 'headless Chromium gives WebGL2 (SwiftShader)');
@@ -109,24 +109,24 @@ test('the WebGL renderer draws the triangles in the colours of the legend', asyn
     const ctx = copy.getContext('2d');
     ctx.drawImage(gl, 0, 0);
     const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
-    let coloured = 0;
-    for (let i = 0; i < data.length; i += 4) if (data[i] < 240 || data[i + 1] < 240 || data[i + 2] < 240) coloured++;
-    return coloured / (data.length / 4);
+    let colored = 0;
+    for (let i = 0; i < data.length; i += 4) if (data[i] < 240 || data[i + 1] < 240 || data[i + 2] < 240) colored++;
+    return colored / (data.length / 4);
   });
   assert.ok(blank > 0.2, `only ${(100 * blank).toFixed(1)}% of the WebGL canvas is not white`);
 
   const legend = await readLegend(page);
   assert.equal(legend.length, 8);
-  const classes = checkColours(await sampleTriangles(page), legend, 'small mesh');
-  assert.ok(classes.size >= 2, `the samples show ${classes.size} colour classes`);
+  const classes = checkColors(await sampleTriangles(page), legend, 'small mesh');
+  assert.ok(classes.size >= 2, `the samples show ${classes.size} color classes`);
 
-  // Region colouring: one attribute, one swatch, every triangle in it.
+  // Region coloring: one attribute, one swatch, every triangle in it.
   await page.selectOption('#color-mode', 'region');
   const regions = await readLegend(page);
   assert.equal(regions.length, 1);
   for (const s of await sampleTriangles(page)) {
     const off = Math.max(...s.rgb.map((v, k) => Math.abs(v - regions[0].rgb[k])));
-    assert.ok(off <= 3, `region colouring: triangle ${s.t} is rgb(${s.rgb}), the legend says rgb(${regions[0].rgb})`);
+    assert.ok(off <= 3, `region coloring: triangle ${s.t} is rgb(${s.rgb}), the legend says rgb(${regions[0].rgb})`);
   }
   await page.selectOption('#color-mode', 'angle');
   assert.deepEqual(errors, []);
@@ -143,13 +143,13 @@ test('hover names the triangle under the pointer', async () => {
   for (const s of samples) {
     await moveOnCanvas(page, s.x, s.y);
     await page.waitForFunction((t) => document.getElementById('hover-info').textContent.startsWith(`Triangle ${t}:`), s.t, { timeout: 5000 })
-      .catch(async () => assert.fail(`hover at triangle ${s.t}'s incentre says: ${await page.locator('#hover-info').textContent()}`));
+      .catch(async () => assert.fail(`hover at triangle ${s.t}'s incenter says: ${await page.locator('#hover-info').textContent()}`));
   }
   assert.deepEqual(errors, []);
   await page.close();
 });
 
-test('a mesh above 200 000 triangles keeps its colours', async () => {
+test('a mesh above 200 000 triangles keeps its colors', async () => {
   const { page, errors } = await openPage(harness.context, `${harness.baseUrl}/web/?bench=1`);
   assert.equal(await settle(page), 'done');
   await loadSquare(page, { minAngle: 30, maxArea: 6e-6 });
@@ -161,7 +161,7 @@ test('a mesh above 200 000 triangles keeps its colours', async () => {
     view.zoomAt(view.width / 2, view.height / 2, 40);
   });
   const legend = await readLegend(page);
-  checkColours(await sampleTriangles(page, { minRadius: 6 }), legend, `${triangles} triangles, zoomed in`);
+  checkColors(await sampleTriangles(page, { minRadius: 6 }), legend, `${triangles} triangles, zoomed in`);
   const drawn = await page.evaluate(() => window.ruppertBench.renderer.gl.drawnTriangles);
   assert.ok(drawn > 0 && drawn < triangles / 4, `${drawn} of ${triangles} triangles drawn for the zoomed-in view`);
   assert.deepEqual(errors, []);
@@ -184,14 +184,14 @@ test('without WebGL2 the page draws with the 2D canvas and says so', async () =>
   assert.equal(await page.evaluate(() => document.body.dataset.renderer), '2d');
   assert.equal(await page.locator('#renderer-note').isVisible(), true);
   assert.equal(await page.locator('#gl-canvas').isHidden(), true);
-  const coloured = await page.evaluate(() => {
+  const colored = await page.evaluate(() => {
     const c = document.getElementById('canvas');
     const data = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
     let n = 0;
     for (let i = 0; i < data.length; i += 4) if (data[i] < 240 || data[i + 1] < 240 || data[i + 2] < 240) n++;
     return n;
   });
-  assert.ok(coloured > 1000, `${coloured} pixels drawn on the 2D canvas`);
+  assert.ok(colored > 1000, `${colored} pixels drawn on the 2D canvas`);
   assert.deepEqual(errors, []);
   await page.close();
 });
@@ -238,14 +238,14 @@ test('a lost WebGL context sends the page back to the 2D canvas', async () => {
   assert.equal(await page.locator('#renderer-note').isVisible(), true);
   assert.equal(await page.locator('#gl-canvas').isHidden(), true);
   await page.waitForTimeout(100);
-  const coloured = await page.evaluate(() => {
+  const colored = await page.evaluate(() => {
     const c = document.getElementById('canvas');
     const data = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
     let n = 0;
     for (let i = 0; i < data.length; i += 4) if (data[i + 3] > 200 && (data[i] < 240 || data[i + 1] < 240 || data[i + 2] < 240)) n++;
     return n;
   });
-  assert.ok(coloured > 10_000, `${coloured} pixels of mesh drawn in 2D`);
+  assert.ok(colored > 10_000, `${colored} pixels of mesh drawn in 2D`);
   assert.deepEqual(errors.filter((e) => !/WebGL/.test(e)), []);
   await page.close();
 });

@@ -34,7 +34,7 @@ async function pageMeshes() {
 
 const smoothingShown = () => page.waitForFunction(() => document.body.dataset.smoothingState === 'shown', null, { timeout: 20_000 });
 
-/** Pixels of the smoothing histogram near an RGB colour. */
+/** Pixels of the smoothing histogram near an RGB color. */
 const pixelsOf = (rgb) => page.evaluate((c) => {
   const canvas = document.getElementById('smoothing-histogram');
   const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;

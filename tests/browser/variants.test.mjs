@@ -40,7 +40,7 @@ async function assertValidMesh(p, what) {
   return stats;
 }
 
-test('the two controls are labelled selects with the defaults', async () => {
+test('the two controls are labeled selects with the defaults', async () => {
   assert.equal(await page.getByLabel('Algorithm', { exact: true }).inputValue(), 'cdt');
   assert.equal(await page.getByLabel('Encroachment', { exact: true }).inputValue(), 'lens');
   const options = await page.locator('#variant option').allTextContents();

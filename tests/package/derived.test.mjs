@@ -150,7 +150,7 @@ test('order: 2 gives triangles6 and one shared midpoint node per edge appended t
   assert.equal(Number(mesher.toNode(mesh).split(/\s/)[0]), v + edges.size);
 });
 
-test('voronoi: true gives one equidistant circumcentre per triangle and an outward ray per boundary edge', () => {
+test('voronoi: true gives one equidistant circumcenter per triangle and an outward ray per boundary edge', () => {
   const mesh = mesher.triangulate(ringPlc(), { minAngle: 25, voronoi: true });
   const { points: c, edges, rayDirections: ray, meshEdges } = mesh.voronoi;
   const p = mesh.points, t = mesh.triangles, nt = t.length / 3;

@@ -1,4 +1,4 @@
-// The hostile-input catalogue (tests/hostile/, expectations in its expectations.txt) through the
+// The hostile-input catalog (tests/hostile/, expectations in its expectations.txt) through the
 // installed package: each file is read as text by parsePoly / parseNode / parseJson / parseGeoJson
 // and meshed as the plain CDT and at 30 and 40 degrees (Steiner budget 20,000, as tests/core/test_hostile.cpp does).
 // A "valid" file must give meshes the independent JavaScript validator accepts in every mode; any
@@ -12,7 +12,7 @@ import { problemsOf } from './judge-mesh.mjs';
 import { validateMesh } from './validate-mesh.mjs';
 
 const dir = process.env.RUPPERT_HOSTILE;
-const haveCatalogue = dir !== undefined && existsSync(join(dir, 'expectations.txt'));
+const haveCatalog = dir !== undefined && existsSync(join(dir, 'expectations.txt'));
 
 function readExpectations() {
   const entries = [];
@@ -30,10 +30,10 @@ const modes = [
   { name: 'min angle 40', options: { minAngle: 40, maxSteiner: 20000 } },
 ];
 
-test('every file of the hostile catalogue has the expected outcome through the package', { skip: !haveCatalogue && `catalogue not found (${dir})` }, async () => {
+test('every file of the hostile catalog has the expected outcome through the package', { skip: !haveCatalog && `catalog not found (${dir})` }, async () => {
   const mesher = await init();
   const entries = readExpectations();
-  assert.ok(entries.length >= 70, `only ${entries.length} catalogue entries`);
+  assert.ok(entries.length >= 70, `only ${entries.length} catalog entries`);
   const failures = [];
   for (const { file, outcome } of entries) {
     const parse = parsers[extname(file)];

@@ -1,4 +1,4 @@
-// Judging a mesh the package returned for a PLC and options, shared by the hostile catalogue and the
+// Judging a mesh the package returned for a PLC and options, shared by the hostile catalog and the
 // careless-PLC sweep: the independent validator (validate-mesh.mjs) on a copy scaled near 1, the
 // input's segments as chains even where the core repaired the input, and the angle bound when the
 // mesh says it is complete.

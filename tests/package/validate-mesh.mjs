@@ -3,7 +3,7 @@
 // It re-derives every property from the typed arrays alone (never trusting the core's stats):
 //   * layout: array lengths agree with each other, indices are in range;
 //   * orientation: every triangle is counter-clockwise with non-zero area;
-//   * topology: neighbours are symmetric and share the edge, no edge has three triangles, every
+//   * topology: neighbors are symmetric and share the edge, no edge has three triangles, every
 //     boundary edge is a subsegment;
 //   * constraints: every subsegment is a triangle edge and lies on its input segment's line; every
 //     input segment is a chain of subsegments from end to end except where it runs outside the
@@ -67,7 +67,7 @@ export function validateMesh(mesh, checks = {}) {
     if (!(o > 0)) report(`triangle ${k} (${a}, ${b}, ${c}) is ${o === 0 ? 'degenerate' : 'clockwise'}`);
   }
 
-  // Edges: each at most twice, neighbours symmetric.
+  // Edges: each at most twice, neighbors symmetric.
   const edgeCount = new Map();
   for (let k = 0; k < nt; k++) {
     for (let i = 0; i < 3; i++) {
@@ -80,7 +80,7 @@ export function validateMesh(mesh, checks = {}) {
       for (let m = 0; m < 3; m++) {
         if (t[3 * n + (m + 1) % 3] === v && t[3 * n + (m + 2) % 3] === u) j = m;
       }
-      if (j < 0) report(`triangle ${k} edge ${i} (${u}, ${v}): neighbour ${n} does not have edge (${v}, ${u})`);
+      if (j < 0) report(`triangle ${k} edge ${i} (${u}, ${v}): neighbor ${n} does not have edge (${v}, ${u})`);
       else if (nb[3 * n + j] !== k) report(`triangle ${k} -> ${n} but ${n} edge ${j} -> ${nb[3 * n + j]}`);
     }
   }

@@ -26,7 +26,7 @@ namespace ruppert_wasm {
 inline constexpr const char* kInputFields[] = {
     "points:f64", "segments:u32", "holes:f64", "regions:f64", "pointMarkers:i32", "segmentMarkers:i32",
     "pointAttributes:f64", "curves:f64", RUPPERT_MESH_OPTIONS(RUPPERT_WASM_FIELD_)};
-// "curves": kCurveValues doubles per Plc::curves item: the type's number, from, to, the centre (arc,
+// "curves": kCurveValues doubles per Plc::curves item: the type's number, from, to, the center (arc,
 // then two zeros) or the controls (Bézier), the marker.
 inline constexpr std::size_t kCurveValues = 8;
 

@@ -1,14 +1,14 @@
 // The editor's curve tools and what the Select tool does with curves.
 //
-//   circle  press at the centre, drag to a point of the circle, release (or click the centre, then
+//   circle  press at the center, drag to a point of the circle, release (or click the center, then
 //           click the point): that point and the one opposite it, and two arcs between them, a
 //           closed curve (an outer boundary, or a hole with a hole seed inside).
-//   arc     click its start (an existing vertex or a new one), its end, then its centre: the click
+//   arc     click its start (an existing vertex or a new one), its end, then its center: the click
 //           goes to the nearest point of the ends' perpendicular bisector, so both ends lie on the
 //           circle; the arc runs counter-clockwise from start to end (the preview shows which way).
 //   bezier  click its start, its end, then its two control points.
 // Nothing is added until the curve is complete (one undo step); Esc or another tool drops it.
-// With Select, a curve is picked by its stroke and dragged whole; its handles (an arc's centre, a
+// With Select, a curve is picked by its stroke and dragged whole; its handles (an arc's center, a
 // Bézier's controls) are dragged as curve-data.js's rules say, which keep every arc valid.
 import { Item, addPoint, hitTest, moveItem } from '../model/drawing.js';
 import { CurveItem, cloneCurves, curveShape, curvesOf, followPoints, handlesOf, twinArcs } from '../model/curve-data.js';
@@ -18,8 +18,8 @@ export const CURVE_TOOLS = Object.freeze(['circle', 'arc', 'bezier']);
 export const isCurveTool = (tool) => CURVE_TOOLS.includes(tool);
 
 export const CURVE_TOOL_HINTS = {
-  circle: 'Circle: press at the centre and drag to the radius (or click the centre, then a point on the circle). A hole seed inside makes it a hole.',
-  arc: 'Arc: click its start (a vertex or a new point), its end, then its centre; it runs counter-clockwise from start to end. Esc drops it.',
+  circle: 'Circle: press at the center and drag to the radius (or click the center, then a point on the circle). A hole seed inside makes it a hole.',
+  arc: 'Arc: click its start (a vertex or a new point), its end, then its center; it runs counter-clockwise from start to end. Esc drops it.',
   bezier: 'Bézier: click its start (a vertex or a new point), its end, then its two control points. Esc drops it.',
 };
 
@@ -28,7 +28,7 @@ const MIN_RADIUS_PIXELS = 4;
 /**
  * The item under (x, y) within `radius`: hitTest's (seeds, points, segments) or, when `kinds` is
  * undefined (the Select tool), a curve's handle or stroke too. A handle wins over a point or seed
- * only when it is nearer (a hole seed at a circle's centre stays pickable beside the handle), and a
+ * only when it is nearer (a hole seed at a circle's center stays pickable beside the handle), and a
  * curve's stroke counts only where nothing else is.
  */
 export function hitWithCurves(d, x, y, radius, kinds) {
@@ -64,7 +64,7 @@ export function hitWithCurves(d, x, y, radius, kinds) {
 /**
  * Moves an item to (x, y) and keeps the curves valid: `before` is the drawing (points and curves)
  * when the move began (a drag's start; an arrow key's moment), from which followPoints places the
- * centres and controls of the curves whose ends moved. A circle's centre drags both its halves.
+ * centers and controls of the curves whose ends moved. A circle's center drags both its halves.
  */
 export function moveWithCurves(d, item, x, y, before = snapshot(d)) {
   moveItem(d, item, x, y);
@@ -152,13 +152,13 @@ export class CurveTools {
     if (pixels >= MIN_RADIUS_PIXELS) this.finishCircle([at.x, at.y]);
   }
 
-  /** The point `through` and its opposite, and the two arcs between them around the centre. */
+  /** The point `through` and its opposite, and the two arcs between them around the center. */
   finishCircle(through) {
     const [cx, cy] = this.pending.center;
     if (through[0] === cx && through[1] === cy) return;
     const d = this.drawing;
     const a = addPoint(d, through[0], through[1]);
-    // The opposite point: its distance from the centre equals the first's to rounding (1e-16 of
+    // The opposite point: its distance from the center equals the first's to rounding (1e-16 of
     // the radius; the core allows 1e-9).
     const b = addPoint(d, 2 * cx - through[0], 2 * cy - through[1]);
     d.curves = [...cloneCurves(d), { type: 'arc', from: a, to: b, center: [cx, cy] }, { type: 'arc', from: b, to: a, center: [cx, cy] }];

@@ -188,7 +188,7 @@ export class Editor {
       this.select(hit);
       if (hit.kind !== Item.SEGMENT) {
         const start = itemPosition(d, hit);
-        // `before`: the curves' centres and controls follow their ends from where the drag began.
+        // `before`: the curves' centers and controls follow their ends from where the drag began.
         this.startGesture(e, { type: 'drag', item: hit, start, grab: { x: world.x - start.x, y: world.y - start.y }, moved: false, before: snapshot(d) });
       }
       return;

@@ -1,4 +1,4 @@
-// Per-triangle measures for colouring and hovering, and finding the triangle under the pointer.
+// Per-triangle measures for coloring and hovering, and finding the triangle under the pointer.
 
 const DEG = 180 / Math.PI;
 
@@ -66,7 +66,7 @@ function contains(mesh, t, x, y) {
 }
 
 /**
- * The triangle containing (x, y), or -1. Walks from `hint` through neighbours (fast while the
+ * The triangle containing (x, y), or -1. Walks from `hint` through neighbors (fast while the
  * pointer moves a little); a walk can stop at a hole or the boundary, then every triangle is tried.
  */
 export function findTriangle(mesh, x, y, hint = -1) {

@@ -1,4 +1,4 @@
-// The page's link: the drawing, its options, the step, the colouring and the view written into
+// The page's link: the drawing, its options, the step, the coloring and the view written into
 // the URL hash (url-state.js encodes them), read back when the page opens or the hash changes.
 import { MAX_HASH_LENGTH, decodeDrawing, encodeDrawing, encodePageState } from './url-state.js';
 

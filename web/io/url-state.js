@@ -105,8 +105,8 @@ export function decodeDrawing(hash) {
 }
 
 // What the page shows, beside the drawing: '&step=K' (step mode at step K), '&color=MODE' (the
-// triangle colouring), '&view=CX,CY,SCALE' (the view's centre and CSS pixels per unit). Each is
-// optional; a link without them opens with the drawing fitted, coloured by angle, not stepping.
+// triangle coloring), '&view=CX,CY,SCALE' (the view's center and CSS pixels per unit). Each is
+// optional; a link without them opens with the drawing fitted, colored by angle, not stepping.
 const COLOR_MODES = ['angle', 'region', 'none'];
 
 /** The hash suffix for the page state { step: number | null, color, view: { x, y, scale } | null }. */

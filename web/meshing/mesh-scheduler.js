@@ -4,7 +4,7 @@
 // after a short delay, and while a mesh is being made, only the newest change is kept and meshed
 // as soon as that mesh arrives. So a dragged vertex re-meshes while it moves, and the latest
 // position is always meshed last. A request that has run longer than ABORT_AFTER_MS is aborted
-// in favour of a newer one (createMeshWorker aborts by terminating the worker, which costs a
+// in favor of a newer one (createMeshWorker aborts by terminating the worker, which costs a
 // restart: worth it only when the mesh in the way is slow). Results of superseded requests are
 // dropped.
 import { MeshError, createMeshWorker } from '../../wasm/index.js';

@@ -7,13 +7,13 @@
 // `from` and `to` are point indices. An item of the editor is a whole curve { kind: 'curve', index }
 // or one of its handles { kind: 'handle', index, which: 'center' | 'c1' | 'c2' }.
 //
-// Keeping arcs valid (their ends equidistant from the centre, which the core checks to 1e-9): a
-// centre handle moves only along the perpendicular bisector of its arc's ends (the pointer
-// projected onto it), and when an arc's end point moves, its centre goes to the point of the new
+// Keeping arcs valid (their ends equidistant from the center, which the core checks to 1e-9): a
+// center handle moves only along the perpendicular bisector of its arc's ends (the pointer
+// projected onto it), and when an arc's end point moves, its center goes to the point of the new
 // bisector nearest to where it was when the move began (followPoints). A Bézier's control moves
 // with the end it belongs to (c1 with `from`, c2 with `to`), keeping the curve's tangents there.
 // A curve whose two ends move by the same offset (a dragged curve, a circle's other half) moves
-// whole, its centre or controls with it.
+// whole, its center or controls with it.
 import { includeShape, onBisector, pointAt, shapeOf } from './curve-geometry.js';
 
 export const CurveItem = Object.freeze({ CURVE: 'curve', HANDLE: 'handle' });
@@ -40,7 +40,7 @@ export function curvesForPlc(d) {
   return curves.length ? { curves: curves.map(copyCurve) } : {};
 }
 
-/** The curves of a parsed file (typed arrays in centres and controls), as the drawing keeps them. */
+/** The curves of a parsed file (typed arrays in centers and controls), as the drawing keeps them. */
 export const curvesFromPlc = (plc) => (plc.curves ?? []).map(copyCurve);
 
 /** The shape (curve-geometry.js) of curve k of the drawing. */
@@ -57,7 +57,7 @@ export function dropPointFromCurves(d, i) {
   }));
 }
 
-/** The handles of curve k: [{ which, x, y }] (an arc's centre, a Bézier's two controls). */
+/** The handles of curve k: [{ which, x, y }] (an arc's center, a Bézier's two controls). */
 export function handlesOf(d, k) {
   const c = d.curves[k];
   if (c.type === 'arc') return [{ which: 'center', x: c.center[0], y: c.center[1] }];
@@ -78,8 +78,8 @@ export function curveItemPosition(d, item) {
 }
 
 /**
- * Moves a curve item to (x, y): a centre handle to the point of its arc's bisector nearest to
- * (x, y), a control to (x, y), a curve by the offset of its middle (its end points move; its centre
+ * Moves a curve item to (x, y): a center handle to the point of its arc's bisector nearest to
+ * (x, y), a control to (x, y), a curve by the offset of its middle (its end points move; its center
  * or controls follow in followPoints).
  */
 export function moveCurveItem(d, item, x, y) {
@@ -109,7 +109,7 @@ export function removeCurve(d, k) {
 
 /**
  * After points moved (a drag from `before`, a copy of the drawing when it began): every curve
- * whose ends moved gets its centre or controls from `before` as the rules at the top say, so the
+ * whose ends moved gets its center or controls from `before` as the rules at the top say, so the
  * result depends only on where the points are, not on the path the pointer took.
  */
 export function followPoints(d, before) {
@@ -130,8 +130,8 @@ export function followPoints(d, before) {
 }
 
 /**
- * Arcs that share arc k's centre and ends (either way round: a circle's two halves): a drag of
- * k's centre moves theirs too, so the circle stays one circle.
+ * Arcs that share arc k's center and ends (either way round: a circle's two halves): a drag of
+ * k's center moves theirs too, so the circle stays one circle.
  */
 export function twinArcs(d, k) {
   const c = d.curves[k];

@@ -67,7 +67,7 @@ export function includeShape(box, shape) {
 }
 
 /**
- * The point of the perpendicular bisector of a-b nearest to q: where an arc's centre may go so
+ * The point of the perpendicular bisector of a-b nearest to q: where an arc's center may go so
  * that both its ends lie at one distance from it (the core refuses an arc whose ends differ beyond
  * 1e-9 of the radius). When a and b coincide there is no bisector: q itself.
  */

@@ -1,4 +1,4 @@
-// The Display panel: the colouring of the triangles and its legend, and the vertex numbers toggle.
+// The Display panel: the coloring of the triangles and its legend, and the vertex numbers toggle.
 import { VERTEX_NUMBERS_UP_TO, exemptionLegend, legendEntries, markerLegend } from '../rendering/render.js';
 
 const $ = (id) => document.getElementById(id);
@@ -6,18 +6,18 @@ const $ = (id) => document.getElementById(id);
 /**
  * @param {object} app the page's state (colorMode, mesh, exemptions)
  * @param {() => void} scheduleDraw
- * @param {() => void} writeLink the colouring is in the link
+ * @param {() => void} writeLink the coloring is in the link
  */
 export function createDisplayPanel({ app, scheduleDraw, writeLink }) {
-  /** The legend of the colour mode and of the exemptions marked on the canvas. */
+  /** The legend of the color mode and of the exemptions marked on the canvas. */
   function updateLegend() {
     const entries = [...legendEntries(app.colorMode, app.mesh), ...exemptionLegend(app.exemptions), ...markerLegend(app.drawing)];
-    $('legend').replaceChildren(...entries.map(({ colour, label, hatched }) => {
+    $('legend').replaceChildren(...entries.map(({ color, label, hatched }) => {
       const item = document.createElement('span');
       item.className = 'legend-item';
       const swatch = document.createElement('span');
       swatch.className = 'swatch';
-      swatch.style.background = hatched ? `repeating-linear-gradient(135deg, ${colour} 0 2px, #fff 2px 5px)` : colour;
+      swatch.style.background = hatched ? `repeating-linear-gradient(135deg, ${color} 0 2px, #fff 2px 5px)` : color;
       item.append(swatch, label);
       return item;
     }));
@@ -42,7 +42,7 @@ export function createDisplayPanel({ app, scheduleDraw, writeLink }) {
     scheduleDraw();
   });
 
-  /** The colour mode a link asked for. */
+  /** The color mode a link asked for. */
   function setColorMode(mode) {
     $('color-mode').value = mode;
     app.colorMode = mode;

@@ -63,9 +63,9 @@ export function niceCeiling(value) {
   return 10 * power;
 }
 
-// The histogram's colours: bars, the reference angles (dashed), the bound in force (solid, the
+// The histogram's colors: bars, the reference angles (dashed), the bound in force (solid, the
 // teal no bar has), the axes and their labels.
-const HISTOGRAM_COLOURS = { bar: '#3b5bdb', reference: '#c92a2a', bound: '#0b7285', axis: '#343a40' };
+const HISTOGRAM_COLORS = { bar: '#3b5bdb', reference: '#c92a2a', bound: '#0b7285', axis: '#343a40' };
 
 /**
  * Bars of the 180 one-degree bins over a count axis (0 to a round number at or above the fullest
@@ -101,14 +101,14 @@ export function drawHistogram(canvas, histogram, bound = null) {
   ctx.fillStyle = '#f7f8fa';
   ctx.fillRect(left, top, width, bottom - top);
   if (histogram && histogram.length) {
-    ctx.fillStyle = HISTOGRAM_COLOURS.bar;
+    ctx.fillStyle = HISTOGRAM_COLORS.bar;
     for (let bin = 0; bin < histogram.length; bin++) {
       if (!histogram[bin]) continue;
       const h = Math.max(1, (histogram[bin] / countMax) * (bottom - top));
       ctx.fillRect(x(bin), bottom - h, Math.max(1, width / 180), h);
     }
   }
-  ctx.strokeStyle = HISTOGRAM_COLOURS.reference;
+  ctx.strokeStyle = HISTOGRAM_COLORS.reference;
   ctx.lineWidth = 1;
   ctx.setLineDash([3, 2]);
   for (const angle of REFERENCE_ANGLES) {
@@ -122,13 +122,13 @@ export function drawHistogram(canvas, histogram, bound = null) {
   ctx.textBaseline = 'alphabetic';
   if (bound > 0) {
     const bx = Math.round(x(bound));  // 2 pixels wide: the pixels either side of bx, both solid
-    ctx.strokeStyle = HISTOGRAM_COLOURS.bound;
+    ctx.strokeStyle = HISTOGRAM_COLORS.bound;
     ctx.lineWidth = 2;
     ctx.beginPath();
     ctx.moveTo(bx, top - 2);
     ctx.lineTo(bx, bottom);
     ctx.stroke();
-    ctx.fillStyle = HISTOGRAM_COLOURS.bound;
+    ctx.fillStyle = HISTOGRAM_COLORS.bound;
     ctx.textAlign = 'left';
     ctx.fillText(`bound ${Number(bound.toFixed(2))}°`, bx + 3, top - 2);
     canvas.dataset.bound = String(bound);
@@ -138,14 +138,14 @@ export function drawHistogram(canvas, histogram, bound = null) {
     delete canvas.dataset.boundX;
   }
   // The axes: counts up the left, angles along the bottom.
-  ctx.strokeStyle = HISTOGRAM_COLOURS.axis;
+  ctx.strokeStyle = HISTOGRAM_COLORS.axis;
   ctx.lineWidth = 1;
   ctx.beginPath();
   ctx.moveTo(left - 0.5, top);
   ctx.lineTo(left - 0.5, bottom + 0.5);
   ctx.lineTo(left + width, bottom + 0.5);
   ctx.stroke();
-  ctx.fillStyle = HISTOGRAM_COLOURS.axis;
+  ctx.fillStyle = HISTOGRAM_COLORS.axis;
   ctx.textAlign = 'right';
   if (countMax > 0) {
     for (const count of [0, countMax / 2, countMax]) {

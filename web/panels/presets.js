@@ -115,13 +115,13 @@ function lake() {
 function smallAngleFan() {
   const d = blank();
   ring(d, [-5, -5, 15, -5, 15, 10, -5, 10]);
-  const centre = d.points.length / 2;
+  const center = d.points.length / 2;
   d.points.push(0, 0);
   const spokes = 7;
   for (let i = 0; i < spokes; i++) {
     const angle = (i * 5 * Math.PI) / 180;
     d.points.push(Number((10 * Math.cos(angle)).toFixed(6)), Number((10 * Math.sin(angle)).toFixed(6)));
-    d.segments.push(centre, centre + 1 + i);
+    d.segments.push(center, center + 1 + i);
   }
   return d;
 }
@@ -163,9 +163,9 @@ function twoPolygons() {
 }
 
 /**
- * The unit square with a round hole of radius 0.25 at its centre: the hole is two arcs
- * between (0.75, 0.5) and (0.25, 0.5); its seed sits off the centre, so that the Select tool picks the
- * centre handle there.
+ * The unit square with a round hole of radius 0.25 at its center: the hole is two arcs
+ * between (0.75, 0.5) and (0.25, 0.5); its seed sits off the center, so that the Select tool picks the
+ * center handle there.
  */
 function plateWithRoundHole() {
   const d = blank();
@@ -257,7 +257,7 @@ export const PRESETS = [
   {
     id: 'plate-round-hole', name: 'A plate with a round hole (curves)', build: plateWithRoundHole,
     caption: 'A unit square with a hole of radius 0.25: the circle is two arcs, and every vertex on it lies on the circle. ' +
-      'Drag the centre handle (Select) to change the radius, or set the curve tolerance.',
+      'Drag the center handle (Select) to change the radius, or set the curve tolerance.',
   },
   { id: 'two-sizes', name: 'Two polygons of very different sizes, with regions', build: twoSizes },
 ];

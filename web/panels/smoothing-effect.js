@@ -4,7 +4,7 @@
 import { SMALLEST_ANGLE_BINS, movedVertices, smallestAngleSummary } from '../geometry/mesh-geometry.js';
 import { niceCeiling } from './mesh-panel.js';
 
-const COLOURS = { after: '#3b5bdb', before: '#e8590c', bound: '#0b7285', axis: '#343a40', ground: '#f7f8fa' };
+const COLORS = { after: '#3b5bdb', before: '#e8590c', bound: '#0b7285', axis: '#343a40', ground: '#f7f8fa' };
 
 const count = (n) => n.toLocaleString('en-US');
 
@@ -31,14 +31,14 @@ export function drawSmoothingHistogram(canvas, before, after, bound = null) {
   const width = cssWidth - left - 6;
   const x = (angle) => left + (angle / SMALLEST_ANGLE_BINS) * width;
   const y = (count) => bottom - (count / countMax) * (bottom - top);
-  ctx.fillStyle = COLOURS.ground;
+  ctx.fillStyle = COLORS.ground;
   ctx.fillRect(left, top, width, bottom - top);
-  ctx.fillStyle = COLOURS.after;
+  ctx.fillStyle = COLORS.after;
   after.histogram.forEach((count, bin) => {
     if (count > 0) ctx.fillRect(x(bin), y(count), Math.max(1, x(bin + 1) - x(bin) - 0.5), bottom - y(count));
   });
   // The unsmoothed mesh's histogram as a step line, so that the bars under it stay visible.
-  ctx.strokeStyle = COLOURS.before;
+  ctx.strokeStyle = COLORS.before;
   ctx.lineWidth = 1.5;
   ctx.beginPath();
   ctx.moveTo(x(0), bottom);
@@ -46,15 +46,15 @@ export function drawSmoothingHistogram(canvas, before, after, bound = null) {
   ctx.lineTo(x(SMALLEST_ANGLE_BINS), bottom);
   ctx.stroke();
   if (bound > 0) {
-    ctx.strokeStyle = COLOURS.bound;
+    ctx.strokeStyle = COLORS.bound;
     ctx.lineWidth = 2;
     ctx.beginPath();
     ctx.moveTo(Math.round(x(bound)), top);
     ctx.lineTo(Math.round(x(bound)), bottom);
     ctx.stroke();
   }
-  ctx.strokeStyle = COLOURS.axis;
-  ctx.fillStyle = COLOURS.axis;
+  ctx.strokeStyle = COLORS.axis;
+  ctx.fillStyle = COLORS.axis;
   ctx.lineWidth = 1;
   ctx.beginPath();
   ctx.moveTo(left - 0.5, top);

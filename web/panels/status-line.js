@@ -5,7 +5,7 @@ const $ = (id) => document.getElementById(id);
 // Progress shows only for work that takes a noticeable time.
 const PROGRESS_DELAY_MS = 200;
 
-/** One line saying what just happened; `kind` ('info', 'ok', 'warn', 'error') colours it. */
+/** One line saying what just happened; `kind` ('info', 'ok', 'warn', 'error') colors it. */
 export function setStatus(text, kind = 'info') {
   const status = $('status');
   status.textContent = text;

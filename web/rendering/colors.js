@@ -1,7 +1,7 @@
-// The page's colours: the angle classes, region fills, the drawing's and overlays' colours and
+// The page's colors: the angle classes, region fills, the drawing's and overlays' colors and
 // the segment markers', shared by every picture (the canvas, the curves, the side-by-side view).
 
-/** Min-angle classes for colouring: [upper bound in degrees, colour]. */
+/** Min-angle classes for coloring: [upper bound in degrees, color]. */
 export const ANGLE_CLASSES = [
   [10, '#b2182b'],
   [20, '#e0603f'],
@@ -13,9 +13,9 @@ export const ANGLE_CLASSES = [
   [60.0001, '#4a78b5'],
 ];
 
-export const REGION_COLOURS = ['#dbe7f5', '#f6d8b8', '#cfe8cf', '#ead1ef', '#f8f1b6', '#cdeaea', '#f3cdd3', '#e0e0e0'];
+export const REGION_COLORS = ['#dbe7f5', '#f6d8b8', '#cfe8cf', '#ead1ef', '#f8f1b6', '#cdeaea', '#f3cdd3', '#e0e0e0'];
 
-export const COLOURS = {
+export const COLORS = {
   background: '#ffffff',
   grid: '#eef0f4',
   gridStrong: '#d9dde6',
@@ -33,13 +33,13 @@ export const COLOURS = {
   seditious: '#0b7285',
 };
 
-// Segment markers (boundary markers): one colour each, strong hues drawn over the fills; 0 (no
-// marker) in the segments' black. Markers above the table's length reuse its colours in turn.
-const MARKER_COLOURS = ['#1c7ed6', '#c2255c', '#2b8a3e', '#862e9c', '#0b7285', '#5c940d', '#a61e4d', '#364fc7'];
+// Segment markers (boundary markers): one color each, strong hues drawn over the fills; 0 (no
+// marker) in the segments' black. Markers above the table's length reuse its colors in turn.
+const MARKER_COLORS = ['#1c7ed6', '#c2255c', '#2b8a3e', '#862e9c', '#0b7285', '#5c940d', '#a61e4d', '#364fc7'];
 
-export function markerColour(marker) {
-  if (!marker) return COLOURS.segment;
-  const n = MARKER_COLOURS.length;
-  return MARKER_COLOURS[(((Math.trunc(marker) - 1) % n) + n) % n];
+export function markerColor(marker) {
+  if (!marker) return COLORS.segment;
+  const n = MARKER_COLORS.length;
+  return MARKER_COLORS[(((Math.trunc(marker) - 1) % n) + n) % n];
 }
 

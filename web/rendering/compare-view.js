@@ -1,5 +1,5 @@
 // Two placements side by side (the "off-centers against circumcenters" preset): the drawing meshed
-// once per placement at the page's other options, each mesh drawn on its own canvas, coloured by
+// once per placement at the page's other options, each mesh drawn on its own canvas, colored by
 // min angle as the main canvas is, with its triangle count and smallest angle as its caption.
 // While it shows, it takes the main canvas's place; every change of the drawing or its options
 // meshes both again (in a worker of its own, so a slow placement never blocks the page), and
@@ -9,13 +9,13 @@ import { boundsOf } from '../geometry/bounds.js';
 import { toMeshOptions, toPlc } from '../model/drawing.js';
 import { PLACEMENT_LABELS } from '../labels.js';
 import { minAngles } from '../geometry/mesh-geometry.js';
-import { ANGLE_CLASSES, COLOURS } from './colours.js';
+import { ANGLE_CLASSES, COLORS } from './colors.js';
 
 const $ = (id) => document.getElementById(id);
 
-/** The angle class colour of a smallest angle, as the legend gives it. */
-function angleColour(angle) {
-  for (const [upper, colour] of ANGLE_CLASSES) if (angle < upper) return colour;
+/** The angle class color of a smallest angle, as the legend gives it. */
+function angleColor(angle) {
+  for (const [upper, color] of ANGLE_CLASSES) if (angle < upper) return color;
   return ANGLE_CLASSES[ANGLE_CLASSES.length - 1][1];
 }
 
@@ -37,24 +37,24 @@ function drawMesh(canvas, mesh) {
   const p = mesh.points;
   const tri = mesh.triangles;
   const angles = minAngles(mesh);
-  // One path per colour class, then all edges in one stroke: a few fills however large the mesh.
+  // One path per color class, then all edges in one stroke: a few fills however large the mesh.
   const paths = new Map();
   const edges = new Path2D();
   for (let t = 0; t < tri.length / 3; t++) {
-    const colour = angleColour(angles[t]);
-    if (!paths.has(colour)) paths.set(colour, new Path2D());
-    for (const path of [paths.get(colour), edges]) {
+    const color = angleColor(angles[t]);
+    if (!paths.has(color)) paths.set(color, new Path2D());
+    for (const path of [paths.get(color), edges]) {
       path.moveTo(ox + p[2 * tri[3 * t]] * scale, oy - p[2 * tri[3 * t] + 1] * scale);
       path.lineTo(ox + p[2 * tri[3 * t + 1]] * scale, oy - p[2 * tri[3 * t + 1] + 1] * scale);
       path.lineTo(ox + p[2 * tri[3 * t + 2]] * scale, oy - p[2 * tri[3 * t + 2] + 1] * scale);
       path.closePath();
     }
   }
-  for (const [colour, path] of paths) {
-    ctx.fillStyle = colour;
+  for (const [color, path] of paths) {
+    ctx.fillStyle = color;
     ctx.fill(path);
   }
-  ctx.strokeStyle = COLOURS.edge;
+  ctx.strokeStyle = COLORS.edge;
   ctx.lineWidth = 0.5;
   ctx.stroke(edges);
 }

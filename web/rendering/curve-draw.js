@@ -1,13 +1,13 @@
 // The drawing's curves on the 2D canvas (render.js calls drawCurves after the segments): each as
-// the true arc or cubic, not its chords, in its marker's colour like a segment, with its marker
+// the true arc or cubic, not its chords, in its marker's color like a segment, with its marker
 // written at its middle; the selected or hovered one thick; when the page may be edited, the
-// handles (an arc's centre, with thin lines to its ends; a Bézier's controls, with lines to the
+// handles (an arc's center, with thin lines to its ends; a Bézier's controls, with lines to the
 // ends they belong to); and the curve a curve tool is making, dashed up to the pointer.
-import { COLOURS, markerColour } from './colours.js';
+import { COLORS, markerColor } from './colors.js';
 import { curveShape, curvesOf, handlesOf } from '../model/curve-data.js';
 import { pointAt, tracePath } from '../model/curve-geometry.js';
 
-const HANDLE_COLOUR = '#5f6b7a';
+const HANDLE_COLOR = '#5f6b7a';
 
 /**
  * @param {CanvasRenderingContext2D} ctx the renderer's 2D context
@@ -24,12 +24,12 @@ export function drawCurves(ctx, s, world, screen, px) {
   curves.forEach((c, k) => {
     const path = new Path2D();
     tracePath(path, curveShape(d, k));
-    ctx.strokeStyle = markerColour(c.marker ?? 0);
+    ctx.strokeStyle = markerColor(c.marker ?? 0);
     ctx.lineWidth = 2.5 * px;
     ctx.stroke(path);
     const chosen = is(s.selection, 'curve', k) || is(s.selection, 'handle', k);
     if (chosen || is(s.hoverItem, 'curve', k)) {
-      ctx.strokeStyle = chosen ? COLOURS.selected : COLOURS.hover;
+      ctx.strokeStyle = chosen ? COLORS.selected : COLORS.hover;
       ctx.lineWidth = 4 * px;
       ctx.stroke(path);
     }
@@ -48,7 +48,7 @@ function drawHandles(ctx, s, k) {
   const end = (i) => view.toScreen(d.points[2 * i], d.points[2 * i + 1]);
   ctx.setLineDash([3, 3]);
   ctx.lineWidth = 1;
-  ctx.strokeStyle = HANDLE_COLOUR;
+  ctx.strokeStyle = HANDLE_COLOR;
   for (const h of handlesOf(d, k)) {
     const q = view.toScreen(h.x, h.y);
     ctx.beginPath();
@@ -66,7 +66,7 @@ function drawHandles(ctx, s, k) {
     else ctx.arc(q.x, q.y, 4.5, 0, 2 * Math.PI);
     ctx.fillStyle = '#fff';
     ctx.fill();
-    ctx.strokeStyle = same(s.selection) ? COLOURS.selected : same(s.hoverItem) ? COLOURS.hover : HANDLE_COLOUR;
+    ctx.strokeStyle = same(s.selection) ? COLORS.selected : same(s.hoverItem) ? COLORS.hover : HANDLE_COLOR;
     ctx.lineWidth = 2;
     ctx.stroke();
   }
@@ -83,14 +83,14 @@ function drawCurveMarkers(ctx, d, view) {
     const [x, y] = pointAt(curveShape(d, k), 0.5);
     const q = view.toScreen(x, y);
     ctx.strokeStyle = '#fff'; ctx.lineWidth = 3; ctx.strokeText(String(c.marker), q.x, q.y);
-    ctx.fillStyle = markerColour(c.marker); ctx.fillText(String(c.marker), q.x, q.y);
+    ctx.fillStyle = markerColor(c.marker); ctx.fillText(String(c.marker), q.x, q.y);
   });
   ctx.textBaseline = 'alphabetic';
 }
 
 /** The curve being made: its shape so far, dashed; a dashed line for a radius or a first end; its clicks. */
 function drawPreview(ctx, preview, view, world, screen, px) {
-  ctx.strokeStyle = COLOURS.hover;
+  ctx.strokeStyle = COLORS.hover;
   if (preview.shape) {
     world();
     ctx.beginPath();

@@ -1,8 +1,8 @@
 // WebGL2 drawing of the mesh: the white background, the grid, the triangles filled with their
-// colour class and their edges, on a canvas of its own under the 2D canvas (which keeps the
+// color class and their edges, on a canvas of its own under the 2D canvas (which keeps the
 // overlays: the drawing, hover, step events, notices).
 //
-// Speed. The mesh goes to the GPU once (a colouring change re-sends only the colours); panning
+// Speed. The mesh goes to the GPU once (a coloring change re-sends only the colors); panning
 // and zooming change two uniforms. Edges are drawn by the fill shader from each corner's
 // barycentric coordinate (no line primitives: in software GL a line costs more than a triangle).
 // What a frame costs is its number of triangles (SwiftShader, the GL of headless Chromium,
@@ -11,16 +11,16 @@
 //   in view, as contiguous ranges;
 // - a chunk whose triangles are below a few pixels on screen is not drawn as triangles but
 //   shown from an overview picture: the whole mesh rasterized once on the CPU (one sample per
-//   texel, the edges as the grey their density gives: mesh-overview.js) into a texture, drawn as
+//   texel, the edges as the gray their density gives: mesh-overview.js) into a texture, drawn as
 //   one quad.
-// Positions are sent relative to the mesh's centre so float32 keeps the precision of a zoom.
+// Positions are sent relative to the mesh's center so float32 keeps the precision of a zoom.
 
 import { boundsOf, emptyBounds, includePoint } from '../geometry/bounds.js';
-import { parseColour, rasterizeOverview, walkOverview } from './mesh-overview.js';
+import { parseColor, rasterizeOverview, walkOverview } from './mesh-overview.js';
 
 const MESH_VERTEX = `#version 300 es
 in vec2 position;
-in vec4 colour;
+in vec4 color;
 in vec3 corner;       // (1,0,0), (0,1,0), (0,0,1): barycentric coordinate of the corner
 uniform vec2 scale;   // world units (relative to the origin) -> clip space
 uniform vec2 offset;
@@ -28,7 +28,7 @@ out vec4 fill;
 out vec3 bary;
 void main() {
   gl_Position = vec4(position * scale + offset, 0.0, 1.0);
-  fill = colour;
+  fill = color;
   bary = corner;
 }`;
 
@@ -36,17 +36,17 @@ const MESH_FRAGMENT = `#version 300 es
 precision highp float;
 in vec4 fill;
 in vec3 bary;
-uniform vec4 edge;    // edge colour, its alpha the line's opacity
+uniform vec4 edge;    // edge color, its alpha the line's opacity
 uniform float alpha;  // dims everything (a step still on its way)
-uniform bool lines;   // grid lines: the colour alone
-out vec4 outColour;
+uniform bool lines;   // grid lines: the color alone
+out vec4 outColor;
 void main() {
-  if (lines) { outColour = vec4(edge.rgb, edge.a * alpha); return; }
+  if (lines) { outColor = vec4(edge.rgb, edge.a * alpha); return; }
   // Distance to the nearest edge in pixels: half a pixel from each side, one pixel per edge.
   vec3 d = bary / max(fwidth(bary), vec3(1e-6));
   float near = min(min(d.x, d.y), d.z);
   float on = (1.0 - smoothstep(0.0, 0.75, near)) * edge.a;
-  outColour = vec4(mix(fill.rgb, edge.rgb, on), alpha);
+  outColor = vec4(mix(fill.rgb, edge.rgb, on), alpha);
 }`;
 
 const QUAD_VERTEX = `#version 300 es
@@ -62,8 +62,8 @@ precision highp float;
 in vec2 uv;
 uniform sampler2D picture;
 uniform float alpha;
-out vec4 outColour;
-void main() { vec4 c = texture(picture, uv); outColour = vec4(c.rgb, c.a * alpha); }`;
+out vec4 outColor;
+void main() { vec4 c = texture(picture, uv); outColor = vec4(c.rgb, c.a * alpha); }`;
 
 /** Chunks whose triangles' mean edge is below this many device pixels come from the overview. */
 export const OVERVIEW_BELOW_PX = 6;
@@ -115,12 +115,12 @@ export class GlMesh {
   constructor(canvas, gl) {
     this.canvas = canvas;
     this.gl = gl;
-    this.mesh = link(gl, MESH_VERTEX, MESH_FRAGMENT, ['position', 'colour', 'corner'], ['scale', 'offset', 'edge', 'alpha', 'lines']);
+    this.mesh = link(gl, MESH_VERTEX, MESH_FRAGMENT, ['position', 'color', 'corner'], ['scale', 'offset', 'edge', 'alpha', 'lines']);
     this.quad = link(gl, QUAD_VERTEX, QUAD_FRAGMENT, ['position', 'texel'], ['scale', 'offset', 'picture', 'alpha']);
     this.fills = gl.createVertexArray();
     gl.bindVertexArray(this.fills);
     this.positions = buffer(gl, this.mesh, 'position', null, 2);
-    this.colours = buffer(gl, this.mesh, 'colour', null, 4, gl.UNSIGNED_BYTE, true);
+    this.colors = buffer(gl, this.mesh, 'color', null, 4, gl.UNSIGNED_BYTE, true);
     this.corners = buffer(gl, this.mesh, 'corner', null, 3, gl.UNSIGNED_BYTE, false);
     this.gridArray = gl.createVertexArray();
     gl.bindVertexArray(this.gridArray);
@@ -134,18 +134,18 @@ export class GlMesh {
     this.triangleCount = 0;
     this.chunks = [];
     this.origin = [0, 0];
-    this.colourKey = null;
+    this.colorKey = null;
     this.overview = null;  // { width, height } of the overview texture, or null
     this.cornerCapacity = 0;
   }
 
   /**
-   * Takes a mesh (null: no mesh); its colours follow with setColours. A large mesh's triangles
+   * Takes a mesh (null: no mesh); its colors follow with setColors. A large mesh's triangles
    * go to the GPU after its first picture (from the overview), in a task of their own; `onReady`
    * is called then, to draw again.
    */
   setMesh(mesh, onReady = () => {}) {
-    this.colourKey = null;
+    this.colorKey = null;
     this.overview = null;
     this.source = mesh && mesh.triangles.length > 0 ? mesh : null;
     this.triangleCount = this.source ? mesh.triangles.length / 3 : 0;
@@ -169,15 +169,15 @@ export class GlMesh {
       this.deferred = setTimeout(() => { if (generation === this.generation) step(); }, 0);
     };
     // After the first picture (drawn in the next animation frame), in two tasks so neither holds
-    // the page long: the triangles, then their colours and the sharp overview. Frames in between
-    // still come from the quick overview (geometryReady is set with the colours).
+    // the page long: the triangles, then their colors and the sharp overview. Frames in between
+    // still come from the quick overview (geometryReady is set with the colors).
     later(() => later(() => {
       this.buildGeometry();
       later(() => {
         this.geometryReady = true;
-        if (this.colouring) {
-          this.colouring.classes ??= this.classesOf(this.colouring.classOf);
-          this.applyColours();
+        if (this.coloring) {
+          this.coloring.classes ??= this.classesOf(this.coloring.classOf);
+          this.applyColors();
         }
         this.warmUp();
         this.readyAt = performance.now();  // benchmarks: when the triangles were on the GPU
@@ -187,7 +187,7 @@ export class GlMesh {
   }
 
   /**
-   * One triangle drawn with colour writes off: the GL takes in the new buffers now rather than
+   * One triangle drawn with color writes off: the GL takes in the new buffers now rather than
    * in the first frame that needs them (0.6 s for 1.5 M triangles in SwiftShader).
    */
   warmUp() {
@@ -273,21 +273,21 @@ export class GlMesh {
   }
 
   /**
-   * Sends the fill colour of every triangle: `classOf(t)` gives its index into `palette`
-   * (CSS colours); and rasterizes the overview picture with them. `key` names the colouring, so
-   * an unchanged one is not sent again. `edgeColour`: the colour of the edges in the overview.
+   * Sends the fill color of every triangle: `classOf(t)` gives its index into `palette`
+   * (CSS colors); and rasterizes the overview picture with them. `key` names the coloring, so
+   * an unchanged one is not sent again. `edgeColor`: the color of the edges in the overview.
    */
-  setColours(key, palette, classOf, edgeColour) {
-    if (this.colourKey === key || this.triangleCount === 0) return;
-    this.colourKey = key;
+  setColors(key, palette, classOf, edgeColor) {
+    if (this.colorKey === key || this.triangleCount === 0) return;
+    this.colorKey = key;
     if (!this.geometryReady) {
-      // A large mesh's first picture: only the triangles under the overview's texels are coloured.
-      this.colouring = { palette, classOf, edgeColour, classes: null };
-      this.uploadOverview(walkOverview(this.source, this.overviewBox(), palette, classOf, edgeColour), false);
+      // A large mesh's first picture: only the triangles under the overview's texels are colored.
+      this.coloring = { palette, classOf, edgeColor, classes: null };
+      this.uploadOverview(walkOverview(this.source, this.overviewBox(), palette, classOf, edgeColor), false);
       return;
     }
-    this.colouring = { palette, classOf, edgeColour, classes: this.classesOf(classOf) };
-    this.applyColours();
+    this.coloring = { palette, classOf, edgeColor, classes: this.classesOf(classOf) };
+    this.applyColors();
   }
 
   classesOf(classOf) {
@@ -296,12 +296,12 @@ export class GlMesh {
     return classes;
   }
 
-  /** The colours to the triangles (on the GPU by now) and the sharp overview. */
-  applyColours() {
-    const { palette, classes, edgeColour } = this.colouring;
+  /** The colors to the triangles (on the GPU by now) and the sharp overview. */
+  applyColors() {
+    const { palette, classes, edgeColor } = this.coloring;
     if (this.geometryReady) {
       const words = palette.map((css) => {
-        const [r, g, b, a] = parseColour(css).map((x) => Math.round(x * 255));
+        const [r, g, b, a] = parseColor(css).map((x) => Math.round(x * 255));
         return ((a << 24) | (b << 16) | (g << 8) | r) >>> 0;  // little-endian RGBA bytes
       });
       const packed = new Uint32Array(3 * this.triangleCount);
@@ -310,10 +310,10 @@ export class GlMesh {
         packed[3 * s] = w; packed[3 * s + 1] = w; packed[3 * s + 2] = w;
       }
       const gl = this.gl;
-      gl.bindBuffer(gl.ARRAY_BUFFER, this.colours);
+      gl.bindBuffer(gl.ARRAY_BUFFER, this.colors);
       gl.bufferData(gl.ARRAY_BUFFER, packed, gl.STATIC_DRAW);
     }
-    this.uploadOverview(rasterizeOverview(this.source, this.overviewBox(), palette, classes, edgeColour), true);
+    this.uploadOverview(rasterizeOverview(this.source, this.overviewBox(), palette, classes, edgeColor), true);
   }
 
   /** Device pixels per world unit when the mesh's box fills the canvas. */
@@ -382,17 +382,17 @@ export class GlMesh {
   }
 
   /**
-   * One frame: background, grid lines ([{ lines: Float32Array of world segments, colour }]), the
+   * One frame: background, grid lines ([{ lines: Float32Array of world segments, color }]), the
    * overview and the triangles in view. `view` is the page's View; `alpha` dims the mesh.
    */
-  draw(view, dpr, { background, grid, edgeColour, alpha = 1 }) {
+  draw(view, dpr, { background, grid, edgeColor, alpha = 1 }) {
     const gl = this.gl;
-    const [br, bg, bb] = parseColour(background);
+    const [br, bg, bb] = parseColor(background);
     gl.viewport(0, 0, this.canvas.width, this.canvas.height);
     gl.clearColor(br, bg, bb, 1);
     gl.clear(gl.COLOR_BUFFER_BIT);
     gl.enable(gl.BLEND);
-    // Colours blend over what is there; the canvas's alpha stays 1 (it is composited as
+    // Colors blend over what is there; the canvas's alpha stays 1 (it is composited as
     // premultiplied: an alpha below 1 would wash a dimmed mesh out towards white).
     gl.blendFuncSeparate(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA, gl.ZERO, gl.ONE);
     const sx = (2 * view.scale) / view.width;
@@ -405,7 +405,7 @@ export class GlMesh {
     gl.uniform2f(m.offset, ...offset);
     gl.uniform1f(m.alpha, 1);
     gl.uniform1i(m.lines, 1);
-    for (const { lines, colour } of grid) this.drawGrid(lines, colour);
+    for (const { lines, color } of grid) this.drawGrid(lines, color);
     this.drawnTriangles = 0;
     this.overviewUsed = false;
     if (this.triangleCount === 0) return;
@@ -425,13 +425,13 @@ export class GlMesh {
     gl.useProgram(m.program);
     gl.uniform1i(m.lines, 0);
     gl.uniform1f(m.alpha, alpha);
-    gl.uniform4f(m.edge, ...parseColour(edgeColour));
+    gl.uniform4f(m.edge, ...parseColor(edgeColor));
     gl.bindVertexArray(this.fills);
     for (const { start, count } of ranges) gl.drawArrays(gl.TRIANGLES, 3 * start, 3 * count);
     gl.bindVertexArray(null);
   }
 
-  drawGrid(lines, colour) {
+  drawGrid(lines, color) {
     const gl = this.gl;
     if (lines.length === 0) return;
     const [ox, oy] = this.origin;
@@ -439,7 +439,7 @@ export class GlMesh {
     for (let i = 0; i < lines.length; i += 2) { relative[i] = lines[i] - ox; relative[i + 1] = lines[i + 1] - oy; }
     gl.bindBuffer(gl.ARRAY_BUFFER, this.gridPositions);
     gl.bufferData(gl.ARRAY_BUFFER, relative, gl.DYNAMIC_DRAW);
-    gl.uniform4f(this.mesh.edge, ...parseColour(colour));
+    gl.uniform4f(this.mesh.edge, ...parseColor(color));
     gl.bindVertexArray(this.gridArray);
     gl.drawArrays(gl.LINES, 0, relative.length / 2);
   }

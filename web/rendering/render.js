@@ -1,6 +1,6 @@
 // Canvas 2D rendering of the drawing and its mesh.
 //
-// Speed: the mesh's paths are built once per mesh in world coordinates (one Path2D per colour
+// Speed: the mesh's paths are built once per mesh in world coordinates (one Path2D per color
 // class, one for all edges) and drawn under the view's transform, so panning and zooming only
 // replay them. Beyond LARGE_MESH triangles, per-triangle fills cost more than they show: only
 // the edges are drawn, as one path.
@@ -9,7 +9,7 @@ import { GlMesh } from './gl-mesh.js';
 import { EXEMPTION_LABELS } from '../labels.js';
 import { curveMarkers } from '../model/curve-data.js';
 import { drawCurves } from './curve-draw.js';
-import { ANGLE_CLASSES, COLOURS, REGION_COLOURS, markerColour } from './colours.js';
+import { ANGLE_CLASSES, COLORS, REGION_COLORS, markerColor } from './colors.js';
 
 const MARKER_LABELS_UP_TO = 300;  // segment markers are written beside their segments up to this many segments
 
@@ -17,10 +17,10 @@ export const LARGE_MESH = 200_000;
 /** Vertex numbers are drawn for meshes of up to this many vertices (more would not be legible). */
 export const VERTEX_NUMBERS_UP_TO = 1000;
 
-/** Legend rows of the segment markers of a drawing: [{ colour, label }]. */
+/** Legend rows of the segment markers of a drawing: [{ color, label }]. */
 export function markerLegend(drawing) {
   const values = [...new Set([...(drawing.segmentMarkers ?? []), ...curveMarkers(drawing)])].filter((m) => m !== 0).sort((a, b) => a - b);
-  return values.map((m) => ({ colour: markerColour(m), label: `segment marker ${m}` }));
+  return values.map((m) => ({ color: markerColor(m), label: `segment marker ${m}` }));
 }
 
 function angleClass(angle) {
@@ -31,23 +31,23 @@ function angleClass(angle) {
 /** Legend rows of the exemptions marked on the canvas (the core's mesh.triangleExemptions). */
 export function exemptionLegend(exemptions) {
   const rows = [];
-  if (exemptions?.nestled.length) rows.push({ colour: COLOURS.exempt, label: EXEMPTION_LABELS.SMALL_INPUT_ANGLE.legend, hatched: true });
-  if (exemptions?.seditious.length) rows.push({ colour: COLOURS.seditious, label: EXEMPTION_LABELS.SEDITIOUS_EDGE.legend });
+  if (exemptions?.nestled.length) rows.push({ color: COLORS.exempt, label: EXEMPTION_LABELS.SMALL_INPUT_ANGLE.legend, hatched: true });
+  if (exemptions?.seditious.length) rows.push({ color: COLORS.seditious, label: EXEMPTION_LABELS.SEDITIOUS_EDGE.legend });
   return rows;
 }
 
-/** Legend rows for a colour mode: [{ colour, label }]. */
+/** Legend rows for a color mode: [{ color, label }]. */
 export function legendEntries(mode, mesh) {
   if (mode === 'angle') {
     let lower = 0;
-    return ANGLE_CLASSES.map(([upper, colour]) => {
+    return ANGLE_CLASSES.map(([upper, color]) => {
       const label = `${lower}°–${Math.round(upper)}°`;
       lower = Math.round(upper);
-      return { colour, label };
+      return { color, label };
     });
   }
   if (mode === 'region' && mesh) {
-    return regionValues(mesh).map((value, i) => ({ colour: REGION_COLOURS[i % REGION_COLOURS.length], label: `attribute ${value}` }));
+    return regionValues(mesh).map((value, i) => ({ color: REGION_COLORS[i % REGION_COLORS.length], label: `attribute ${value}` }));
   }
   return [];
 }
@@ -59,10 +59,10 @@ function regionValues(mesh) {
 let ANGLE_TABLE = null;
 
 /**
- * The fill of every triangle for a colour mode, as the legend states it: a palette of CSS colours
+ * The fill of every triangle for a color mode, as the legend states it: a palette of CSS colors
  * and the palette index of triangle t.
  */
-export function triangleColouring(mode, mesh, minAngle) {
+export function triangleColoring(mode, mesh, minAngle) {
   if (mode === 'angle') {
     // A table by hundredths of a degree (every class bound is a multiple of 0.01°): no search.
     const table = ANGLE_TABLE ?? (ANGLE_TABLE = Uint8Array.from({ length: 6001 }, (_, k) => angleClass(k / 100)));
@@ -74,7 +74,7 @@ export function triangleColouring(mode, mesh, minAngle) {
     const values = regionValues(mesh);
     const index = new Map(values.map((v, i) => [v, i]));
     const attributes = mesh.triangleAttributes;
-    return { palette: values.map((v, i) => REGION_COLOURS[i % REGION_COLOURS.length]), classOf: (t) => index.get(attributes[t]) };
+    return { palette: values.map((v, i) => REGION_COLORS[i % REGION_COLORS.length]), classOf: (t) => index.get(attributes[t]) };
   }
   return { palette: ['#eef2f8'], classOf: () => 0 };
 }
@@ -96,7 +96,7 @@ export class Renderer {
     this.ctx = canvas.getContext('2d');
     this.dpr = 1;
     this.mesh = null;
-    this.cache = null;  // paths of the current mesh for the current colour mode
+    this.cache = null;  // paths of the current mesh for the current color mode
     this.minAngle = null;  // per-triangle smallest angle
     this.gl = glCanvas ? GlMesh.create(glCanvas) : null;  // null: the mesh is drawn in 2D
     this.onReady = null;  // called when a large mesh's triangles reached the GPU (draw again)
@@ -132,7 +132,7 @@ export class Renderer {
   setMesh(mesh) {
     this.mesh = mesh;
     this.cache = null;
-    // The 2D path colours from the array; WebGL asks triangle by triangle (triangleColouring).
+    // The 2D path colors from the array; WebGL asks triangle by triangle (triangleColoring).
     this.minAngle = mesh && !this.gl ? minAngles(mesh) : null;
     this.gl?.setMesh(mesh, () => this.onReady?.());
   }
@@ -159,24 +159,24 @@ export class Renderer {
   drawGl(s) {
     const { view } = s;
     if (this.mesh) {
-      const { palette, classOf } = triangleColouring(s.colorMode, this.mesh, this.minAngle);
-      this.gl.setColours(`${s.colorMode}:${palette.join()}`, palette, classOf, COLOURS.edge);
+      const { palette, classOf } = triangleColoring(s.colorMode, this.mesh, this.minAngle);
+      this.gl.setColors(`${s.colorMode}:${palette.join()}`, palette, classOf, COLORS.edge);
     }
     const grid = [];
     const b = view.visibleBounds();
     const step = view.gridStep();
-    const lines = (every, colour) => {
+    const lines = (every, color) => {
       const xy = [];
       for (let x = Math.ceil(b.minX / every) * every; x <= b.maxX; x += every) xy.push(x, b.minY, x, b.maxY);
       for (let y = Math.ceil(b.minY / every) * every; y <= b.maxY; y += every) xy.push(b.minX, y, b.maxX, y);
-      grid.push({ lines: new Float32Array(xy), colour });
+      grid.push({ lines: new Float32Array(xy), color });
     };
     if (s.grid !== false) {
-      if (s.snap) lines(step, COLOURS.grid);
-      lines(step * 5, COLOURS.gridStrong);
+      if (s.snap) lines(step, COLORS.grid);
+      lines(step * 5, COLORS.gridStrong);
     }
     const alpha = this.mesh && s.step && !this.showsStep(s.step) ? 0.35 : 1;
-    this.gl.draw(view, this.dpr, { background: COLOURS.background, grid, edgeColour: COLOURS.edge, alpha });
+    this.gl.draw(view, this.dpr, { background: COLORS.background, grid, edgeColor: COLORS.edge, alpha });
   }
 
   buildPaths(mode) {
@@ -184,7 +184,7 @@ export class Renderer {
     const tri = mesh.triangles;
     const p = mesh.points;
     const n = tri.length / 3;
-    const fills = [];  // [{ colour, path }]
+    const fills = [];  // [{ color, path }]
     const large = n > LARGE_MESH;
     // No closePath(): fill() closes every subpath anyway, and Chromium's Path2D.closePath()
     // takes time proportional to the path's length (quadratic over a mesh: 20 s for 80k).
@@ -197,20 +197,20 @@ export class Renderer {
     if (!large && mode === 'angle') {
       const paths = ANGLE_CLASSES.map(() => new Path2D());
       for (let t = 0; t < n; t++) addTriangle(paths[angleClass(this.minAngle[t])], t);
-      ANGLE_CLASSES.forEach(([, colour], c) => fills.push({ colour, path: paths[c] }));
+      ANGLE_CLASSES.forEach(([, color], c) => fills.push({ color, path: paths[c] }));
     } else if (!large && mode === 'region') {
       const values = regionValues(mesh);
       const index = new Map(values.map((v, i) => [v, i]));
       const paths = values.map(() => new Path2D());
       for (let t = 0; t < n; t++) addTriangle(paths[index.get(mesh.triangleAttributes[t])], t);
-      values.forEach((v, i) => fills.push({ colour: REGION_COLOURS[i % REGION_COLOURS.length], path: paths[i] }));
+      values.forEach((v, i) => fills.push({ color: REGION_COLORS[i % REGION_COLORS.length], path: paths[i] }));
     } else if (!large) {
       const path = new Path2D();
       for (let t = 0; t < n; t++) addTriangle(path, t);
-      fills.push({ colour: '#eef2f8', path });
+      fills.push({ color: '#eef2f8', path });
     }
     // Every interior edge is shared by two triangles: draw it once (from the triangle with the
-    // smaller index, or when there is no neighbour).
+    // smaller index, or when there is no neighbor).
     const edges = new Path2D();
     for (let t = 0; t < n; t++) {
       for (let e = 0; e < 3; e++) {
@@ -241,7 +241,7 @@ export class Renderer {
       ctx.clearRect(0, 0, this.canvas.width, this.canvas.height);
       this.drawGl(s);
     } else {
-      ctx.fillStyle = COLOURS.background;
+      ctx.fillStyle = COLORS.background;
       ctx.fillRect(0, 0, this.canvas.width, this.canvas.height);
     }
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
@@ -254,7 +254,7 @@ export class Renderer {
     if (this.mesh && this.gl) {
       if (s.hoverTriangle >= 0 && s.hoverTriangle < this.mesh.triangles.length / 3) {
         world();
-        ctx.strokeStyle = COLOURS.hover;
+        ctx.strokeStyle = COLORS.hover;
         ctx.lineWidth = 2.5 * px;
         ctx.stroke(this.trianglePath(s.hoverTriangle));
         screen();
@@ -265,16 +265,16 @@ export class Renderer {
       // Step mode: the mesh is that of the step (StepReplay); dimmed only while it is still on
       // its way, when the picture under the event is the previous step's.
       ctx.globalAlpha = s.step && !this.showsStep(s.step) ? 0.35 : 1;
-      for (const { colour, path } of this.cache.fills) {
-        ctx.fillStyle = colour;
+      for (const { color, path } of this.cache.fills) {
+        ctx.fillStyle = color;
         ctx.fill(path);
       }
-      ctx.strokeStyle = COLOURS.edge;
+      ctx.strokeStyle = COLORS.edge;
       ctx.lineWidth = (this.cache.large ? 0.5 : 0.8) * px;
       ctx.stroke(this.cache.edges);
       ctx.globalAlpha = 1;
       if (s.hoverTriangle >= 0 && s.hoverTriangle < this.mesh.triangles.length / 3) {
-        ctx.strokeStyle = COLOURS.hover;
+        ctx.strokeStyle = COLORS.hover;
         ctx.lineWidth = 2.5 * px;
         ctx.stroke(this.trianglePath(s.hoverTriangle));
       }
@@ -324,13 +324,13 @@ export class Renderer {
       const nestled = path(x.nestled, (v) => view.toScreen(p[2 * v], p[2 * v + 1]));
       ctx.fillStyle = this.hatch();
       ctx.fill(nestled);
-      ctx.strokeStyle = COLOURS.exempt;
+      ctx.strokeStyle = COLORS.exempt;
       ctx.lineWidth = 1.2;
       ctx.stroke(nestled);
     }
     world();
     if (x.seditious.length) {
-      ctx.strokeStyle = COLOURS.seditious;
+      ctx.strokeStyle = COLORS.seditious;
       ctx.lineWidth = 1.2 * px;
       ctx.setLineDash([4 * px, 3 * px]);
       ctx.stroke(path(x.seditious, (v) => ({ x: p[2 * v], y: p[2 * v + 1] })));
@@ -353,7 +353,7 @@ export class Renderer {
       const tile = document.createElement('canvas');
       tile.width = 8; tile.height = 8;
       const t = tile.getContext('2d');
-      t.strokeStyle = COLOURS.exempt;
+      t.strokeStyle = COLORS.exempt;
       t.lineWidth = 1.5;
       t.beginPath(); t.moveTo(0, 8); t.lineTo(8, 0); t.moveTo(-2, 2); t.lineTo(2, -2); t.moveTo(6, 10); t.lineTo(10, 6); t.stroke();
       this.hatchPattern = this.ctx.createPattern(tile, 'repeat');
@@ -376,7 +376,7 @@ export class Renderer {
         const sy = Math.round(view.toScreen(0, y).y) + 0.5;
         ctx.moveTo(0, sy); ctx.lineTo(view.width, sy);
       }
-      ctx.strokeStyle = strong ? COLOURS.gridStrong : COLOURS.grid;
+      ctx.strokeStyle = strong ? COLORS.gridStrong : COLORS.grid;
       ctx.lineWidth = 1;
       ctx.stroke();
     };
@@ -398,7 +398,7 @@ export class Renderer {
       const a = d.segments[2 * k]; const b = d.segments[2 * k + 1];
       const q = view.toScreen((d.points[2 * a] + d.points[2 * b]) / 2, (d.points[2 * a + 1] + d.points[2 * b + 1]) / 2);
       ctx.strokeStyle = '#fff'; ctx.lineWidth = 3; ctx.strokeText(String(marker), q.x, q.y);
-      ctx.fillStyle = markerColour(marker); ctx.fillText(String(marker), q.x, q.y);
+      ctx.fillStyle = markerColor(marker); ctx.fillText(String(marker), q.x, q.y);
     }
   }
 
@@ -409,31 +409,31 @@ export class Renderer {
     const selected = (kind, index) => s.selection?.kind === kind && s.selection.index === index;
     const hovered = (kind, index) => s.hoverItem?.kind === kind && s.hoverItem.index === index;
 
-    // Input segments, bold, in their marker's colour (black: no marker).
+    // Input segments, bold, in their marker's color (black: no marker).
     world();
     const markers = d.segmentMarkers ?? [];
-    const byColour = new Map();
+    const byColor = new Map();
     for (let k = 0; k < d.segments.length; k += 2) {
       const a = d.segments[k]; const b = d.segments[k + 1];
-      const colour = markerColour(markers[k / 2] ?? 0);
-      if (!byColour.has(colour)) byColour.set(colour, new Path2D());
-      byColour.get(colour).moveTo(d.points[2 * a], d.points[2 * a + 1]);
-      byColour.get(colour).lineTo(d.points[2 * b], d.points[2 * b + 1]);
+      const color = markerColor(markers[k / 2] ?? 0);
+      if (!byColor.has(color)) byColor.set(color, new Path2D());
+      byColor.get(color).moveTo(d.points[2 * a], d.points[2 * a + 1]);
+      byColor.get(color).lineTo(d.points[2 * b], d.points[2 * b + 1]);
     }
     ctx.lineWidth = 2.5 * px;
     ctx.lineCap = 'round';
-    for (const [colour, path] of byColour) {
-      ctx.strokeStyle = colour;
+    for (const [color, path] of byColor) {
+      ctx.strokeStyle = color;
       ctx.stroke(path);
     }
-    for (const [kind, colour] of [['segment', COLOURS.selected], ['segment-hover', COLOURS.hover]]) {
+    for (const [kind, color] of [['segment', COLORS.selected], ['segment-hover', COLORS.hover]]) {
       const item = kind === 'segment' ? s.selection : s.hoverItem;
       if (item?.kind !== 'segment') continue;
       const a = d.segments[2 * item.index]; const b = d.segments[2 * item.index + 1];
       ctx.beginPath();
       ctx.moveTo(d.points[2 * a], d.points[2 * a + 1]);
       ctx.lineTo(d.points[2 * b], d.points[2 * b + 1]);
-      ctx.strokeStyle = colour;
+      ctx.strokeStyle = color;
       ctx.lineWidth = 4 * px;
       ctx.stroke();
     }
@@ -447,12 +447,12 @@ export class Renderer {
       const to = view.toScreen(s.pendingChain.to.x, s.pendingChain.to.y);
       ctx.setLineDash([6, 4]);
       ctx.beginPath(); ctx.moveTo(from.x, from.y); ctx.lineTo(to.x, to.y);
-      ctx.strokeStyle = COLOURS.hover; ctx.lineWidth = 1.5; ctx.stroke();
+      ctx.strokeStyle = COLORS.hover; ctx.lineWidth = 1.5; ctx.stroke();
       ctx.setLineDash([]);
       if (s.pendingChain.first !== undefined && s.pendingChain.first !== s.pendingChain.from) {
         const first = view.toScreen(d.points[2 * s.pendingChain.first], d.points[2 * s.pendingChain.first + 1]);
         ctx.beginPath(); ctx.arc(first.x, first.y, 9, 0, 2 * Math.PI);
-        ctx.strokeStyle = COLOURS.hover; ctx.lineWidth = 1.5; ctx.stroke();
+        ctx.strokeStyle = COLORS.hover; ctx.lineWidth = 1.5; ctx.stroke();
       }
     }
 
@@ -462,12 +462,12 @@ export class Renderer {
       ctx.beginPath();
       ctx.moveTo(c.x - 10, c.y); ctx.lineTo(c.x + 10, c.y);
       ctx.moveTo(c.x, c.y - 10); ctx.lineTo(c.x, c.y + 10);
-      ctx.strokeStyle = COLOURS.hover; ctx.lineWidth = 2; ctx.stroke();
+      ctx.strokeStyle = COLORS.hover; ctx.lineWidth = 2; ctx.stroke();
     }
 
     // Points.
     const many = d.points.length / 2 > 5000;
-    ctx.fillStyle = COLOURS.point;
+    ctx.fillStyle = COLORS.point;
     ctx.beginPath();
     for (let i = 0; i < d.points.length / 2; i++) {
       const q = view.toScreen(d.points[2 * i], d.points[2 * i + 1]);
@@ -475,14 +475,14 @@ export class Renderer {
       else { ctx.moveTo(q.x + 3.5, q.y); ctx.arc(q.x, q.y, 3.5, 0, 2 * Math.PI); }
     }
     ctx.fill();
-    const ring = (x, y, colour, r = 7) => {
+    const ring = (x, y, color, r = 7) => {
       const q = view.toScreen(x, y);
       ctx.beginPath(); ctx.arc(q.x, q.y, r, 0, 2 * Math.PI);
-      ctx.strokeStyle = colour; ctx.lineWidth = 2; ctx.stroke();
+      ctx.strokeStyle = color; ctx.lineWidth = 2; ctx.stroke();
     };
     for (const item of [s.hoverItem, s.selection]) {
       if (item?.kind !== 'point' || item.index >= d.points.length / 2) continue;
-      ring(d.points[2 * item.index], d.points[2 * item.index + 1], item === s.selection ? COLOURS.selected : COLOURS.hover);
+      ring(d.points[2 * item.index], d.points[2 * item.index + 1], item === s.selection ? COLORS.selected : COLORS.hover);
     }
 
     // Hole seeds: a red cross in a circle.
@@ -493,8 +493,8 @@ export class Renderer {
       ctx.fillStyle = '#fff'; ctx.fill();
       ctx.moveTo(q.x - 4, q.y - 4); ctx.lineTo(q.x + 4, q.y + 4);
       ctx.moveTo(q.x + 4, q.y - 4); ctx.lineTo(q.x - 4, q.y + 4);
-      ctx.strokeStyle = COLOURS.hole; ctx.lineWidth = 2; ctx.stroke();
-      if (selected('hole', i) || hovered('hole', i)) ring(d.holes[2 * i], d.holes[2 * i + 1], selected('hole', i) ? COLOURS.selected : COLOURS.hover, 11);
+      ctx.strokeStyle = COLORS.hole; ctx.lineWidth = 2; ctx.stroke();
+      if (selected('hole', i) || hovered('hole', i)) ring(d.holes[2 * i], d.holes[2 * i + 1], selected('hole', i) ? COLORS.selected : COLORS.hover, 11);
     }
 
     // Region seeds: a violet diamond with the attribute (and max area) beside it.
@@ -504,11 +504,11 @@ export class Renderer {
       ctx.beginPath();
       ctx.moveTo(q.x, q.y - 7); ctx.lineTo(q.x + 7, q.y); ctx.lineTo(q.x, q.y + 7); ctx.lineTo(q.x - 7, q.y); ctx.closePath();
       ctx.fillStyle = '#fff'; ctx.fill();
-      ctx.strokeStyle = COLOURS.region; ctx.lineWidth = 2; ctx.stroke();
+      ctx.strokeStyle = COLORS.region; ctx.lineWidth = 2; ctx.stroke();
       const label = `${r.attribute ?? 0}${r.maxArea > 0 ? ` ≤${r.maxArea}` : ''}`;
       ctx.lineWidth = 3; ctx.strokeStyle = '#fff'; ctx.strokeText(label, q.x + 10, q.y + 4);
-      ctx.fillStyle = COLOURS.region; ctx.fillText(label, q.x + 10, q.y + 4);
-      if (selected('region', i) || hovered('region', i)) ring(r.x, r.y, selected('region', i) ? COLOURS.selected : COLOURS.hover, 11);
+      ctx.fillStyle = COLORS.region; ctx.fillText(label, q.x + 10, q.y + 4);
+      if (selected('region', i) || hovered('region', i)) ring(r.x, r.y, selected('region', i) ? COLORS.selected : COLORS.hover, 11);
     });
   }
 
@@ -549,7 +549,7 @@ export class Renderer {
       if (!Number.isFinite(notice.x) || !Number.isFinite(notice.y) || notice.kind === 'NOTHING_ENCLOSED') continue;
       const q = view.toScreen(notice.x, notice.y);
       ctx.beginPath(); ctx.arc(q.x, q.y, 10, 0, 2 * Math.PI);
-      ctx.strokeStyle = COLOURS.notice; ctx.lineWidth = 2.5; ctx.stroke();
+      ctx.strokeStyle = COLORS.notice; ctx.lineWidth = 2.5; ctx.stroke();
     }
   }
 }

@@ -64,7 +64,7 @@ export function describeCurveSplit(events, e, context, where, triangle) {
  * (dashed) and the chord's diametral disk (the core tests curve pieces against the disk whatever
  * the encroachment option). `p`: the points before the event. Returns false when e split no curve.
  */
-export function drawCurveSplit(ctx, p, events, e, context, colour, world, screen, px) {
+export function drawCurveSplit(ctx, p, events, e, context, color, world, screen, px) {
   const k = curveOfEvent(events, e, context);
   if (k === null) return false;
   const c = context.curves[k];
@@ -73,7 +73,7 @@ export function drawCurveSplit(ctx, p, events, e, context, colour, world, screen
   const b = [p[2 * events.b[e]], p[2 * events.b[e] + 1]];
   const ta = parameterOf(shape, ...a), tb = parameterOf(shape, ...b);
   world();
-  ctx.strokeStyle = colour;
+  ctx.strokeStyle = color;
   ctx.beginPath();
   tracePath(ctx, shape, Math.min(ta, tb), Math.max(ta, tb));
   ctx.lineWidth = 5 * px;

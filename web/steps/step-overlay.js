@@ -4,9 +4,9 @@ import { EventKind } from '../../wasm/index.js';
 import { circumcircle, insertionsBefore, pointsAtStep, splitShell } from '../geometry/event-geometry.js';
 import { drawCurveSplit } from './curve-events.js';
 
-// Pink for what the event did, blue for what it answered to; neither is among the angle colours
-// (render.js), and the new triangles are hatched, not filled, so their angle colours show through.
-export const STEP_COLOURS = {
+// Pink for what the event did, blue for what it answered to; neither is among the angle colors
+// (render.js), and the new triangles are hatched, not filled, so their angle colors show through.
+export const STEP_COLORS = {
   step: '#d6336c',
   stepSecondary: '#1d4ed8',
   newVertex: '#d6336c',
@@ -19,8 +19,8 @@ export function encroachmentAngle(context) {
 }
 
 const svg = (body) => `<svg width="22" height="16" viewBox="0 0 22 16" aria-hidden="true">${body}</svg>`;
-const P = STEP_COLOURS.step;
-const B = STEP_COLOURS.stepSecondary;
+const P = STEP_COLORS.step;
+const B = STEP_COLORS.stepSecondary;
 
 /**
  * The legend of the overlay (every symbol drawStep draws), the encroachment region named as the
@@ -92,59 +92,59 @@ export function drawStep(ctx, mesh, step, view, world, screen, px) {
   const at = (v) => view.toScreen(p[2 * v], p[2 * v + 1]);
   if (showsStep(step, mesh)) drawNewTriangles(ctx, step.shown, events.vertex[e], world, screen, px);
 
-  const circle = (cx, cy, r, colour) => {
+  const circle = (cx, cy, r, color) => {
     world();
     ctx.beginPath(); ctx.arc(cx, cy, r, 0, 2 * Math.PI);
-    ctx.strokeStyle = colour; ctx.lineWidth = 1.5 * px; ctx.setLineDash([6 * px, 4 * px]); ctx.stroke();
+    ctx.strokeStyle = color; ctx.lineWidth = 1.5 * px; ctx.setLineDash([6 * px, 4 * px]); ctx.stroke();
     ctx.setLineDash([]);
     screen();
   };
-  const line = (a, b, colour, width) => {
+  const line = (a, b, color, width) => {
     const qa = at(a); const qb = at(b);
     ctx.beginPath(); ctx.moveTo(qa.x, qa.y); ctx.lineTo(qb.x, qb.y);
-    ctx.strokeStyle = colour; ctx.lineWidth = width; ctx.stroke();
+    ctx.strokeStyle = color; ctx.lineWidth = width; ctx.stroke();
   };
   // The triangle split is gone from this step's mesh: drawn as an outline where it was.
-  const triangle = (colour) => {
+  const triangle = (color) => {
     const [i, j, k] = [events.triangle[3 * e], events.triangle[3 * e + 1], events.triangle[3 * e + 2]];
     const qi = at(i); const qj = at(j); const qk = at(k);
     ctx.beginPath(); ctx.moveTo(qi.x, qi.y); ctx.lineTo(qj.x, qj.y); ctx.lineTo(qk.x, qk.y); ctx.closePath();
-    ctx.strokeStyle = colour; ctx.lineWidth = 2.5; ctx.setLineDash([5, 3]); ctx.stroke(); ctx.setLineDash([]);
+    ctx.strokeStyle = color; ctx.lineWidth = 2.5; ctx.setLineDash([5, 3]); ctx.stroke(); ctx.setLineDash([]);
     const c = circumcircle(p, i, j, k);
-    if (c) circle(c.x, c.y, c.r, colour);
+    if (c) circle(c.x, c.y, c.r, color);
   };
-  const subsegment = (colour) => {
+  const subsegment = (color) => {
     const a = events.a[e]; const b = events.b[e];
-    line(a, b, colour, 4);
-    encroachmentRegion(ctx, p, a, b, encroachmentAngle(step.context), colour, world, screen, px);
+    line(a, b, color, 4);
+    encroachmentRegion(ctx, p, a, b, encroachmentAngle(step.context), color, world, screen, px);
   };
-  const marker = (x, y, colour, r = 6) => {
+  const marker = (x, y, color, r = 6) => {
     const q = view.toScreen(x, y);
     ctx.beginPath(); ctx.arc(q.x, q.y, r, 0, 2 * Math.PI);
-    ctx.fillStyle = colour; ctx.fill();
+    ctx.fillStyle = color; ctx.fill();
     ctx.strokeStyle = '#fff'; ctx.lineWidth = 2; ctx.stroke();
   };
 
   const kind = events.kind[e];
   // A curve's piece split: the stretch of curve, its chord and the chord's disk, instead of the subsegment's.
-  const curve = drawCurveSplit(ctx, p, events, e, step.context, STEP_COLOURS.step, world, screen, px);
+  const curve = drawCurveSplit(ctx, p, events, e, step.context, STEP_COLORS.step, world, screen, px);
   if (kind === EventKind.SEGMENT_SPLIT) {
-    if (!curve) subsegment(STEP_COLOURS.step);
+    if (!curve) subsegment(STEP_COLORS.step);
     // A concentric-shell split (§6.6): the shell around the corner vertex, through the new vertex.
     const shell = curve ? null : splitShell(events, e, p);
-    if (shell !== null) circle(p[2 * shell.center], p[2 * shell.center + 1], shell.radius, STEP_COLOURS.stepSecondary);
+    if (shell !== null) circle(p[2 * shell.center], p[2 * shell.center + 1], shell.radius, STEP_COLORS.stepSecondary);
     const by = events.by[e];
-    if (by >= 0) marker(p[2 * by], p[2 * by + 1], STEP_COLOURS.stepSecondary, 5);  // the encroaching vertex
+    if (by >= 0) marker(p[2 * by], p[2 * by + 1], STEP_COLORS.stepSecondary, 5);  // the encroaching vertex
   } else if (kind === EventKind.CIRCUMCENTER || kind === EventKind.OFF_CENTER) {
-    triangle(STEP_COLOURS.step);
+    triangle(STEP_COLORS.step);
   } else if (kind === EventKind.PETAL_POINT || kind === EventKind.OPTIMAL_POINT) {  // a diamond round the point chosen
-    triangle(STEP_COLOURS.step);
+    triangle(STEP_COLORS.step);
     const q = view.toScreen(events.xy[2 * e], events.xy[2 * e + 1]);
     ctx.beginPath();
     ctx.moveTo(q.x, q.y - 12); ctx.lineTo(q.x + 12, q.y); ctx.lineTo(q.x, q.y + 12); ctx.lineTo(q.x - 12, q.y); ctx.closePath();
-    ctx.strokeStyle = STEP_COLOURS.stepSecondary; ctx.lineWidth = 2.5; ctx.stroke();
+    ctx.strokeStyle = STEP_COLORS.stepSecondary; ctx.lineWidth = 2.5; ctx.stroke();
   } else if (kind === EventKind.RELOCATED) {  // the skinny triangle as it was, and the move
-    triangle(STEP_COLOURS.stepSecondary);
+    triangle(STEP_COLORS.stepSecondary);
     const from = view.toScreen(events.circumcenter[2 * e], events.circumcenter[2 * e + 1]);
     const to = view.toScreen(events.xy[2 * e], events.xy[2 * e + 1]);
     const angle = Math.atan2(to.y - from.y, to.x - from.x);
@@ -154,19 +154,19 @@ export function drawStep(ctx, mesh, step, view, world, screen, px) {
       ctx.moveTo(to.x, to.y);
       ctx.lineTo(to.x - 10 * Math.cos(angle + side * 0.45), to.y - 10 * Math.sin(angle + side * 0.45));
     }
-    ctx.strokeStyle = STEP_COLOURS.stepSecondary; ctx.lineWidth = 2.5; ctx.stroke();
+    ctx.strokeStyle = STEP_COLORS.stepSecondary; ctx.lineWidth = 2.5; ctx.stroke();
     ctx.beginPath(); ctx.arc(from.x, from.y, 4, 0, 2 * Math.PI);
-    ctx.strokeStyle = STEP_COLOURS.stepSecondary; ctx.lineWidth = 2; ctx.stroke();
+    ctx.strokeStyle = STEP_COLORS.stepSecondary; ctx.lineWidth = 2; ctx.stroke();
   } else if (kind === EventKind.REJECTED) {
-    triangle(STEP_COLOURS.stepSecondary);
-    if (!curve) subsegment(STEP_COLOURS.step);
+    triangle(STEP_COLORS.stepSecondary);
+    if (!curve) subsegment(STEP_COLORS.step);
     const q = view.toScreen(events.circumcenter[2 * e], events.circumcenter[2 * e + 1]);
     ctx.beginPath();
     ctx.moveTo(q.x - 6, q.y - 6); ctx.lineTo(q.x + 6, q.y + 6);
     ctx.moveTo(q.x + 6, q.y - 6); ctx.lineTo(q.x - 6, q.y + 6);
-    ctx.strokeStyle = STEP_COLOURS.stepSecondary; ctx.lineWidth = 3; ctx.stroke();
+    ctx.strokeStyle = STEP_COLORS.stepSecondary; ctx.lineWidth = 3; ctx.stroke();
   }
-  marker(events.xy[2 * e], events.xy[2 * e + 1], STEP_COLOURS.newVertex, 6);
+  marker(events.xy[2 * e], events.xy[2 * e + 1], STEP_COLORS.newVertex, 6);
   // The numbers the event's text names, whether or not every vertex is numbered.
   const named = kind === EventKind.SEGMENT_SPLIT ? [events.a[e], events.b[e], events.by[e]]
     : [events.triangle[3 * e], events.triangle[3 * e + 1], events.triangle[3 * e + 2],
@@ -196,7 +196,7 @@ export function placeLabels(labels, gap = 4) {
 }
 
 /**
- * Vertex numbers beside the given vertices (a white halo keeps them legible over any colour), the
+ * Vertex numbers beside the given vertices (a white halo keeps them legible over any color), the
  * first given first; where they crowd, a later one moves to another corner or is left out.
  */
 function labelVertices(ctx, ids, p, view) {
@@ -220,9 +220,9 @@ function labelVertices(ctx, ids, p, view) {
 /**
  * The region of points that encroach subsegment ab: those that see it at `angle` degrees or more.
  * 90: the diametral disk; above: the lens, two arcs of circles of radius |ab| / (2 sin angle)
- * through a and b, their centres |cos angle| times that radius from the midpoint on either side.
+ * through a and b, their centers |cos angle| times that radius from the midpoint on either side.
  */
-export function encroachmentRegion(ctx, p, a, b, angle, colour, world, screen, px) {
+export function encroachmentRegion(ctx, p, a, b, angle, color, world, screen, px) {
   const ax = p[2 * a]; const ay = p[2 * a + 1];
   const dx = p[2 * b] - ax; const dy = p[2 * b + 1] - ay;
   const length = Math.hypot(dx, dy);
@@ -231,12 +231,12 @@ export function encroachmentRegion(ctx, p, a, b, angle, colour, world, screen, p
   const phi = (angle * Math.PI) / 180;
   const r = length / (2 * Math.sin(phi));
   const h = r * Math.abs(Math.cos(phi));
-  const half = Math.PI - phi;  // half the angle the arc spans at its centre
+  const half = Math.PI - phi;  // half the angle the arc spans at its center
   const normal = Math.atan2(dx, -dy);  // (−dy, dx) / length: the normal's direction
   world();
-  ctx.strokeStyle = colour; ctx.lineWidth = 1.5 * px; ctx.setLineDash([6 * px, 4 * px]);
+  ctx.strokeStyle = color; ctx.lineWidth = 1.5 * px; ctx.setLineDash([6 * px, 4 * px]);
   for (const side of [1, -1]) {
-    // The arc on this side of ab belongs to the circle centred on the other side.
+    // The arc on this side of ab belongs to the circle centered on the other side.
     const cx = mx - side * h * Math.cos(normal); const cy = my - side * h * Math.sin(normal);
     const towards = side === 1 ? normal : normal + Math.PI;
     ctx.beginPath(); ctx.arc(cx, cy, r, towards - half, towards + half); ctx.stroke();
@@ -253,18 +253,18 @@ function drawConsidered(ctx, step, view, world, screen, px) {
   const [i, j, k] = [events.triangle[3 * e], events.triangle[3 * e + 1], events.triangle[3 * e + 2]];
   const q = [i, j, k].map((v) => view.toScreen(p[2 * v], p[2 * v + 1]));
   ctx.beginPath(); ctx.moveTo(q[0].x, q[0].y); ctx.lineTo(q[1].x, q[1].y); ctx.lineTo(q[2].x, q[2].y); ctx.closePath();
-  ctx.strokeStyle = STEP_COLOURS.step; ctx.lineWidth = 2.5; ctx.setLineDash([5, 3]); ctx.stroke(); ctx.setLineDash([]);
+  ctx.strokeStyle = STEP_COLORS.step; ctx.lineWidth = 2.5; ctx.setLineDash([5, 3]); ctx.stroke(); ctx.setLineDash([]);
   const c = circumcircle(p, i, j, k);
   if (!c) return;
   world();
   ctx.beginPath(); ctx.arc(c.x, c.y, c.r, 0, 2 * Math.PI);
-  ctx.strokeStyle = STEP_COLOURS.step; ctx.lineWidth = 1.5 * px; ctx.setLineDash([6 * px, 4 * px]); ctx.stroke(); ctx.setLineDash([]);
+  ctx.strokeStyle = STEP_COLORS.step; ctx.lineWidth = 1.5 * px; ctx.setLineDash([6 * px, 4 * px]); ctx.stroke(); ctx.setLineDash([]);
   screen();
   const at = view.toScreen(c.x, c.y);
   ctx.beginPath(); ctx.arc(at.x, at.y, 6, 0, 2 * Math.PI);
-  ctx.fillStyle = '#fff'; ctx.fill(); ctx.strokeStyle = STEP_COLOURS.step; ctx.lineWidth = 2.5; ctx.stroke();
+  ctx.fillStyle = '#fff'; ctx.fill(); ctx.strokeStyle = STEP_COLORS.step; ctx.lineWidth = 2.5; ctx.stroke();
   ctx.font = 'bold 14px system-ui, sans-serif'; ctx.textAlign = 'left'; ctx.textBaseline = 'bottom';
-  ctx.fillStyle = STEP_COLOURS.step; ctx.fillText('c', at.x + 8, at.y - 6);
+  ctx.fillStyle = STEP_COLORS.step; ctx.fillText('c', at.x + 8, at.y - 6);
 }
 
 /** The triangles of `mesh` around vertex v, filled: what the insertion of v created. */
@@ -285,20 +285,20 @@ function drawNewTriangles(ctx, mesh, v, world, screen, px) {
   pattern.setTransform(ctx.getTransform().inverse());
   ctx.fillStyle = pattern;
   ctx.fill(path);
-  ctx.strokeStyle = STEP_COLOURS.newVertex;
+  ctx.strokeStyle = STEP_COLORS.newVertex;
   ctx.lineWidth = 1.5 * px;
   ctx.stroke(path);
   screen();
 }
 
 let hatchPattern = null;
-/** Diagonal pink lines, 6 pixels apart: the new triangles stay readable over their angle colours. */
+/** Diagonal pink lines, 6 pixels apart: the new triangles stay readable over their angle colors. */
 function hatch(ctx) {
   if (hatchPattern) return hatchPattern.pattern;
   const tile = document.createElement('canvas');
   tile.width = 6; tile.height = 6;
   const t = tile.getContext('2d');
-  t.strokeStyle = STEP_COLOURS.newVertex; t.lineWidth = 1.5;
+  t.strokeStyle = STEP_COLORS.newVertex; t.lineWidth = 1.5;
   t.beginPath(); t.moveTo(-1, 7); t.lineTo(7, -1); t.moveTo(5, 7); t.lineTo(7, 5); t.moveTo(-1, 1); t.lineTo(1, -1); t.stroke();
   hatchPattern = { pattern: ctx.createPattern(tile, 'repeat') };
   return hatchPattern.pattern;
@@ -306,8 +306,8 @@ function hatch(ctx) {
 
 /** The smoothing step: a short line from each vertex's refined place to its smoothed one, ending in a dot. */
 function drawSmoothingMoves(ctx, before, after, view) {
-  ctx.strokeStyle = STEP_COLOURS.step;
-  ctx.fillStyle = STEP_COLOURS.step;
+  ctx.strokeStyle = STEP_COLORS.step;
+  ctx.fillStyle = STEP_COLORS.step;
   ctx.lineWidth = 1.5;
   const n = Math.min(before.length, after.length) / 2;
   for (let v = 0; v < n; v++) {

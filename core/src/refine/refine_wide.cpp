@@ -88,7 +88,7 @@ bool Refiner::slideWideCorner(std::uint32_t v, const BadTriangle& bt) {
   if (!segmentVertexFan(t_, v, slideStar_, ends)) return false;
   const double* u = t_.pt(ends[0]);
   const double* w = t_.pt(ends[1]);
-  double best[2], bestSin2 = -1;
+  double best[2] = {0, 0}, bestSin2 = -1;
   for (double f = 0.15; f < 0.86; f += 0.05) {
     const double x[2] = {u[0] + f * (w[0] - u[0]), u[1] + f * (w[1] - u[1])};
     double worst = 1;
