@@ -102,7 +102,7 @@ test('bad curves and curve options are refused, naming the curve', () => {
   refused({ ...quarterDisk, curves: [{ type: 'arc', from: 1, to: 2 }] }, {}, 'MALFORMED_INPUT', 'curves[0] needs center');
   refused({ ...quarterDisk, curves: [{ type: 'arc', from: 1, to: 7, center: [0, 0] }] }, {}, 'INDEX_OUT_OF_RANGE', 'curve 0');
   refused({ ...quarterDisk, curves: [{ type: 'arc', from: 1, to: 2, center: [0.1, 0] }] }, {}, 'MALFORMED_INPUT', 'curve 0: from and to lie at distances');
-  refused({ ...quarterDisk, curves: [{ type: 'arc', from: 1, to: 2, center: [0, 0] }] }, {}, 'MALFORMED_INPUT', "did you mean 'center'");
+  refused({ ...quarterDisk, curves: [{ type: 'arc', from: 1, to: 2, centre: [0, 0] }] }, {}, 'MALFORMED_INPUT', "did you mean 'center'");
   refused(quarterDisk, { curveTolerance: -1 }, 'INVALID_OPTION', 'curveTolerance');
 });
 

@@ -46,26 +46,6 @@ std::string Refiner::guardMessage(std::uint64_t unmet) const {
          " triangle(s) do not meet the bounds (maxSteiner sets a budget instead)";
 }
 
-std::string Refiner::unreachableMessage(std::uint64_t unmet, double reached) const {
-  const std::string angles = formatSignificant(plan_.requested, 6) +
-                             " degrees is out of reach; the smallest angle reached is " + formatFixed(reached, 2);
-  // The direct attempts (above34/staged.cpp's directPlan) and their caps.
-  const char* direct =
-      secondDirectAttempt(o_)
-          ? " did not complete within sixteen times the triangles of the 33-degree mesh, nor, the second and third "
-            "times (the largest skinny triangles first, and where no point meets the bound the best point below it "
-            "if it beats the off-center by enough), within 128 times (no more than about half a million triangles; "
-            "not tried where that is under twice), nor the fourth time (the best points below the bound, the smallest "
-            "skinny triangles first) within sixteen times"
-          : " did not complete within sixteen times the triangles of the 33-degree mesh";
-  static_assert(kDirectTriangleFactor == 16 && kSecondDirectTriangleFactor == 128 &&
-                    kSecondDirectTriangleCeiling == (1u << 19) && kLargestFirstLeast == 2,
-                "the message names these caps");
-  return std::string("a minimum angle of ") + angles + " degrees (section 6.6's exemptions aside): refining to it directly" + direct + ", and from the 33-degree mesh "
-         "refinement raised the bound a degree at a time until " + pushStop_ + "; this is the best mesh it reached; " + std::to_string(unmet) +
-         " triangle(s) are below the bound";
-}
-
 void Refiner::finish() {
   if (stageDegrees_ != plan_.requested) setBound(plan_.requested);  // judge by the bound asked for
   const Unmet u = countUnmet();
@@ -82,7 +62,7 @@ void Refiner::finish() {
     // exempt, §6.6) stopped on what came after that mesh, say an encroached subsegment whose splits
     // ran into the precision floor: the mesh returned is complete (a single triangle in a
     // 0.86-degree input angle, 1e6 from the origin, with an area bound, was marked unreachable).
-    if (unmet > 0) add(ReasonKind::AngleUnreachable, unmet, unreachableMessage(unmet, out_.reachedAngle));
+    if (unmet > 0) add(ReasonKind::AngleUnreachable, unmet, control_->unreachableMessage(unmet, out_.reachedAngle));
   } else if (budgetHit_ && guardStopped_)
     add(ReasonKind::SteinerBudget, unmet, guardMessage(unmet));
   else if (budgetHit_)

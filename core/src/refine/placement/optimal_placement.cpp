@@ -122,7 +122,7 @@ OptimalPlacement::Result OptimalPlacement::propose(const MeshAccess& mesh, const
 // Without a floor the best point shrinks edges as the off-center does (a scratch build inserting it
 // unfloored made 5.5 times Triangle's triangles at 33 degrees). As the only attempt it completed 255,
 // none of them cracks: along interior segments it cascades even so, hence the second attempt
-// (refine/above34/staged.cpp).
+// (refine/bound_search/bound_search.cpp).
 bool OptimalPlacement::bestBelowBound(const MeshAccess& mesh, const SkinnyTriangle& st, double target[2], Location& loc) {
   edgesOf(mesh.tri, cavity_);
   OptimalPointQuery query = lastQuery_;

@@ -1,13 +1,14 @@
-// refine() itself: directly, as the chapter's loop, or above kStagedAboveDegrees (34 degrees, §6.8)
-// in stages (above34/bound_push.h): the 33-degree mesh first, then direct attempts at the requested
+// searchBound (bound_search.h): the 33-degree mesh first, then direct attempts at the requested
 // bound (directPlan), else the push from the 33-degree mesh (pushPlan); refineStaged takes that way,
-// replayStaged replays its first k steps under a smaller Steiner budget. The loop they run is
-// Refiner's (refine/refiner.h, refine/refine.cpp).
+// replayStaged replays its first k steps under a smaller Steiner budget. Each run is the chapter's
+// loop (refine/refiner.h) under a StageControl (stage_control.h).
+#include "refine/bound_search/bound_search.h"
+
 #include <algorithm>
 #include <utility>
 
 #include "cold_code.h"
-#include "refine/refine.h"
+#include "refine/bound_search/stage_control.h"
 #include "refine/refine_setup.h"
 #include "refine/refiner.h"
 
@@ -54,31 +55,57 @@ struct DirectBest {
   RefineOutcome out;
 };
 
+// One run of the loop within the search: the loop's plan and the control's rules.
+struct SearchRun {
+  RefinePlan loop;
+  StageRules rules;
+};
+
+struct RunResult {
+  RefineOutcome out;
+  std::uint64_t steps = 0;  // Refiner::steps()
+  bool capHit = false;
+};
+
+RunResult runLoop(MeshState& m, const SearchRun& run) {
+  StageControl control(*m.options, run.loop.requested, run.rules);
+  Refiner loop(m, run.loop, &control);
+  RunResult r;
+  r.out = loop.run();
+  r.steps = loop.steps(), r.capHit = control.capHit();
+  return r;
+}
+
 // Direct attempt number `attempt` (0 to 3; bound_push.h): as without stages; then the largest skinny
 // triangles first with the best points below the bound, those that beat the off-center's smallest
 // new angle by kBelowBoundGain and then only those that beat it by kStrictBelowBoundGain (up to 128
 // times the 33-degree mesh); last, smallest first again with the best points below the bound (what
 // the second attempt was before largest first: 3 of the 300 generated PLCs at 38 degrees complete
 // only this way, none at 40).
-RefinePlan directPlan(double requested, std::uint64_t base, int attempt, std::uint64_t budget) {
-  RefinePlan plan = RefinePlan::direct(requested, budget);
-  plan.triangleCap = kDirectTriangleFactor * base;
-  if (attempt == 0) return plan;
+SearchRun directPlan(double requested, std::uint64_t base, int attempt, std::uint64_t budget) {
+  SearchRun run{RefinePlan::direct(requested, budget), {}};
+  RefinePlan& plan = run.loop;
+  run.rules.triangleCap = kDirectTriangleFactor * base;
+  if (attempt == 0) return run;
   if (attempt == 3) {
     plan.bestBelowBound = true, plan.belowBoundGain = kBelowBoundGain;
-    return plan;
+    return run;
   }
-  plan.triangleCap = std::min(kSecondDirectTriangleFactor * base, kSecondDirectTriangleCeiling);
+  run.rules.triangleCap = std::min(kSecondDirectTriangleFactor * base, kSecondDirectTriangleCeiling);
   plan.bestBelowBound = plan.largestFirst = true;
   plan.belowBoundGain = attempt == 1 ? kBelowBoundGain : kStrictBelowBoundGain;
-  return plan;
+  return run;
 }
 
-RefinePlan pushPlan(double requested, const StagedPath& path, std::uint64_t budget) {
-  RefinePlan plan{requested, kReachableDegrees, true, kPushTriangleFactor * path.base, path.reachSteps};
-  plan.domainCap = kPushTriangleFactor * path.baseDomain;
-  plan.budget = budget;
-  return plan;
+// The push: from the 33-degree mesh (its steps already used), the bound raised stage by stage.
+SearchRun pushPlan(double requested, const StagedPath& path, std::uint64_t budget) {
+  SearchRun run;
+  run.loop.requested = requested, run.loop.first = kReachableDegrees;
+  run.loop.used = path.reachSteps, run.loop.budget = budget;
+  run.rules.track = true;
+  run.rules.triangleCap = kPushTriangleFactor * path.base;
+  run.rules.domainCap = kPushTriangleFactor * path.baseDomain;
+  return run;
 }
 
 // The push continues the 33-degree run: its trace and rejections come first.
@@ -114,17 +141,17 @@ RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path)
   // kDirectEnoughFactor of the 33-degree one.
   DirectBest best;
   for (int number = 0; number < directAttempts(*m.options); ++number) {
-    RefinePlan plan = directPlan(requested, path.base, number, budget);
-    if (plan.largestFirst && plan.triangleCap < kLargestFirstLeast * path.base) continue;  // too large an input
-    if (best.found) plan.triangleCap = std::min(plan.triangleCap, best.triangles);
+    SearchRun run = directPlan(requested, path.base, number, budget);
+    std::uint64_t& cap = run.rules.triangleCap;
+    if (run.loop.largestFirst && cap < kLargestFirstLeast * path.base) continue;  // too large an input
+    if (best.found) cap = std::min(cap, best.triangles);
     MeshState from = start;
-    Refiner attempt(from, plan);
-    RefineOutcome out = attempt.run();
-    if (attempt.capHit() || !completeOutcome(out)) continue;
+    RunResult attempt = runLoop(from, run);
+    if (attempt.capHit || !completeOutcome(attempt.out)) continue;
     const std::uint64_t triangles = liveTriangles(from);
     if (best.found && triangles >= best.triangles) continue;
-    best.found = true, best.triangles = triangles, best.attempt = number, best.steps = attempt.steps();
-    best.mesh = std::move(from), best.out = std::move(out);
+    best.found = true, best.triangles = triangles, best.attempt = number, best.steps = attempt.steps;
+    best.mesh = std::move(from), best.out = std::move(attempt.out);
     if (triangles <= kDirectEnoughFactor * static_cast<double>(path.base)) break;
   }
   if (best.found) {
@@ -133,10 +160,9 @@ RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path)
     return std::move(best.out);
   }
   start = MeshState{};  // free it before the push
-  Refiner push(m, pushPlan(requested, path, budget));
-  RefineOutcome out = push.run();
-  path.branch = StagedPath::Push, path.steps = push.steps();
-  return afterReach(std::move(reach), std::move(out));
+  RunResult push = runLoop(m, pushPlan(requested, path, budget));
+  path.branch = StagedPath::Push, path.steps = push.steps;
+  return afterReach(std::move(reach), std::move(push.out));
 }
 
 // The first k steps of the way refineStaged went (with the automatic budget), from the unrefined
@@ -147,31 +173,30 @@ RefineOutcome replayStaged(MeshState& m, const StagedPath& path, std::uint64_t k
     case StagedPath::AsAsked:
       return Refiner(m, RefinePlan::direct(requested, k)).run();
     case StagedPath::Direct:
-      return Refiner(m, directPlan(requested, path.base, path.attempt, k)).run();
+      return runLoop(m, directPlan(requested, path.base, path.attempt, k)).out;
     case StagedPath::Push:
       break;
   }
   // The 33-degree run again, judged by the requested bound where it is the result (stopped at k
   // steps, it ends before the bound could be raised).
-  RefinePlan first{requested, kReachableDegrees, false, 0, 0};
-  first.budget = std::min(k, path.reachSteps);
-  RefineOutcome reach = Refiner(m, first).run();
+  SearchRun first;
+  first.loop.requested = requested, first.loop.first = kReachableDegrees;
+  first.loop.budget = std::min(k, path.reachSteps);
+  RefineOutcome reach = runLoop(m, first).out;
   if (k <= path.reachSteps) return reach;
-  RefinePlan push = pushPlan(requested, path, k);
-  push.prefix = true;
-  return afterReach(std::move(reach), Refiner(m, push).run());
+  SearchRun push = pushPlan(requested, path, k);
+  push.rules.prefix = true;
+  return afterReach(std::move(reach), runLoop(m, push).out);
 }
 
 }  // namespace
 
-// Above kStagedAboveDegrees with a budget k under the automatic one, the result is the first k steps
-// of the automatic run's (what maxSteiner gives below that by itself, and what the page's replay of
-// a run step by step relies on): that run first, and where it took more than k steps, its way again
-// from the start, stopped at k. (Budgeting each stage instead would take another way: a 33-degree
-// mesh done within k steps and a direct attempt cut short by the budget lead to the push.)
-RefineOutcome refine(MeshState& m) {
-  if (!(m.options->minAngle > kStagedAboveDegrees))
-    return Refiner(m, RefinePlan::direct(m.options->minAngle, m.options->maxSteiner)).run();
+// With a budget k under the automatic one, the result is the first k steps of the automatic run's
+// (what maxSteiner gives below kStagedAboveDegrees by itself, and what the page's replay of a run
+// step by step relies on): that run first, and where it took more than k steps, its way again from
+// the start, stopped at k. (Budgeting each stage instead would take another way: a 33-degree mesh
+// done within k steps and a direct attempt cut short by the budget lead to the push.)
+RefineOutcome searchBound(MeshState& m) {
   const double demand = areaDemand(m);
   const std::uint64_t automatic = automaticSteinerBudget(m, demand);
   const std::uint64_t k = std::min(m.options->maxSteiner, automatic);
