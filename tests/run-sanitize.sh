@@ -13,7 +13,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build-sanitize"
 cxx="${CXX:-g++}"
 
-# RelWithDebInfo: optimised enough that refinement tests finish, with line numbers in reports.
+# RelWithDebInfo: optimized enough that refinement tests finish, with line numbers in reports.
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRUPPERT_SANITIZE=ON -DRUPPERT_BUILD_TESTS=ON \
   -DCMAKE_CXX_COMPILER="$cxx"
 cmake --build "$build" -j2 --target ruppert_tests ruppert

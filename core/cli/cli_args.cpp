@@ -220,7 +220,7 @@ Handler handlerOf(const std::string& name) {
   return nullptr;
 }
 
-// Edits between a and b: insertions, deletions, substitutions and swaps of two neighbouring
+// Edits between a and b: insertions, deletions, substitutions and swaps of two neighboring
 // characters, each counting one (so "--min-angel" is one edit from "--min-angle").
 std::size_t editDistance(const std::string& a, const std::string& b) {
   std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1, 0));

@@ -2,7 +2,7 @@
 // per file, not per insertion, so under clang (the WebAssembly build) they are compiled for size
 // (minsize), which keeps the wasm module small. Only functions declared between the two markers are
 // affected: templates from headers included before them (vector growth, sorting, shared with the hot
-// refinement code) keep the build's optimisation, so no slow copy of them can be linked into it.
+// refinement code) keep the build's optimization, so no slow copy of them can be linked into it.
 #pragma once
 
 #if defined(__clang__)

@@ -17,7 +17,7 @@ inline constexpr double kArcPieceTurn = 6.28318530717958647692 / 6;
 // One curve over the parameter t in [0, 1].
 struct CurveShape {
   CurveType type = CurveType::Arc;
-  // Arc: centre x, y, radius, start angle, sweep (radians, > 0). Bezier: the control points P0 .. P3.
+  // Arc: center x, y, radius, start angle, sweep (radians, > 0). Bezier: the control points P0 .. P3.
   double c[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   void point(double t, double out[2]) const;
   // The control points of the piece [t0, t1] (Bezier), by the derivative at its ends.

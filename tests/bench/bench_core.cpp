@@ -7,7 +7,7 @@
 // Each input is meshed once to warm up (page faults, allocator, caches), then three times (once for
 // 10^7); the best is reported, since noise on a shared machine only ever adds time.
 //
-//   --chords: stars of 300 chords crossing near a disk's centre (44,850 crossings at small angles,
+//   --chords: stars of 300 chords crossing near a disk's center (44,850 crossings at small angles,
 //   plc_generators.h's chordStar, seeds 2-5) at 30 and 33 degrees, one run each: vertices, whether
 //   refinement completed under the automatic Steiner budget, and time.
 //

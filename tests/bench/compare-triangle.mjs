@@ -65,7 +65,7 @@ function measureMesh(points, triangles) {
     if (!(cross > 0)) inverted++;
     area += cross / 2;
     // The angle at a corner from atan2(|cross|, dot) is accurate for angles near 0 and 180,
-    // where acos of a normalised dot product loses digits.
+    // where acos of a normalized dot product loses digits.
     const corners = [[ax, ay, bx, by, cx, cy], [bx, by, cx, cy, ax, ay], [cx, cy, ax, ay, bx, by]];
     for (const [px, py, qx, qy, rx, ry] of corners) {
       const ux = qx - px, uy = qy - py, vx = rx - px, vy = ry - py;

@@ -18,7 +18,7 @@
 // median over rounds of batch time / calls. speedup = Triangle's time / ruppert's (> 1: ruppert
 // faster). Before the first input (and after any restart of the worker) both meshers run for
 // --warmup-ms, alternating, on up to ten of the inputs with at most 500 points: V8 first runs
-// WebAssembly from a baseline compiler and optimises each function only once it is hot, which for
+// WebAssembly from a baseline compiler and optimizes each function only once it is hot, which for
 // a module the size of ruppert's takes one to three seconds of calls. Without the warm-up the first
 // inputs measured that, not the steady state (A.poly, the first: 232 us without, 83 us with it). Printed: a row per input, then the geometric mean of the speedups per family and overall.
 // Inputs that Triangle cannot mesh (its fixed 16 MiB heap, a hang) are listed and left out.

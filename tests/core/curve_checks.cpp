@@ -59,7 +59,7 @@ double distanceToSegment(Point a, Point b, Point q) {
 
 struct CurveGeometry {
   const Curve& curve;
-  double c[8];   // Bézier control points, or the arc's centre and radius in c[0..2]
+  double c[8];   // Bézier control points, or the arc's center and radius in c[0..2]
   double size;   // radius, or the control polygon's extent
 };
 

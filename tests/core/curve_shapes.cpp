@@ -25,7 +25,7 @@ void addArc(Plc& plc, std::uint32_t from, std::uint32_t to, double cx, double cy
   plc.curves.push_back(c);
 }
 
-// The area of the intersection of disks of radii r1 and r2 whose centres lie d apart (crossing circles).
+// The area of the intersection of disks of radii r1 and r2 whose centers lie d apart (crossing circles).
 double intersectionArea(double r1, double r2, double d) {
   const double d1 = (d * d + r1 * r1 - r2 * r2) / (2 * d), d2 = d - d1;
   return r1 * r1 * std::acos(d1 / r1) - d1 * std::sqrt(r1 * r1 - d1 * d1) + r2 * r2 * std::acos(d2 / r2) -

@@ -15,7 +15,7 @@ struct CurvedShape {
 // A circle of radius r around (cx, cy) as two arcs between two new points, its right and left ends.
 void addCircle(ruppert::Plc& plc, double cx, double cy, double r);
 
-// The unit square with a round hole of radius r at its centre (two arcs and a hole seed).
+// The unit square with a round hole of radius r at its center (two arcs and a hole seed).
 CurvedShape squareWithRoundHole(double r);
 // The quarter of the unit disk in the first quadrant: two segments and one arc.
 CurvedShape quarterDisk();
@@ -26,10 +26,10 @@ CurvedShape underBezier(double h);
 CurvedShape diskWithHoles(int holes, std::uint32_t seed);
 // A w x h rectangle with corners rounded to radius r: four segments and four quarter arcs.
 CurvedShape roundedRectangle(double w, double h, double r);
-// The intersection of two disks of radius 1 whose centres lie 2d apart: two arcs meeting at tips of
+// The intersection of two disks of radius 1 whose centers lie 2d apart: two arcs meeting at tips of
 // 2 acos(d) radians... sharp as d nears 1.
 CurvedShape lens(double d);
-// The unit disk minus a disk of radius r2 centred at (d, 0) that crosses its circle: two arcs
+// The unit disk minus a disk of radius r2 centered at (d, 0) that crosses its circle: two arcs
 // meeting at two sharp tips.
 CurvedShape crescent(double d, double r2);
 

@@ -103,7 +103,7 @@ GeneratedPlc randomStarPolygon(std::uint64_t seed, std::size_t n, std::size_t ho
   GeneratedPlc g;
   std::vector<double> ring;
   for (int attempt = 0;; ++attempt) {
-    // Stratified angles keep neighbouring vertices at least 0.2 * 2 pi / n apart, so rounding to the
+    // Stratified angles keep neighboring vertices at least 0.2 * 2 pi / n apart, so rounding to the
     // grid cannot reorder them; the simplicity check below still guards against surprises.
     ring.clear();
     for (std::size_t k = 0; k < n; ++k) {
@@ -127,22 +127,22 @@ GeneratedPlc randomStarPolygon(std::uint64_t seed, std::size_t n, std::size_t ho
   }
   g.area = ringArea(ring);
 
-  // Square holes of half-size 2^-6 centred within 0.1 of the centre. The polygon contains the disk
+  // Square holes of half-size 2^-6 centered within 0.1 of the center. The polygon contains the disk
   // of radius 0.25 * cos(max angular gap / 2) >= 0.19 for n >= 8, so such holes fit; holes are kept
   // only when they do not touch each other or the boundary.
   const double h = 0x1p-6;
-  std::vector<std::pair<double, double>> centres;
-  for (std::size_t attempt = 0; attempt < 20 * holes && centres.size() < holes; ++attempt) {
+  std::vector<std::pair<double, double>> centers;
+  for (std::size_t attempt = 0; attempt < 20 * holes && centers.size() < holes; ++attempt) {
     const double cx = roundToGrid(0.4 + 0.2 * draw.unit()), cy = roundToGrid(0.4 + 0.2 * draw.unit());
     if (std::hypot(cx - 0.5, cy - 0.5) > 0.1) continue;
     bool clear = true;
-    for (const auto& c : centres) clear = clear && (std::fabs(c.first - cx) > 2.5 * h || std::fabs(c.second - cy) > 2.5 * h);
+    for (const auto& c : centers) clear = clear && (std::fabs(c.first - cx) > 2.5 * h || std::fabs(c.second - cy) > 2.5 * h);
     const double square[8] = {cx - h, cy - h, cx + h, cy - h, cx + h, cy + h, cx - h, cy + h};
     for (std::size_t i = 0; i < n && clear; ++i)
       for (int k = 0; k < 4 && clear; ++k)
         clear = !segmentsTouch(&ring[2 * i], &ring[2 * ((i + 1) % n)], &square[2 * k], &square[2 * ((k + 1) % 4)]);
     if (!clear) continue;
-    centres.emplace_back(cx, cy);
+    centers.emplace_back(cx, cy);
     const std::uint32_t base = std::uint32_t(g.plc.points.size() / 2);
     g.plc.points.insert(g.plc.points.end(), square, square + 8);
     for (std::uint32_t k = 0; k < 4; ++k) {
@@ -160,7 +160,7 @@ namespace {
 
 // A star-shaped ring of n vertices (n a multiple of 4) around the origin: vertex k in the k-th of
 // n equal sectors, so the axes are sector boundaries and the edges across them are known.
-std::vector<double> centredRing(Draw& draw, std::size_t n, double rMin, double rMax) {
+std::vector<double> centeredRing(Draw& draw, std::size_t n, double rMin, double rMax) {
   std::vector<double> ring;
   for (std::size_t k = 0; k < n; ++k) {
     // A direction in the quarter of the circle that s (a fraction of the turn) lies in:
@@ -188,15 +188,15 @@ std::vector<double> centredRing(Draw& draw, std::size_t n, double rMin, double r
 
 }  // namespace
 
-GeneratedPlc originCentredOutline(std::uint64_t seed, std::size_t n, bool hole) {
+GeneratedPlc originCenteredOutline(std::uint64_t seed, std::size_t n, bool hole) {
   Draw draw(seed);
   n = std::max<std::size_t>((n + 3) / 4 * 4, 8);
   GeneratedPlc g;
-  const std::vector<double> outer = centredRing(draw, n, 0.7, 1.3);
+  const std::vector<double> outer = centeredRing(draw, n, 0.7, 1.3);
   addRing(g.plc, outer);
   g.area = ringArea(outer);
   if (hole) {
-    const std::vector<double> inner = centredRing(draw, 8, 0.1, 0.2);
+    const std::vector<double> inner = centeredRing(draw, 8, 0.1, 0.2);
     addRing(g.plc, inner);
     g.plc.holes = {0, 0};
     g.area -= ringArea(inner);

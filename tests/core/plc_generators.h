@@ -30,16 +30,16 @@ GeneratedPlc randomPointsInSquare(std::uint64_t seed, std::size_t n);
 GeneratedPlc randomPointSet(std::uint64_t seed, std::size_t n);
 
 // A simple polygon with n vertices, star-shaped around (0.5, 0.5) (sorted random angles, random radii),
-// with up to `holes` small square holes inside it (each with a hole seed at its centre).
+// with up to `holes` small square holes inside it (each with a hole seed at its center).
 GeneratedPlc randomStarPolygon(std::uint64_t seed, std::size_t n, std::size_t holes);
 
-// A map-like outline centred on the origin: a star-shaped ring of n (rounded up to a multiple of 4,
+// A map-like outline centered on the origin: a star-shaped ring of n (rounded up to a multiple of 4,
 // at least 8) vertices at radii 0.7 to 1.3 and, with `hole`, an 8-vertex hole ring at radii 0.1 to
 // 0.2 around the origin (its seed at the origin). Coordinates use every bit of a double (not dyadic),
 // and each ring edge that crosses an axis runs from (+c, y1) to (-c, y2) (or (x1, +c) to (x2, -c)),
 // so its midpoint lies on the axis and the rest of it rounds. No trigonometric functions: the
 // directions come from the rational parametrisation of the circle, the same bits everywhere.
-GeneratedPlc originCentredOutline(std::uint64_t seed, std::size_t n, bool hole);
+GeneratedPlc originCenteredOutline(std::uint64_t seed, std::size_t n, bool hole);
 
 // The unit square's boundary and random segments strictly inside it, drawn `attempts` times and kept
 // only when they touch no segment kept so far (not even at an endpoint).
@@ -55,7 +55,7 @@ GeneratedPlc randomCrossingSegments(std::uint64_t seed, std::size_t n);
 // other segments' interiors, and crossings exactly at grid points or between them.
 GeneratedPlc randomGridSegments(std::uint64_t seed, std::size_t n, std::uint32_t g);
 
-// n chords of the unit disk through (nearly) its centre: from angle a in [0, pi) to the antipode,
+// n chords of the unit disk through (nearly) its center: from angle a in [0, pi) to the antipode,
 // its x moved by up to 0.01. They cross about n^2 / 2 times, at small angles and in tight clusters,
 // and enclose the domain themselves (area = 0, not computed).
 GeneratedPlc chordStar(std::uint64_t seed, std::size_t n);
@@ -82,7 +82,7 @@ GeneratedPlc nearOverlaps(std::uint64_t seed);
 GeneratedPlc nearCollinearSliver(std::uint64_t seed);
 
 // An nx-by-ny grid of points spaced `step` apart with the grid's boundary as segments between
-// neighbouring boundary points (so every boundary side is a chain of collinear points), plus, when
+// neighboring boundary points (so every boundary side is a chain of collinear points), plus, when
 // `crossLines` is set, the middle row and column as chains of segments. Every unit cell's corners are
 // cocircular: the Delaunay triangulation is maximally degenerate.
 GeneratedPlc gridPlc(std::size_t nx, std::size_t ny, double step = 1.0, bool crossLines = false);

@@ -97,14 +97,14 @@ GeneratedPlc simplePolygon(const std::vector<Pt>& ring) {
 
 double distance(Pt a, Pt b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
-// Places up to `count` disks of radius drawn by radius() with centres drawn by centre(), each at
+// Places up to `count` disks of radius drawn by radius() with centers drawn by center(), each at
 // least `clearance` from every disk kept before (a bounded number of attempts).
-template <class Radius, class Centre>
-std::vector<std::pair<Pt, double>> scatterDisks(int count, double clearance, Radius radius, Centre centre) {
+template <class Radius, class Center>
+std::vector<std::pair<Pt, double>> scatterDisks(int count, double clearance, Radius radius, Center center) {
   std::vector<std::pair<Pt, double>> disks;
   for (int attempt = 0; attempt < 60 * count && int(disks.size()) < count; ++attempt) {
     const double r = radius();
-    const Pt c = centre(r);
+    const Pt c = center(r);
     bool free = true;
     for (const auto& d : disks) free = free && distance(c, d.first) > r + d.second + clearance;
     if (free) disks.emplace_back(c, r);
@@ -113,7 +113,7 @@ std::vector<std::pair<Pt, double>> scatterDisks(int count, double clearance, Rad
 }
 
 // A hole in every disk: a regular polygon of minSides..maxSides sides inscribed in it, turned at
-// random, with its seed at the centre. Returns the holes' total area.
+// random, with its seed at the center. Returns the holes' total area.
 double punchHoles(PlcBuilder& b, Random& random, const std::vector<std::pair<Pt, double>>& disks, int minSides, int maxSides) {
   double area = 0;
   for (const auto& [c, r] : disks) {
@@ -182,13 +182,13 @@ GeneratedPlc channelWithObstacles(std::uint64_t seed, int obstacles) {
   const double length = random.range(3, 6);
   const double clearance = random.range(0.005, 0.04);
   auto radius = [&] { return random.range(0.04, 0.2); };
-  auto centre = [&](double r) {
+  auto center = [&](double r) {
     const double margin = r + clearance;
     return Pt{random.range(margin, length - margin), random.range(margin, 1 - margin)};
   };
   PlcBuilder b;
   const double area = b.ring({{0, 0}, {length, 0}, {length, 1}, {0, 1}});
-  return b.done(area - punchHoles(b, random, scatterDisks(obstacles, clearance, radius, centre), 12, 40));
+  return b.done(area - punchHoles(b, random, scatterDisks(obstacles, clearance, radius, center), 12, 40));
 }
 
 namespace {
@@ -267,7 +267,7 @@ namespace {
 // Grid vertex (i, j) of a k x k jittered grid on the unit square: interior vertices move up to
 // 0.22 of a cell in each direction, boundary vertices only along their side, corners not at all.
 // Each edge then stays within 0.22 cells of its grid line, so no two edges cross and every cell's
-// nominal centre stays inside its cell.
+// nominal center stays inside its cell.
 Pt jitteredVertex(Random& random, int i, int j, int k) {
   const double cell = 1.0 / k;
   const double dx = (i == 0 || i == k) ? 0 : random.range(-0.22, 0.22) * cell;
@@ -304,7 +304,7 @@ GeneratedPlc perforatedDisk(std::uint64_t seed, int holes) {
   const int sides = random.integer(64, 160);
   const double clearance = random.range(0.005, 0.03);
   auto radius = [&] { return random.range(0.02, 0.09); };
-  auto centre = [&](double r) {
+  auto center = [&](double r) {
     const double reach = 0.99 - r - clearance;  // the outer polygon's edges are >= cos(pi/64) > 0.998 out
     for (;;) {
       const Pt c{random.range(-reach, reach), random.range(-reach, reach)};
@@ -313,7 +313,7 @@ GeneratedPlc perforatedDisk(std::uint64_t seed, int holes) {
   };
   PlcBuilder b;
   const double area = b.ring(regularPolygon({0, 0}, 1, sides, 0));
-  return b.done(area - punchHoles(b, random, scatterDisks(holes, clearance, radius, centre), 3, 8));
+  return b.done(area - punchHoles(b, random, scatterDisks(holes, clearance, radius, center), 3, 8));
 }
 
 // An ellipse whose boundary is cut by sharp radial V notches (opening 3 to 25 degrees, depth 15%
@@ -326,16 +326,16 @@ GeneratedPlc vNotchedOutline(std::uint64_t seed, int notches) {
   const int arcPoints = std::max(1, 96 / notches);  // boundary points between two notches
   std::vector<Pt> ring;
   for (int k = 0; k < notches; ++k) {
-    const double centre = step * (k + random.range(-0.2, 0.2));
+    const double center = step * (k + random.range(-0.2, 0.2));
     const double depth = random.range(0.15, 0.6), opening = random.range(3, 25) * kPi / 180;
     const double halfWidth = std::min(depth * std::tan(opening / 2), 0.25 * step);  // as an angle on the unit circle
-    const Pt mouth = onEllipse(centre);
-    ring.push_back(onEllipse(centre - halfWidth));
+    const Pt mouth = onEllipse(center);
+    ring.push_back(onEllipse(center - halfWidth));
     ring.push_back({mouth.x * (1 - depth), mouth.y * (1 - depth)});
-    ring.push_back(onEllipse(centre + halfWidth));
+    ring.push_back(onEllipse(center + halfWidth));
     const double next = step * (k + 1) - 0.45 * step;  // arc points stay clear of the next notch
     for (int a = 1; a <= arcPoints; ++a) {
-      const double from = centre + 0.3 * step, to = std::max(from, next);
+      const double from = center + 0.3 * step, to = std::max(from, next);
       ring.push_back(onEllipse(from + (to - from) * a / (arcPoints + 1)));
     }
   }
@@ -390,14 +390,14 @@ GeneratedPlc pointCloudInSquare(std::uint64_t seed, int points) {
   Random random(seed, 11);
   PlcBuilder b;
   b.ring({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
-  std::vector<Pt> centres;
-  for (int c = random.integer(1, 5); c > 0; --c) centres.push_back({random.range(0.1, 0.9), random.range(0.1, 0.9)});
+  std::vector<Pt> centers;
+  for (int c = random.integer(1, 5); c > 0; --c) centers.push_back({random.range(0.1, 0.9), random.range(0.1, 0.9)});
   const double spread = random.range(0.005, 0.06);
   std::map<std::pair<double, double>, bool> taken;  // snapped positions: no duplicate points
   for (int placed = 0; placed < points;) {
     Pt p{random.range(0.001, 0.999), random.range(0.001, 0.999)};
     if (random.chance(0.6)) {  // a cluster point: sum of three uniforms, roughly normal
-      const Pt& c = centres[std::size_t(random.integer(0, int(centres.size()) - 1))];
+      const Pt& c = centers[std::size_t(random.integer(0, int(centers.size()) - 1))];
       const double dx = bellCurve(random), dy = bellCurve(random);
       p = {c.x + spread * dx, c.y + spread * dy};
       if (p.x <= 0.001 || p.x >= 0.999 || p.y <= 0.001 || p.y >= 0.999) continue;
@@ -409,7 +409,7 @@ GeneratedPlc pointCloudInSquare(std::uint64_t seed, int points) {
   return b.done(1.0);
 }
 
-// Polygonal circles nested inside each other, off-centre; the annuli are domain and hole in turn
+// Polygonal circles nested inside each other, off-center; the annuli are domain and hole in turn
 // (outermost annulus domain), each hole annulus with a seed.
 GeneratedPlc nestedRings(std::uint64_t seed, int rings) {
   Random random(seed, 12);
@@ -429,7 +429,7 @@ GeneratedPlc nestedRings(std::uint64_t seed, int rings) {
     const double offset = room * random.range(0, 0.4), direction = random.range(0, 2 * kPi);
     const Pt next = polar(c, offset, direction);
     if (i % 2 == 1) {
-      // A hole annulus: its seed on the ray from the inner centre, between the two rings.
+      // A hole annulus: its seed on the ray from the inner center, between the two rings.
       const double outerReach = r * std::cos(kPi / sides) - distance(next, c);
       b.hole({next.x + (inner + outerReach) / 2, next.y});
     }
@@ -642,7 +642,7 @@ const std::vector<ShapeFamily>& shapeFamilies() {
       {"notched", "an ellipse cut by sharp V notches", vNotchedOutline, 4, 30},
       {"strip", "a long thin strip with bumps", stripWithBumps, 5, 40},
       {"cloud", "points (uniform and clustered) in a square", pointCloudInSquare, 50, 800},
-      {"rings", "nested off-centre rings, domain and hole in turn", nestedRings, 2, 8},
+      {"rings", "nested off-center rings, domain and hole in turn", nestedRings, 2, 8},
       {"letters", "block-letter words (holes, pinch points, slant)", blockLetters, 2, 8},
       {"gear", "a gear with a hub hole and bolt holes", gearWithHoles, 12, 80},
       {"cracks", "a square with free dangling segments", squareWithCracks, 10, 60},

@@ -27,10 +27,10 @@ ruppert::Plc closedPolygon(const std::vector<std::pair<double, double>>& corners
 }
 
 // A spike with its tip at the origin, sides of lengths 1 (below) and 0.7 (above), on a box. With a
-// neighbour, the upper side ends in a valley whose outside gap is 2 degrees, as in a star.
-ruppert::Plc spike(bool withNeighbour) {
+// neighbor, the upper side ends in a valley whose outside gap is 2 degrees, as in a star.
+ruppert::Plc spike(bool withNeighbor) {
   const double h = kHalfTip;
-  if (!withNeighbour) return closedPolygon({{0, 0}, {1, -h}, {1, -1}, {3, -1}, {3, 1}, {0.7, 1}, {0.7, 0.7 * h}});
+  if (!withNeighbor) return closedPolygon({{0, 0}, {1, -h}, {1, -1}, {3, -1}, {3, 1}, {0.7, 1}, {0.7, 0.7 * h}});
   return closedPolygon({{0, 0}, {1, -h}, {1, -1}, {3, -1}, {3, 1}, {1, 1}, {1, 2.4 * h}, {0, 1.4 * h}, {0.7, 0.7 * h}});
 }
 
@@ -69,7 +69,7 @@ TEST_CASE("a small gap outside the domain is no acute corner: a spike's sides sp
     CHECK_VALID(b, boundHeld(pair, b));
     const int splitsAlone = splitsOnTheSides(a), splitsPaired = splitsOnTheSides(b);
     INFO("placement " << ruppert::enumName(placement) << ": " << splitsAlone << " splits alone, " << splitsPaired
-                      << " beside a neighbour");
+                      << " beside a neighbor");
     // Refinement splits the sides (the bases differ, so the tip's triangle is not exempt) ...
     CHECK(splitsAlone >= 10);
     // ... and the valley beside it changes that by little: 41 against 39 with off-centers (69 when

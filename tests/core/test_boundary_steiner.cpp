@@ -98,7 +98,7 @@ TEST_CASE("no-boundary-steiner and no-segment-steiner on generated PLCs at 20 an
 }
 
 TEST_CASE("no-boundary-steiner still splits interior segments", "[refine][steiner]") {
-  // A square with a crack from its centre: the crack is an interior segment.
+  // A square with a crack from its center: the crack is an interior segment.
   ruppert::Plc plc;
   plc.points = {0, 0, 1, 0, 1, 1, 0, 1, 0.5, 0.5, 0.5, 0.9};
   plc.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5};

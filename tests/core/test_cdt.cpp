@@ -444,10 +444,10 @@ TEST_CASE("the validator rejects broken meshes", "[cdt][validator]") {
     std::swap(bad.triangles[0], bad.triangles[1]);
     CHECK(mentions(problemsOf(bad), "clockwise"));
   }
-  SECTION("an asymmetric neighbour") {
+  SECTION("an asymmetric neighbor") {
     Mesh bad = good;
     bad.neighbors[5] = -1;
-    CHECK(mentions(problemsOf(bad), "has no neighbour but triangle"));
+    CHECK(mentions(problemsOf(bad), "has no neighbor but triangle"));
   }
   SECTION("a boundary edge that is not a subsegment") {
     Mesh bad = good;

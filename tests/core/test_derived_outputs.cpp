@@ -104,7 +104,7 @@ TEST_CASE("quadratic nodes: exact midpoints, shared across interior edges, V + E
   }
 }
 
-TEST_CASE("voronoi: equidistant circumcentres, one dual per mesh edge, rays outward", "[derived]") {
+TEST_CASE("voronoi: equidistant circumcenters, one dual per mesh edge, rays outward", "[derived]") {
   for (const Mesh& m : sampleMeshes()) {
     const ruppert::Voronoi vd = ruppert::voronoiDiagram(m);
     const std::size_t n = m.triangles.size() / 3;
@@ -134,7 +134,7 @@ TEST_CASE("voronoi: equidistant circumcentres, one dual per mesh edge, rays outw
         CHECK(vd.rayDirections[2 * e + 1] == 0);
         continue;
       }
-      // A ray: from its triangle's circumcentre, perpendicular to the edge, away from the apex.
+      // A ray: from its triangle's circumcenter, perpendicular to the edge, away from the apex.
       REQUIRE(sides.size() == 1);
       CHECK(vd.edges[2 * e] == std::int32_t(sides[0].first));
       CHECK(vd.edges[2 * e + 1] == -1);

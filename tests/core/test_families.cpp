@@ -144,7 +144,7 @@ TEST_CASE("shape families: scaling by 2^k gives the same mesh size, integer shif
     for (int k : {-9, 3, 60}) {
       INFO("scaled by 2^" << k);
       const Mesh mesh = ruppert::triangulate(ruppert_test::scaled(g.plc, std::ldexp(1.0, k)), atAngle(30));
-      CHECK(mesh.triangles.size() == base.triangles.size());  // the core normalises by 2^k: same bits
+      CHECK(mesh.triangles.size() == base.triangles.size());  // the core normalizes by 2^k: same bits
     }
     // An integer shift is exact and changes no predicate on the input, but the core does not shift
     // back: Steiner points computed near 1024 round differently from those near 0 and steer later

@@ -1,4 +1,4 @@
-// The hostile-input catalogue (tests/hostile): every file there, with the outcome listed in
+// The hostile-input catalog (tests/hostile): every file there, with the outcome listed in
 // tests/hostile/expectations.txt, through the library (readFile + triangulate, plain CDT and
 // minAngle 30 and 40, at most 20000 Steiner vertices) and through the native CLI. An input must
 // end in either the listed error code or a mesh the validator accepts; the CLI must exit 0, or 1
@@ -165,7 +165,7 @@ constexpr std::size_t kHundredMegabytes = 100u << 20;
 
 }  // namespace
 
-TEST_CASE("every hostile catalogue entry ends in its expected error code or a valid mesh", "[hostile]") {
+TEST_CASE("every hostile catalog entry ends in its expected error code or a valid mesh", "[hostile]") {
   const std::vector<Entry> entries = readExpectations();
   REQUIRE(entries.size() >= 50);
   if (cliPath().empty()) WARN("the ruppert CLI was not built: only the library is checked");
@@ -177,12 +177,12 @@ TEST_CASE("every hostile catalogue entry ends in its expected error code or a va
   reportSlowest(seconds);
 }
 
-TEST_CASE("every file of the hostile catalogue has an expectation", "[hostile]") {
+TEST_CASE("every file of the hostile catalog has an expectation", "[hostile]") {
   std::map<std::string, int> listed;
   for (const Entry& e : readExpectations()) listed[e.file]++;
   for (const auto& item : fs::directory_iterator(kHostile)) {
     const std::string name = item.path().filename().string();
-    if (name == "expectations.txt" || name == "README.md") continue;  // the catalogue's own files
+    if (name == "expectations.txt" || name == "README.md") continue;  // the catalog's own files
     INFO(name);
     CHECK(listed[name] == 1);
   }

@@ -303,7 +303,7 @@ TEST_CASE("three and four segments crossing at one point make one vertex", "[rep
     CHECK(findNotice(mesh, NoticeKind::SegmentsCross) != nullptr);
     CHECK(usedVerticesAt(mesh, 1, 1, 0) == 1);
     CHECK(usedVerticesAt(mesh, 1, 1, 1e-9) == 1);  // no near-duplicate intersection vertices
-    // 2 * count spokes meet at the centre.
+    // 2 * count spokes meet at the center.
     std::size_t around = 0;
     for (std::uint32_t v : mesh.triangles) around += mesh.points[2 * v] == 1 && mesh.points[2 * v + 1] == 1;
     CHECK(around >= std::size_t(2 * count));
@@ -339,7 +339,7 @@ TEST_CASE("a duplicate segment crossed at a point doubles cannot represent", "[r
 }
 
 // Clusters of segments 10 to 10^10 times shorter than the domain, crossing each other among input
-// points as little as 10^5 ulps apart: crossing repair used to bend chains through their neighbours
+// points as little as 10^5 ulps apart: crossing repair used to bend chains through their neighbors
 // on a tenth of these (and stop with "too many crossing repairs" on smaller clusters), and an
 // intermediate version looped. Options vary with the input (angle, placement, convex hull, budget).
 // Smaller clusters mesh without error too (a scratch sweep down to 1e-19), but there the validator's

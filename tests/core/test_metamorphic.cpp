@@ -4,7 +4,7 @@
 // degrees, relabelling) do not change any predicate's sign, so they cannot change the constrained
 // Delaunay triangulation when it is unique. When it is not unique (four cocircular points across an
 // unconstrained edge), only the triangle count is determined; scaling by 2^k must still give the very
-// same triangles, because the mesher normalises by a power of two itself and then sees identical bits.
+// same triangles, because the mesher normalizes by a power of two itself and then sees identical bits.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -41,7 +41,7 @@ Mesh cdt(const Plc& plc) { return ruppert::triangulate(plc, cdtOptions()); }
 using TriangleSet = std::set<std::array<std::uint32_t, 3>>;
 
 // Triangles as vertex triples, each rotated to start at its smallest index (keeping orientation),
-// optionally relabelled first.
+// optionally relabeled first.
 TriangleSet triangleSet(const Mesh& m, const std::vector<std::uint32_t>* relabel = nullptr) {
   TriangleSet set;
   for (std::size_t t = 0; t < m.triangles.size() / 3; ++t) {
@@ -314,7 +314,7 @@ TEST_CASE("a region seed that restates the global bound changes nothing", "[meta
     o.maxArea = g.area / 300;
     const Mesh plain = triangulate(plc, o);
     ruppert::Region r;
-    r.x = 0.5, r.y = 0.5, r.maxArea = o.maxArea;  // the star's centre is inside it; attribute 0
+    r.x = 0.5, r.y = 0.5, r.maxArea = o.maxArea;  // the star's center is inside it; attribute 0
     plc.regions.push_back(r);
     const Mesh restated = triangulate(plc, o);
     INFO("seed " << seed);

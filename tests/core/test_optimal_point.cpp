@@ -52,7 +52,7 @@ double gridBest(const OptimalPointQuery& query, double x0, double x1, double y0,
 
 }  // namespace
 
-TEST_CASE("optimal point: a regular hexagon's centre, where every new triangle is equilateral", "[optimal]") {
+TEST_CASE("optimal point: a regular hexagon's center, where every new triangle is equilateral", "[optimal]") {
   std::vector<double> hex;
   for (int k = 0; k < 6; ++k) hex.push_back(std::cos(k * kPi / 3)), hex.push_back(std::sin(k * kPi / 3));
   const auto edges = edgesOf(hex);
@@ -110,7 +110,7 @@ TEST_CASE("optimal point: no worse than a brute-force grid on irregular star-sha
 
 TEST_CASE("optimal point: a constrained edge is not encroached even when the best angles would", "[optimal]") {
   // A trapezoid over p-q = (0,0)-(1,0) whose top edge, from (1.6, 1.8) to (-0.6, 1.8) (edge 2), is
-  // constrained: its diametral disk (centre (0.5, 1.8), radius 1.1) holds the trapezoid's best point.
+  // constrained: its diametral disk (center (0.5, 1.8), radius 1.1) holds the trapezoid's best point.
   const std::vector<double> poly = {0, 0, 1, 0, 1.6, 1.8, -0.6, 1.8};
   const double p[2] = {0, 0}, q[2] = {1, 0};
   const auto free = edgesOf(poly);
@@ -141,7 +141,7 @@ TEST_CASE("optimal point: a needle's cavity has no point meeting 30 degrees", "[
 }
 
 TEST_CASE("optimal point: the answer meets 40 degrees where the grid says it can, and not where not", "[optimal]") {
-  // A square cavity over p-q: the centre makes four right isosceles triangles (45 degrees).
+  // A square cavity over p-q: the center makes four right isosceles triangles (45 degrees).
   const std::vector<double> square = {0, 0, 1, 0, 1, 1, 0, 1};
   const double p[2] = {0, 0}, q[2] = {1, 0};
   const auto edges = edgesOf(square);

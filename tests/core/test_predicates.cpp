@@ -10,7 +10,7 @@
 //     and a one-ulp move of one point must give the exact nonzero sign.
 //   * random, nearly collinear and nearly cocircular configurations, scaled by 2^k across the whole
 //     safe range: scaling by a power of two is exact, so the sign must never change.
-//   * extreme coordinates (0, 2^-128, 2^64 and their neighbours) mixed in one configuration, which is
+//   * extreme coordinates (0, 2^-128, 2^64 and their neighbors) mixed in one configuration, which is
 //     where underflow or overflow would break the error-free transformations.
 
 #include <catch2/catch.hpp>
@@ -140,7 +140,7 @@ TEST_CASE("orient2d and incircle on simple configurations", "[predicates]") {
   CHECK(orient2d(0, 0, 1, 1, 3, 3) == 0.0);
   CHECK(orient2d(o.data(), o.data(), x.data()) == 0.0);
 
-  // Circle through (1,0), (0,1), (-1,0): the centre is inside, (2,2) outside, (0,-1) on it.
+  // Circle through (1,0), (0,1), (-1,0): the center is inside, (2,2) outside, (0,-1) on it.
   const Point a{1, 0}, b{0, 1}, c{-1, 0};
   const Point inside{0, 0}, outside{2, 2}, on{0, -1};
   CHECK(incircle(a.data(), b.data(), c.data(), inside.data()) > 0);

@@ -465,7 +465,7 @@ TEST_CASE("off-centers rounded a hair short of the bound do not run away at smal
   }
 }
 
-// A star of 80 chords through a disk's centre crosses about 3,000 times at small angles; at 33
+// A star of 80 chords through a disk's center crosses about 3,000 times at small angles; at 33
 // degrees it needs about 177,000 vertices, more than the automatic budget allowed when it counted 40
 // per crossing, so it stopped incomplete. The budget now counts 100 per crossing.
 TEST_CASE("the automatic Steiner budget lets a star of 80 crossing chords complete at 33 degrees", "[refine]") {

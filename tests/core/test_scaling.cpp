@@ -22,7 +22,7 @@ std::uint64_t bits(double v) {
 }
 
 // Values across the whole range of a double: random significands at random binary exponents, the
-// extremes and their neighbours, and both signs.
+// extremes and their neighbors, and both signs.
 std::vector<double> samples() {
   std::mt19937_64 rng(20261204);
   std::vector<double> v = {0.0, 1.0, 1.5, std::numeric_limits<double>::min(), std::numeric_limits<double>::denorm_min(),

@@ -213,10 +213,10 @@ class TriangleIndex {
       if (j.count <= kLeaf) continue;
       const int axis = box.hi[0] - box.lo[0] >= box.hi[1] - box.lo[1] ? 0 : 1;
       const std::size_t half = j.count / 2;
-      auto centre = [&](std::uint32_t t) { return boxes_[t].lo[axis] + boxes_[t].hi[axis]; };
+      auto center = [&](std::uint32_t t) { return boxes_[t].lo[axis] + boxes_[t].hi[axis]; };
       std::nth_element(order_.begin() + std::ptrdiff_t(j.first), order_.begin() + std::ptrdiff_t(j.first + half),
                        order_.begin() + std::ptrdiff_t(j.first + j.count),
-                       [&](std::uint32_t a, std::uint32_t b) { return centre(a) < centre(b); });
+                       [&](std::uint32_t a, std::uint32_t b) { return center(a) < center(b); });
       const std::uint32_t left = std::uint32_t(nodes_.size());
       nodes_.push_back({});
       nodes_.push_back({});
@@ -274,7 +274,7 @@ bool checkIndices(const Mesh& m, std::size_t inputSegments, Problems& out) {
     for (int i = 0; i < 3; ++i) {
       const std::int32_t n = m.neighbors[3 * t + i];
       if (n != kNoNeighbor && (n < 0 || std::size_t(n) >= nt)) {
-        out.add("triangle ", t, " neighbour ", i, " = ", n, " is neither kNoNeighbor nor a triangle");
+        out.add("triangle ", t, " neighbor ", i, " = ", n, " is neither kNoNeighbor nor a triangle");
         ok = false;
       }
     }
@@ -365,7 +365,7 @@ void checkNeighbors(const Scaled& s, const EdgeMaps& maps, Problems& out) {
       const auto twin = maps.directed.find(directedKey(b, a));
       if (n == kNoNeighbor) {
         if (twin != maps.directed.end())
-          out.add("triangle ", t, " edge ", i, " (", a, ", ", b, ") has no neighbour but triangle ", twin->second / 3,
+          out.add("triangle ", t, " edge ", i, " (", a, ", ", b, ") has no neighbor but triangle ", twin->second / 3,
                   " shares it");
         if (!maps.subsegments.count(undirectedKey(a, b)))
           out.add("triangle ", t, " edge ", i, " (", a, ", ", b,
@@ -373,12 +373,12 @@ void checkNeighbors(const Scaled& s, const EdgeMaps& maps, Problems& out) {
         continue;
       }
       if (twin == maps.directed.end() || twin->second / 3 != std::uint32_t(n)) {
-        out.add("triangle ", t, " edge ", i, " (", a, ", ", b, ") names neighbour ", n,
+        out.add("triangle ", t, " edge ", i, " (", a, ", ", b, ") names neighbor ", n,
                 " which does not have the edge (", b, ", ", a, ")");
         continue;
       }
       if (m.neighbors[twin->second] != std::int32_t(t))
-        out.add("neighbour symmetry broken: triangle ", t, " -> ", n, " across (", a, ", ", b, ") but triangle ", n,
+        out.add("neighbor symmetry broken: triangle ", t, " -> ", n, " across (", a, ", ", b, ") but triangle ", n,
                 " -> ", m.neighbors[twin->second]);
     }
 }
@@ -447,7 +447,7 @@ void checkNoOverlap(const Scaled& s, const std::vector<bool>& used, const Triang
 // Edges shorter than the tolerance (in the scaled frame, where the largest magnitude is in [1, 2)),
 // at least one of whose ends the mesher added: the needles a vertex computed twice leaves. Vertices
 // that close across a hole or a segment are not joined and not reported: refinement on both sides
-// of an input gap 1e-13 wide puts them there, each side's cavity honouring the length floor.
+// of an input gap 1e-13 wide puts them there, each side's cavity honoring the length floor.
 // Refinement keeps its vertices apart on that global scale (its length floor), but a crossing of
 // input segments lies where the input puts it: among input points 1e-13 apart, or an ulp from an
 // input point that is an ulp off the segment, it is as close to them as they are to each other.

@@ -23,7 +23,7 @@ struct ValidateOptions {
   const ruppert::Plc* input = nullptr;
   // How far a vertex of a segment's chain may be from its line (intersection vertices are rounded):
   // collinearRelTol of the segment's length plus collinearUlpTol of its endpoints' magnitude. The
-  // second is a few dozen ulps, not more: a segment 1e-14 long at coordinates near 1 has neighbours
+  // second is a few dozen ulps, not more: a segment 1e-14 long at coordinates near 1 has neighbors
   // 1e-14 away, which a looser tolerance would count as on it.
   double collinearRelTol = 1e-9;
   double collinearUlpTol = 0x1p-46;

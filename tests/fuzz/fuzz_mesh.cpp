@@ -13,7 +13,7 @@
 //            count, then holes; count, then regions (x, y, attribute byte, max-area byte);
 //            count, then curves (below), then the curve tolerance byte
 // A curve: a type byte (bit 0: Bézier, else arc; bits 1-7: marker), its two point index bytes, then
-// an arc's centre as the chord's midpoint plus a signed multiple (int16 / 64) of its normal (so both
+// an arc's center as the chord's midpoint plus a signed multiple (int16 / 64) of its normal (so both
 // ends are at one distance from it to rounding, as Plc::curves asks), or a Bézier's two control
 // points in the coordinate encoding. Tolerance byte b: 0 the default, else the bounding box's
 // diagonal / 2^(b % 24).
@@ -203,7 +203,7 @@ void dumpPlc(const ruppert::Plc& plc, const ruppert::Options& o) {
   for (std::size_t i = 0; i < plc.regions.size(); ++i)
     std::fprintf(f, "%zu %.17g %.17g %.17g %.17g\n", i, plc.regions[i].x, plc.regions[i].y, plc.regions[i].attribute,
                  plc.regions[i].maxArea);
-  std::fprintf(f, "# curveTolerance %.17g; curves: type from to centre-or-controls marker\n", o.curveTolerance);
+  std::fprintf(f, "# curveTolerance %.17g; curves: type from to center-or-controls marker\n", o.curveTolerance);
   for (const ruppert::Curve& c : plc.curves)
     std::fprintf(f, "# curve %s %u %u %.17g %.17g %.17g %.17g %.17g %.17g %d\n", ruppert::enumName(c.type), c.from, c.to,
                  c.center[0], c.center[1], c.controls[0], c.controls[1], c.controls[2], c.controls[3], c.marker);

@@ -1,4 +1,4 @@
-// Judging a mesh made from a PLC with given options, shared by fuzz_mesh and the hostile catalogue
+// Judging a mesh made from a PLC with given options, shared by fuzz_mesh and the hostile catalog
 // test (tests/core/test_hostile.cpp): the validator's structural and Delaunay checks, plus the
 // bounds the options ask for when the mesh says it is complete.
 #pragma once

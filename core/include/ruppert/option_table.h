@@ -27,20 +27,13 @@ static_assert(RUPPERT_SMOOTH_PASSES_TEXT[0] - '0' == kSmoothPassesWhenOn && RUPP
 // triangulate()'s Options that the binding passes as numbers, in the heap table's order; each is
 // the ruppert::Options member of that name, of its default's type. What they do, for C++ callers:
 //   minAngle     degrees in [low, high]; 0 with maxArea <= 0 and no size function: the plain CDT.
-//                Above ~34 completion is not guaranteed. Above 34 a caller gets: the mesh refined
-//                to minAngle directly, if that completes within sixteen times the triangles of the
-//                33-degree mesh, or (optimal placement, no maxArea) in three more attempts that,
-//                where no point meets the bound, insert the best point below it, the first two
-//                splitting the largest skinny triangles first, within 128 times (no more than about
-//                half a million triangles; not tried where that is under twice), the last the
-//                smallest first within sixteen times; else the best mesh of a push from the
-//                33-degree mesh, one degree at a time while it improves, with complete = false,
-//                ReasonKind::AngleUnreachable and the angle reached in Stats::reachedAngle: never
-//                below 33 degrees (outside the §6.6 exemptions) nor over four times the 33-degree
-//                mesh's triangles, whenever 33 degrees completes (else it refines as asked, as
-//                below 34). Above 34, vertices on segments may also slide along them
-//                (segment_slide.h). A miss costs the attempts up to their caps: on the generated
-//                shape families at 40 degrees at most 0.8 s natively.
+//                Up to 33 degrees refinement ends with every angle met (outside the §6.6
+//                exemptions). Above ~34 completion is not guaranteed: the bound search
+//                (refine/bound_search/) tries it directly and with capped attempts, else returns
+//                the best mesh of a push from the 33-degree mesh with complete = false,
+//                ReasonKind::AngleUnreachable and Stats::reachedAngle, never below 33 degrees nor
+//                over four times the 33-degree mesh's triangles whenever 33 degrees completes
+//                (docs/usage.md, "Above 34 degrees").
 //   maxAngle     degrees; 0: no bound; else above 60 and below 180 (checked by triangulate(): the
 //                table's range is [0, 180]). No triangle gets a larger angle, outside the §6.6
 //                exemptions (nestled in a small input angle, seditious shortest edge), whatever
@@ -125,7 +118,7 @@ static_assert(RUPPERT_SMOOTH_PASSES_TEXT[0] - '0' == kSmoothPassesWhenOn && RUPP
   X(order, "--order 1|2", 1, 1, 2, "",                                                                   \
     "2 for quadratic triangles (default {default}): .ele gets 6 nodes per triangle (corners, then the "   \
     "midpoints of the edges opposite them), .node the midpoints after the corners")                                             \
-  X(voronoi, "--voronoi", false, 0, 0, "", "also write the dual: BASE.v.node (circumcentres) and BASE.v.edge")
+  X(voronoi, "--voronoi", false, 0, 0, "", "also write the dual: BASE.v.node (circumcenters) and BASE.v.edge")
 
 // Options members that are functions: the package takes JavaScript functions, the CLI has none.
 #define RUPPERT_CALLBACK_OPTIONS(X)             \

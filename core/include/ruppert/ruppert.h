@@ -159,7 +159,7 @@ enum class Placement : std::uint8_t {
   OffCenter = 1,     // Üngör's off-centers (§6.8): fewer triangles at the same angle
   Petal = 2,         // off-centers, but where one would itself make a skinny triangle, the point of
                      // the shortest edge's petal that makes none and lies farthest from its
-                     // neighbours (after Erten and Üngör): fewer triangles still, slower without an
+                     // neighbors (after Erten and Üngör): fewer triangles still, slower without an
                      // area bound (with one it is the same as OffCenter)
   Optimal = 3,       // the default: off-centers, but where one would itself make a skinny triangle,
                      // the point that maximises the smallest angle of the triangles it makes (Erten
@@ -474,21 +474,21 @@ std::string toEdge(const Mesh& mesh);
 // triangulate() returns it: the shared nodes are found through them).
 void addQuadraticNodes(Mesh& mesh);
 
-// The dual of the mesh: one vertex per triangle (its circumcentre, which in a constrained mesh may
+// The dual of the mesh: one vertex per triangle (its circumcenter, which in a constrained mesh may
 // lie outside its triangle and even outside the domain) and one edge per mesh edge, the edges in
 // the order they first appear in mesh.triangles (triangle by triangle, edges 0, 1, 2). An interior
-// edge's dual joins the circumcentres of its two triangles; a boundary edge's dual is a ray from its
-// triangle's circumcentre along the edge's outward normal (edge b - a rotated clockwise: its length
+// edge's dual joins the circumcenters of its two triangles; a boundary edge's dual is a ray from its
+// triangle's circumcenter along the edge's outward normal (edge b - a rotated clockwise: its length
 // is the edge's). It is the Voronoi diagram of the vertices only where the mesh is Delaunay (not
 // merely constrained Delaunay). Needs mesh.neighbors, as triangulate() returns them.
 struct Voronoi {
-  std::vector<double> points;          // 2 per triangle: circumcentre x, y
+  std::vector<double> points;          // 2 per triangle: circumcenter x, y
   std::vector<std::int32_t> edges;     // 2 per mesh edge: Voronoi vertex indices; the second is -1 for a ray
   std::vector<double> rayDirections;   // 2 per mesh edge: the ray's direction, 0 0 for a finite edge
   std::vector<std::uint32_t> meshEdges;  // 2 per mesh edge: the mesh edge each dual edge crosses
 };
 Voronoi voronoiDiagram(const Mesh& mesh);
-// Triangle's .v.node (the circumcentres, no attributes or markers) and .v.edge (rays as
+// Triangle's .v.node (the circumcenters, no attributes or markers) and .v.edge (rays as
 // "<edge #> <vertex> -1 <dx> <dy>"), indices in mesh.indexBase.
 void writeVoronoiNode(std::ostream& out, const Voronoi& voronoi, const Mesh& mesh);
 void writeVoronoiEdge(std::ostream& out, const Voronoi& voronoi, const Mesh& mesh);

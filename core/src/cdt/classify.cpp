@@ -9,7 +9,7 @@
 // findDomain reports segments that enclose nothing; the pipeline (triangulate.cpp) then meshes the
 // convex hull instead and asks again. classifyTriangles records the result (MeshState::inDomain,
 // attribute, maxArea); removeOutside deletes the triangles outside the domain and clears their
-// neighbours' twins, so every boundary edge of what remains is a constrained edge.
+// neighbors' twins, so every boundary edge of what remains is a constrained edge.
 #include "cdt/classify.h"
 
 #include <algorithm>

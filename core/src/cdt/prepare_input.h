@@ -1,4 +1,4 @@
-// Validation and normalisation of a PLC before triangulation: checks, scaling, duplicates,
+// Validation and normalization of a PLC before triangulation: checks, scaling, duplicates,
 // insertion order (the result's layout: prepared_input.h).
 #pragma once
 

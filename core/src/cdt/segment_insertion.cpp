@@ -26,7 +26,7 @@ namespace {
 // A rounded crossing is off its segments by a few units in the last place of their coordinates
 // (about 2^-52 of their magnitude) and of the shorter one's length, so a point counts as on a piece
 // of a segment within 2^-48 (16 ulps) of that scale. Coarser tolerances let pieces of a cluster 1e-13
-// across turn through its neighbours (at coordinates near 1, or near a segment 10^12 times longer),
+// across turn through its neighbors (at coordinates near 1, or near a segment 10^12 times longer),
 // and the crossing repairs then looped or merged segments that only crossed. Along the segments a
 // crossing of two at a small angle can be far less accurate, so a crossing counts as at a vertex
 // within 2^-40 (internal coordinates lie within (-2, 2)) if that vertex is on the other segment.

@@ -5,7 +5,7 @@
 //     requires one) is dropped, as are repeated consecutive positions; an unclosed ring is closed.
 //     A ring needs 3 distinct positions. Positions may carry a third number (altitude): ignored.
 //   * Equal positions anywhere in the document are one point, and an edge shared by two rings (two
-//     adjacent polygons) is one segment, so neighbouring polygons mesh as one domain without notices.
+//     adjacent polygons) is one segment, so neighboring polygons mesh as one domain without notices.
 //   * The domain is the union of the polygons: what an inner ring encloses is a hole unless another
 //     polygon covers it (an island, or a polygon filling the hole, as GIS layers often have), and so
 //     is an area enclosed by polygons but covered by none (a courtyard). Each such area gets a hole

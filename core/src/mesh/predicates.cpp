@@ -28,7 +28,7 @@
 
 // The error-free transformations need every operation rounded separately: a fused multiply-add formed
 // by the compiler would silently break twoProduct and split. The build passes -ffp-contract=off; clang
-// also honours the standard pragma, which guards builds that forget the flag.
+// also honors the standard pragma, which guards builds that forget the flag.
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
 #endif

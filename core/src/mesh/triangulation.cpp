@@ -292,7 +292,7 @@ bool Triangulation::fillCavity(std::uint32_t v, const Location& loc, const std::
   if (newTris) newTris->clear();
   if (parents) parents->clear();
   // Fan of new triangles {v, u, w}: edge 0 (u->w) faces the old outside, edge 1 (w->v) and
-  // edge 2 (v->u) face the neighbouring new triangles.
+  // edge 2 (v->u) face the neighboring new triangles.
   static thread_local std::vector<std::uint32_t> made;
   made.resize(sides.size());
   // The cavity's slots are refilled last first, the slots killing them and taking free slots back

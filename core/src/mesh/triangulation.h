@@ -4,7 +4,7 @@
 // Terminology used throughout the core:
 //   triangle t   vertices tv[3t], tv[3t+1], tv[3t+2], counter-clockwise; tv[3t] == kNone: a free slot.
 //   half-edge h  3t+i: the edge of t opposite its vertex tv[3t+i], from tv[3t+(i+1)%3] to tv[3t+(i+2)%3].
-//   twin[h]      the same edge seen from the neighbouring triangle, or kNone on the mesh boundary.
+//   twin[h]      the same edge seen from the neighboring triangle, or kNone on the mesh boundary.
 //   con[h]       which constraint the edge carries: kFree, an input segment index (>= 0), or kHullEdge.
 //                Both half-edges of an edge always carry the same value.
 //   vtri[v]      some live triangle that has v as a vertex (kNone for vertices not in the mesh).
@@ -159,7 +159,7 @@ class Triangulation : public SlotRecords {
   // Takes `coordinates` (x0,y0,x1,y1,...) as the first vertices, none in the mesh yet, without
   // copying them, and reserves room for `vertices` in all.
   void adoptVertices(std::vector<double>&& coordinates, std::size_t vertices);
-  // A triangle with no neighbours and no constraints yet, in a free slot if there is one.
+  // A triangle with no neighbors and no constraints yet, in a free slot if there is one.
   std::uint32_t newTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     if (!freeSlots.empty()) {
       const std::uint32_t t = freeSlots.back();
@@ -177,7 +177,7 @@ class Triangulation : public SlotRecords {
     vtri[a] = vtri[b] = vtri[c] = t;
     return t;
   }
-  // Slot t (free, or about to be: a cavity's) becomes the triangle a, b, c with no neighbours and
+  // Slot t (free, or about to be: a cavity's) becomes the triangle a, b, c with no neighbors and
   // no constraints yet.
   std::uint32_t refillTriangle(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     TriangleSlot& r = slots_[t];

@@ -32,7 +32,7 @@ inline bool isCurrent(const Triangulation& t, const BadTriangle& e) {
 // (bound_push.h).
 // Largest first among the too-large: a triangle split at its circumcenter leaves pieces of about a
 // third of its area, so splitting the largest first lets every piece end between a third of the
-// bound and the bound, where last in, first out splits small neighbours of a fresh large piece
+// bound and the bound, where last in, first out splits small neighbors of a fresh large piece
 // again. Measured with max area = bounding box / 3000 on the 300 generated PLCs against Triangle
 // (tests/bench/results/area-bound.md): 0.981x -> 0.952x its triangles at 30 degrees, 0.926x ->
 // 0.906x at 33; a unit square at max area 1e-6 becomes the 2^20 right triangles of a grid.

@@ -20,7 +20,7 @@ struct RefineOutcome {
 RefineOutcome refine(MeshState& m);
 
 // Estimate of the integral of 1/lfs^2 over the meshed domain (§6.5), by quadrature on the mesh as it
-// stands; a vertex's lfs is taken from a neighbour's where their triangle's longest edge is under
+// stands; a vertex's lfs is taken from a neighbor's where their triangle's longest edge is under
 // reuseBelow times it (the statistics: 0.02, within 2%; the termination guard: coarser and cheaper).
 double estimateLfsIntegral(const MeshState& m, double reuseBelow = 0.02);
 

@@ -22,9 +22,9 @@ namespace ruppert::detail {
 // two spikes of a star, the mouth of a slot) has no triangles in it, so no shells are needed there,
 // and marking it would put the splits of a spike's side at midpoints instead of on its tip's shells
 // (stars: Triangle's 1.5x the boundary vertices). The value is 0 for none, else 1 + 254 cos(the
-// smallest gap) (1..255: sharper is larger), so that a split between two corners can favour the
+// smallest gap) (1..255: sharper is larger), so that a split between two corners can favor the
 // sharper (refine_split.cpp). The directions are gathered per vertex in one flat array (counting
-// sort by vertex), and the gaps are between neighbours in angular order: sorted, O(d log d) for a
+// sort by vertex), and the gaps are between neighbors in angular order: sorted, O(d log d) for a
 // vertex of degree d.
 namespace {
 
@@ -112,7 +112,7 @@ double areaDemand(const MeshState& m) {
 // The automatic budget, the guard's first checkpoint: ten thousand, plus 200 per input vertex (of
 // the 61 shared PLCs, the complete meshes at 33 and 35 degrees use at most 40 Steiner vertices per
 // input vertex once past the first ten thousand), plus 100 per crossing of two segments (stars of
-// 80 to 300 chords through a disk's centre, 3,160 to 44,850 crossings at small angles, use 30-63
+// 80 to 300 chords through a disk's center, 3,160 to 44,850 crossings at small angles, use 30-63
 // Steiner vertices per crossing at 30 and 33 degrees; 40 per crossing stopped several of them incomplete), plus eight per unit of area
 // bound (area A with triangles of area a needs about A / (2 a) vertices). Most inputs finish within
 // it, so the guard's size measure is seldom computed.
@@ -129,7 +129,7 @@ std::uint64_t automaticSteinerBudget(const MeshState& m, double demand) {
 // shared PLCs, 7.5 on three nearly collinear hull edges (artem-ogre/CDT's hanging3, 56,847
 // triangles); about half as many vertices. A refinement into a corner it cannot fix went past
 // 20,000 triangles per unit before it stopped at the precision floor. The estimate reuses a
-// neighbour's lfs within a quarter of it (25% at worst, against the factor of 15 kept in hand).
+// neighbor's lfs within a quarter of it (25% at worst, against the factor of 15 kept in hand).
 std::uint64_t nextGuardCheckpoint(const MeshState& m, double base, std::uint64_t steps, double& integral) {
   integral = estimateLfsIntegral(m, 0.25);
   const double allowance = std::min(base + kGuardStepsPerLfsUnit * integral, 4e9);

@@ -48,7 +48,7 @@ bool Refiner::placeAwayFromForbidden(const BadTriangle& bt, const double* const*
 // Where along subsegment a-b of length len it is split, as a fraction from a (§6.2, §6.6).
 double Refiner::splitFraction(std::uint32_t a, std::uint32_t b, double len) const {
   // Concentric shells: measured from an acute corner, the piece next to it gets a power-of-two
-  // length in (len/3, 2len/3], so equal pieces on neighbouring segments do not encroach each other.
+  // length in (len/3, 2len/3], so equal pieces on neighboring segments do not encroach each other.
   // Between two corners, one under kSeditiousAngle and sharper than the other, the shells are
   // measured from the sharper, at the power of two nearest half the length: every later split
   // near that corner then lies on one of its shells on both of its segments, where seditious
@@ -137,7 +137,7 @@ std::uint32_t Refiner::insertOnSubsegment(std::uint32_t h, const double* split, 
   loc.kind = Location::OnEdge;
   loc.tri = h / 3;
   loc.edge = h;
-  // The new vertex's nearest neighbour is on its cavity's boundary: the vertices facing the
+  // The new vertex's nearest neighbor is on its cavity's boundary: the vertices facing the
   // subsegment (an encroacher 1e-15 above the midpoint, say), or, when two segments meet at a tiny
   // angle, a shell split at the same distance from their common vertex on the other segment, closer
   // than doubles can keep apart (found by fuzzing, tests/hostile/shell-splits-closer-than-doubles-resolve.poly).

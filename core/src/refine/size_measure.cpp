@@ -1,6 +1,6 @@
 // The chapter's size measure (§6.5): the number of triangles of a size-optimal mesh is within constant
 // factors of the integral of 1/lfs(x)^2 over the domain, lfs being the local feature size (Def. 6.2:
-// the radius of the smallest disk centred at x that meets two disjoint features of the PLC).
+// the radius of the smallest disk centered at x that meets two disjoint features of the PLC).
 //
 // lfs is computed from the input alone, at every mesh vertex: with the features (distinct input
 // points, input segments) taken in order of distance from x, lfs(x) is the distance of the first
@@ -205,7 +205,7 @@ double subdividedIntegral(FeatureGrid& grid, const double* const p[3], const dou
 double estimateLfsIntegral(const MeshState& m, double reuseBelow) {
   const Triangulation& t = m.tri;
   FeatureGrid grid(m);
-  // Per vertex: lfs, queried or passed on from a neighbour's, and how far it may be off (the length
+  // Per vertex: lfs, queried or passed on from a neighbor's, and how far it may be off (the length
   // of the edges it was passed along: lfs is 1-Lipschitz).
   std::vector<double> lfs(t.vertexCount(), -1), slack(t.vertexCount(), 0);
   double integral = 0;

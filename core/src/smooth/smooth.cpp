@@ -34,7 +34,7 @@ constexpr double kMinGain = 1e-9;
 // Compass-search rounds after the ODT step: each tries eight points around the best so far and
 // halves its step when none gains.
 constexpr int kSearchRounds = 12;
-// A slide stays this share of the interval between its neighbours on the segment away from them.
+// A slide stays this share of the interval between its neighbors on the segment away from them.
 constexpr double kSlideMargin = 0.1;
 // The star's score per triangle (starQuality): its smallest angle, less kObtuseExcessWeight times
 // how far its largest angle exceeds 90 degrees and kObtuseCost (radians) if it does at all. The
@@ -194,7 +194,7 @@ bool Smoother::tryMove(std::uint32_t v) {
 }
 
 // A vertex refinement put on an input segment (not a curve, not a hull edge) slides along it,
-// between its neighbours on the segment, by a compass search over the position along it.
+// between its neighbors on the segment, by a compass search over the position along it.
 bool Smoother::trySlide(std::uint32_t v) {
   const std::int32_t segment = m_.onSegment[v];
   std::uint32_t ends[2];

@@ -64,11 +64,11 @@ struct Base {
   const double* v;
 };
 
-// The centre and radius of the disk of points left of uv from which uv is seen at theta or more.
-void apexDisk(const Base& b, double cotTheta, double cscTheta, double centre[2], double& radius) {
+// The center and radius of the disk of points left of uv from which uv is seen at theta or more.
+void apexDisk(const Base& b, double cotTheta, double cscTheta, double center[2], double& radius) {
   const double ex = b.v[0] - b.u[0], ey = b.v[1] - b.u[1];
-  centre[0] = (b.u[0] + b.v[0]) / 2 - ey * cotTheta / 2;
-  centre[1] = (b.u[1] + b.v[1]) / 2 + ex * cotTheta / 2;
+  center[0] = (b.u[0] + b.v[0]) / 2 - ey * cotTheta / 2;
+  center[1] = (b.u[1] + b.v[1]) / 2 + ex * cotTheta / 2;
   radius = length(ex, ey) * cscTheta / 2;
 }
 
@@ -147,12 +147,12 @@ bool mayMeetBound(const OptimalPointQuery& query, const BoundAngle& bound, doubl
   if (!cornersWideEnough(query.edges, query.edgeCount, c, s)) return false;
   if (!meetsFirstDisk(bases, count, c, s, cotTheta, cscTheta)) return false;
   // Start from the square around the first base's disk, which holds every feasible point.
-  double centre[2], radius;
-  apexDisk(bases[0], cotTheta, cscTheta, centre, radius);
+  double center[2], radius;
+  apexDisk(bases[0], cotTheta, cscTheta, center, radius);
   radius *= 1 + kMargin;
   Polygon a, b;
   const double corners[8] = {-1, -1, 1, -1, 1, 1, -1, 1};
-  for (int k = 0; k < 4; ++k) a.xy[2 * k] = centre[0] + radius * corners[2 * k], a.xy[2 * k + 1] = centre[1] + radius * corners[2 * k + 1];
+  for (int k = 0; k < 4; ++k) a.xy[2 * k] = center[0] + radius * corners[2 * k], a.xy[2 * k + 1] = center[1] + radius * corners[2 * k + 1];
   a.n = 4;
   for (int i = 0; i < count; ++i) {
     const double ex = bases[i].v[0] - bases[i].u[0], ey = bases[i].v[1] - bases[i].u[1];
@@ -166,8 +166,8 @@ bool mayMeetBound(const OptimalPointQuery& query, const BoundAngle& bound, doubl
     if (a.n == 0) return false;
   }
   for (int i = 0; i < count; ++i) {
-    apexDisk(bases[i], cotTheta, cscTheta, centre, radius);
-    if (distanceTo(a, centre) > radius * (1 + kMargin)) return false;
+    apexDisk(bases[i], cotTheta, cscTheta, center, radius);
+    if (distanceTo(a, center) > radius * (1 + kMargin)) return false;
   }
   // The mean of the polygon's vertices lies inside it (it is convex), away from its sides: where
   // every disk reaches that deep, it is a point that meets the bound.

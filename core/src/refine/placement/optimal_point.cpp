@@ -49,7 +49,7 @@ double triangleTerm(const double* u, const double* v, const double* x, double& a
 // The search only asks whether a point beats the best so far, so a point is given up on as soon as
 // one term shows it cannot: past a threshold t >= -10, a term <= t makes the score <= t (a
 // non-encroaching point scores its smallest term; an encroaching one below -10). Terms are tried
-// starting from the one that was smallest last time (neighbouring points share their worst edge),
+// starting from the one that was smallest last time (neighboring points share their worst edge),
 // which rules most losers out after one term. The answers, and so the points found, are the same
 // as scoring every term (this cut the placement's refinement time by about half).
 struct Scorer {
@@ -100,10 +100,10 @@ int petalSeeds(const double* p, const double* q, double* out) {
   const double mx = (p[0] + q[0]) / 2, my = (p[1] + q[1]) / 2;
   int n = 0;
   for (double alpha : kApex) {
-    const double radius = len / (2 * std::sin(alpha)), centre = len / (2 * std::tan(alpha));
+    const double radius = len / (2 * std::sin(alpha)), center = len / (2 * std::tan(alpha));
     const double spread = (kPi - alpha) / 3;
     for (double phi : {0.0, spread, -spread}) {
-      const double along = radius * std::sin(phi), across = centre + radius * std::cos(phi);
+      const double along = radius * std::sin(phi), across = center + radius * std::cos(phi);
       out[2 * n] = mx + along * dx - across * dy;
       out[2 * n + 1] = my + along * dy + across * dx;
       ++n;

@@ -109,9 +109,9 @@ PetalPlacement::PetalPlacement(double theta) {
     const double alpha = theta + extra;
     const double phiMax = kPi - alpha - 2 * theta;
     if (phiMax < 0) break;
-    const double radius = 1 / (2 * std::sin(alpha)), centre = 0.5 / std::tan(alpha);
+    const double radius = 1 / (2 * std::sin(alpha)), center = 0.5 / std::tan(alpha);
     for (double f : kFractions) {
-      const double along = radius * std::sin(f * phiMax), across = centre + radius * std::cos(f * phiMax);
+      const double along = radius * std::sin(f * phiMax), across = center + radius * std::cos(f * phiMax);
       petal_.push_back({along, across, std::hypot(std::fabs(along) - 0.5, across)});
     }
   }

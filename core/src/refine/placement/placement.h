@@ -82,7 +82,7 @@ struct SkinnyTriangle {
 
 // Locally better Steiner points, in the spirit of Erten and Üngör's: when the first choice would
 // itself create a skinny triangle, look in the shortest edge's petal for a point whose new
-// triangles all meet the bound, and take the one farthest from its neighbours.
+// triangles all meet the bound, and take the one farthest from its neighbors.
 class PetalPlacement {
  public:
   explicit PetalPlacement(double theta);

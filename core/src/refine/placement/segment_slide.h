@@ -14,7 +14,7 @@
 namespace ruppert::detail {
 
 // v's fan as the half-edges opposite v (counter-clockwise, open on the mesh boundary or closed)
-// into `star`, and v's neighbours along its segment into ends: false unless v lies inside exactly
+// into `star`, and v's neighbors along its segment into ends: false unless v lies inside exactly
 // one subsegment chain (two constrained edges of the same constraint at v, no other) and its fan has
 // at most 64 triangles.
 bool segmentVertexFan(const Triangulation& t, std::uint32_t v, std::vector<std::uint32_t>& star, std::uint32_t ends[2]);

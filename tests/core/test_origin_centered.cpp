@@ -1,4 +1,4 @@
-// Outlines centred on the origin: a boundary edge from (+c, y1) to (-c, y2) has its
+// Outlines centered on the origin: a boundary edge from (+c, y1) to (-c, y2) has its
 // midpoint on x = 0, rounded in y to either side of the edge. Such shapes, their mirror images and
 // their shifted copies must all refine completely and validly: a split point's nudge onto the
 // domain's side must not depend on the ulp of a coordinate that is 0.
@@ -24,11 +24,11 @@ struct Variant {
 // The outline of a seed: sizes from 40 to 1200 vertices, a hole around the origin on odd seeds.
 GeneratedPlc outlineOf(std::uint64_t seed) {
   static const std::size_t kSizes[] = {40, 120, 400, 1200};
-  return originCentredOutline(seed, kSizes[seed % 4], seed % 2 == 1);
+  return originCenteredOutline(seed, kSizes[seed % 4], seed % 2 == 1);
 }
 
 std::vector<Variant> variantsOf(const Plc& plc) {
-  return {{"centred", plc},
+  return {{"centered", plc},
           {"mirrored x -> -x", mirrored(plc, true, false)},
           {"mirrored y -> -y", mirrored(plc, false, true)},
           {"mirrored both", mirrored(plc, true, true)},
@@ -49,7 +49,7 @@ std::string reasonsOf(const Mesh& mesh) {
 
 }  // namespace
 
-TEST_CASE("outlines centred on the origin and their mirror images refine completely at 30 and 33 degrees",
+TEST_CASE("outlines centered on the origin and their mirror images refine completely at 30 and 33 degrees",
           "[origin]") {
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
     const GeneratedPlc g = outlineOf(seed);
@@ -64,7 +64,7 @@ TEST_CASE("outlines centred on the origin and their mirror images refine complet
   }
 }
 
-TEST_CASE("at 31, 32 and 35 degrees, origin-centred outlines and mirror images complete as shifted copies do",
+TEST_CASE("at 31, 32 and 35 degrees, origin-centered outlines and mirror images complete as shifted copies do",
           "[origin]") {
   for (std::uint64_t seed = 1; seed <= 8; ++seed) {
     const GeneratedPlc g = outlineOf(seed);
