@@ -50,7 +50,6 @@ Refiner::Refiner(MeshState& m, const RefinePlan& plan, LoopControl* control)
       control_(control) {
   mesh_.curveFirst = m.curves->first;
   bad_.setLargestFirst(plan.largestFirst);
-  reserveScratch();
 }
 
 // §6.2-6.3: split encroached subsegments first; then the bad triangle with the smallest shortest
@@ -75,6 +74,7 @@ RefineOutcome Refiner::run() {
       const std::uint32_t h = edgeOf(e);
       if (h == kNone || t_.con[h] == kFree) continue;
       if (!isEncroached(h) && !(t_.con[h] >= mesh_.curveFirst && curvePieceTooCoarse(h))) continue;
+      if (!scratchReserved_) reserveScratch();
       splitSubsegment(h, nullptr, nullptr);
       stop = outOfBudget();
     }
@@ -87,6 +87,7 @@ RefineOutcome Refiner::run() {
       continue;
     }
     if (!isCurrent(t_, bt)) continue;  // stale entry: the triangle is gone
+    if (!scratchReserved_) reserveScratch();
     splitTriangle(bt);
     stop = outOfBudget() || (control_ && control_->stopAfterStep(*this));
   }
@@ -110,6 +111,7 @@ void Refiner::queueEverything() {
 RUPPERT_COLD_BEGIN
 
 void Refiner::reserveScratch() {
+  scratchReserved_ = true;
   for (auto* list : {&newTris_, &parents_, &flipped_, &mendStack_, &cavityTris_, &cavityBoundary_, &splitTris_, &splitBoundary_})
     list->reserve(kScratchReserve);
   encroached_.reserve(kScratchReserve), inherit_.reserve(kScratchReserve);

@@ -101,8 +101,10 @@ class Refiner {
   void returnEarlier(MeshState&& mesh, std::uint64_t steps, std::size_t events, std::uint64_t rejected);
 
  private:
-  // Room for a typical cavity in every scratch list from the start (refiner.cpp).
+  // Room for a typical cavity in every scratch list, once, before the first step: a call whose
+  // mesh needs no step (most small inputs) makes none of these allocations.
   void reserveScratch();
+  bool scratchReserved_ = false;
   void setBound(double degrees);
   void queueEverything();
 
