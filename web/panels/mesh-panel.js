@@ -3,6 +3,7 @@
 import { EventKind } from '../../wasm/index.js';
 import { rejectedIsCircumcenter, splitShell, splitsCurve, undoMove } from '../geometry/event-geometry.js';
 import { exemptTriangles } from '../geometry/mesh-geometry.js';
+import { clearedCanvas } from '../rendering/canvas-2d.js';
 import { EVENT_KIND_LABELS, EXEMPTION_LABELS } from '../labels.js';
 
 /**
@@ -74,16 +75,7 @@ const HISTOGRAM_COLORS = { bar: '#3b5bdb', reference: '#c92a2a', bound: '#0b7285
  * (countMax, bound, boundX in CSS pixels) for tests and readers of the page.
  */
 export function drawHistogram(canvas, histogram, bound = null) {
-  const dpr = window.devicePixelRatio || 1;
-  const cssWidth = canvas.clientWidth || 320;
-  const cssHeight = canvas.clientHeight || 140;
-  if (canvas.width !== Math.round(cssWidth * dpr)) {
-    canvas.width = Math.round(cssWidth * dpr);
-    canvas.height = Math.round(cssHeight * dpr);
-  }
-  const ctx = canvas.getContext('2d');
-  ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-  ctx.clearRect(0, 0, cssWidth, cssHeight);
+  const { ctx, width: cssWidth, height: cssHeight } = clearedCanvas(canvas, 320, 140);
   ctx.font = '10px system-ui, sans-serif';
   let countMax = 0;
   if (histogram && histogram.length) {

@@ -2,6 +2,7 @@
 // smallest angles drawn over that of the same mesh unsmoothed (an outline behind the bars), and
 // each one's mean smallest angle and obtuse triangles, so that what smoothing did is seen at once.
 import { SMALLEST_ANGLE_BINS, movedVertices, smallestAngleSummary } from '../geometry/mesh-geometry.js';
+import { clearedCanvas } from '../rendering/canvas-2d.js';
 import { niceCeiling } from './mesh-panel.js';
 
 const COLORS = { after: '#3b5bdb', before: '#e8590c', bound: '#0b7285', axis: '#343a40', ground: '#f7f8fa' };
@@ -13,16 +14,7 @@ const count = (n) => n.toLocaleString('en-US');
  * axis, and the min-angle bound as a solid line. canvas.dataset keeps the count axis' top.
  */
 export function drawSmoothingHistogram(canvas, before, after, bound = null) {
-  const dpr = window.devicePixelRatio || 1;
-  const cssWidth = canvas.clientWidth || 320;
-  const cssHeight = canvas.clientHeight || 120;
-  if (canvas.width !== Math.round(cssWidth * dpr)) {
-    canvas.width = Math.round(cssWidth * dpr);
-    canvas.height = Math.round(cssHeight * dpr);
-  }
-  const ctx = canvas.getContext('2d');
-  ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-  ctx.clearRect(0, 0, cssWidth, cssHeight);
+  const { ctx, width: cssWidth, height: cssHeight } = clearedCanvas(canvas, 320, 120);
   ctx.font = '10px system-ui, sans-serif';
   const countMax = niceCeiling(Math.max(...before.histogram, ...after.histogram));
   const left = Math.max(34, Math.ceil(ctx.measureText(countMax.toLocaleString('en-US')).width) + 8);

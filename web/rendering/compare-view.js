@@ -9,6 +9,7 @@ import { boundsOf } from '../geometry/bounds.js';
 import { toMeshOptions, toPlc } from '../model/drawing.js';
 import { PLACEMENT_LABELS } from '../labels.js';
 import { minAngles } from '../geometry/mesh-geometry.js';
+import { clearedCanvas } from './canvas-2d.js';
 import { ANGLE_CLASSES, COLORS } from './colors.js';
 
 const $ = (id) => document.getElementById(id);
@@ -21,14 +22,7 @@ function angleColor(angle) {
 
 /** Draws the mesh fitted in the canvas (its CSS size), triangles by min angle, edges over them. */
 function drawMesh(canvas, mesh) {
-  const dpr = window.devicePixelRatio || 1;
-  const width = canvas.clientWidth || 300;
-  const height = canvas.clientHeight || 200;
-  canvas.width = Math.round(width * dpr);
-  canvas.height = Math.round(height * dpr);
-  const ctx = canvas.getContext('2d');
-  ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-  ctx.clearRect(0, 0, width, height);
+  const { ctx, width, height } = clearedCanvas(canvas, 300, 200);
   if (!mesh) return;
   const box = boundsOf(mesh.points);
   const scale = 0.92 * Math.min(width / Math.max(box.maxX - box.minX, 1e-12), height / Math.max(box.maxY - box.minY, 1e-12));
