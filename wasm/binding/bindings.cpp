@@ -10,7 +10,7 @@
 //   geojson_reader.cpp      the GeoJSON reader, which needs the mesher (ruppert.wasm)
 //   cli_texts.h/.cpp        the native CLI's parser and texts, for wasm/cli.js (ruppert-cli.wasm)
 //   describe.cpp            the enums' names and the tables' layout, exported to JavaScript
-//   small_blocks.cpp        operator new and delete over free lists of small blocks
+//   free_list_allocator.cpp operator new and delete over free lists of small blocks
 //   bindings.cpp            this file: test hooks
 // Each file registers its own embind functions; wasm/CMakeLists.txt says which module links which.
 #include <emscripten/bind.h>

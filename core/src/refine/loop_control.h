@@ -1,4 +1,4 @@
-// What a strategy around the refinement loop (the search above kStagedAboveDegrees, bound_search/)
+// What a strategy around the refinement loop (the search above kSearchAboveDegrees, bound_search/)
 // sees of it: the loop asks its control when the queues run dry and after every bad triangle's step,
 // and tells it when it ends. The loop itself knows nothing of stages, caps or best meshes.
 #pragma once

@@ -1,5 +1,5 @@
 // refine() (refine.h): the chapter's loop (refiner.h) once, at the bound asked for; above
-// kStagedAboveDegrees, where the bound may be out of reach (§6.8), the bound search around it
+// kSearchAboveDegrees, where the bound may be out of reach (§6.8), the bound search around it
 // (bound_search/).
 #include "refine/refine.h"
 
@@ -9,7 +9,7 @@
 namespace ruppert::detail {
 
 RefineOutcome refine(MeshState& m) {
-  if (m.options->minAngle > kStagedAboveDegrees) return searchBound(m);
+  if (m.options->minAngle > kSearchAboveDegrees) return searchBound(m);
   return Refiner(m, RefinePlan::direct(m.options->minAngle, m.options->maxSteiner)).run();
 }
 

@@ -7,7 +7,7 @@
 //   refine_insert.cpp  inserting a vertex: cavity, region data, attributes, flips that mend;
 //   refine_curve.cpp, refine_wide.cpp  curve pieces, and triangles over Options::maxAngle;
 //   refine_result.cpp  why a mesh is incomplete (RefineOutcome::reasons).
-// refine() (refine.cpp) runs the loop once, or above kStagedAboveDegrees through the bound search
+// refine() (refine.cpp) runs the loop once, or above kSearchAboveDegrees through the bound search
 // (bound_search/), a strategy that drives it through a LoopControl (loop_control.h).
 // Terminology: see refiner.cpp.
 #pragma once
@@ -59,9 +59,8 @@ class Refiner {
   bool guarded_ = false, guardStopped_ = false;
   double guardBase_ = 0, guardIntegral_ = 0;
   std::uint64_t steps_ = 0;  // steps (insertions, moves) in the mesh run() returns
-  bool cancelled_ = false, budgetHit_ = false;
-  std::uint64_t floorHits_ = 0;  // insertions refused at the precision limit
-  std::uint64_t forbiddenHits_ = 0;  // splits refused by splitForbidden()
+  bool cancelled_ = false, budgetHit_ = false, scratchReserved_ = false;
+  std::uint64_t floorHits_ = 0, forbiddenHits_ = 0;  // refused at the precision limit; by splitForbidden()
   bool refusedSplit_ = false;        // the current bad triangle's point asked for a refused split
   std::vector<EdgeRef> encroached_;
   BadTriangleQueue bad_;
@@ -79,7 +78,6 @@ class Refiner {
 
   // After run(): the steps that make the mesh returned, an earlier run's (plan_.used) included.
   std::uint64_t steps() const { return plan_.used + steps_; }
-
   RefineOutcome run();
 
   // ---- for the control (loop_control.h) -----------------------------------------------------------
@@ -101,10 +99,8 @@ class Refiner {
   void returnEarlier(MeshState&& mesh, std::uint64_t steps, std::size_t events, std::uint64_t rejected);
 
  private:
-  // Room for a typical cavity in every scratch list, once, before the first step: a call whose
-  // mesh needs no step (most small inputs) makes none of these allocations.
+  // Room for a typical cavity in every scratch list before the first step (none if none is made).
   void reserveScratch();
-  bool scratchReserved_ = false;
   void setBound(double degrees);
   void queueEverything();
 

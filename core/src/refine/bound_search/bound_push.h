@@ -1,4 +1,4 @@
-// The search for an angle bound that may be out of reach (above kStagedAboveDegrees, §6.8): its
+// The search for an angle bound that may be out of reach (above kSearchAboveDegrees, §6.8): its
 // constants, and the push's tracker of the best mesh.
 //
 // The 33-degree mesh comes first, for its size, the unit of every cap. Then the requested bound is

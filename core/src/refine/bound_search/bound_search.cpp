@@ -1,6 +1,6 @@
 // searchBound (bound_search.h): the 33-degree mesh first, then direct attempts at the requested
-// bound (directPlan), else the push from the 33-degree mesh (pushPlan); refineStaged takes that way,
-// replayStaged replays its first k steps under a smaller Steiner budget. Each run is the chapter's
+// bound (directPlan), else the push from the 33-degree mesh (pushPlan); searchOnce takes that way,
+// replaySearch replays its first k steps under a smaller Steiner budget. Each run is the chapter's
 // loop (refine/refiner.h) under a StageControl (stage_control.h).
 #include "refine/bound_search/bound_search.h"
 
@@ -35,8 +35,8 @@ std::uint64_t domainTriangles(const MeshState& m) {
   return n;
 }
 
-// Which way refineStaged went, and what replaying its first steps needs.
-struct StagedPath {
+// Which way searchOnce went, and what replaying its first steps needs.
+struct SearchPath {
   enum Branch { AsAsked, Direct, Push } branch = AsAsked;
   int attempt = 0;               // Direct: which direct attempt (directPlan)
   std::uint64_t steps = 0;       // steps (insertions, moves) of the mesh returned
@@ -45,7 +45,7 @@ struct StagedPath {
   std::uint64_t baseDomain = 0;  // ... inside the domain (the push's promise's unit)
 };
 
-// The best complete direct attempt so far (refineStaged).
+// The best complete direct attempt so far (searchOnce).
 struct DirectBest {
   bool found = false;
   std::uint64_t triangles = 0;  // live triangles
@@ -98,7 +98,7 @@ SearchRun directPlan(double requested, std::uint64_t base, int attempt, std::uin
 }
 
 // The push: from the 33-degree mesh (its steps already used), the bound raised stage by stage.
-SearchRun pushPlan(double requested, const StagedPath& path, std::uint64_t budget) {
+SearchRun pushPlan(double requested, const SearchPath& path, std::uint64_t budget) {
   SearchRun run;
   run.loop.requested = requested, run.loop.first = kReachableDegrees;
   run.loop.used = path.reachSteps, run.loop.budget = budget;
@@ -116,12 +116,12 @@ RefineOutcome afterReach(RefineOutcome reach, RefineOutcome out) {
   return out;
 }
 
-// A request above kStagedAboveDegrees (bound_push.h), with a Steiner budget of `budget` steps: the
+// A request above kSearchAboveDegrees (bound_push.h), with a Steiner budget of `budget` steps: the
 // 33-degree mesh first, for its size; then the requested bound directly, up to sixteen times that
 // size, as without stages; with the optimal placement, where that fails, directly again (three more
 // attempts, directPlan) with RefinePlan::bestBelowBound; else the push from the 33-degree mesh. The
 // way taken goes to path.
-RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path) {
+RefineOutcome searchOnce(MeshState& m, std::uint64_t budget, SearchPath& path) {
   const double requested = m.options->minAngle;
   MeshState start = m;
   Refiner reachRun(m, RefinePlan::direct(kReachableDegrees, budget));
@@ -130,7 +130,7 @@ RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path)
     m = std::move(start);
     Refiner run(m, RefinePlan::direct(requested, budget));
     RefineOutcome out = run.run();
-    path.branch = StagedPath::AsAsked, path.steps = run.steps();
+    path.branch = SearchPath::AsAsked, path.steps = run.steps();
     return out;
   }
   path.reachSteps = reachRun.steps();
@@ -156,25 +156,25 @@ RefineOutcome refineStaged(MeshState& m, std::uint64_t budget, StagedPath& path)
   }
   if (best.found) {
     m = std::move(best.mesh);
-    path.branch = StagedPath::Direct, path.attempt = best.attempt, path.steps = best.steps;
+    path.branch = SearchPath::Direct, path.attempt = best.attempt, path.steps = best.steps;
     return std::move(best.out);
   }
   start = MeshState{};  // free it before the push
   RunResult push = runLoop(m, pushPlan(requested, path, budget));
-  path.branch = StagedPath::Push, path.steps = push.steps;
+  path.branch = SearchPath::Push, path.steps = push.steps;
   return afterReach(std::move(reach), std::move(push.out));
 }
 
-// The first k steps of the way refineStaged went (with the automatic budget), from the unrefined
+// The first k steps of the way searchOnce went (with the automatic budget), from the unrefined
 // mesh m: the same plans, stopped at k.
-RefineOutcome replayStaged(MeshState& m, const StagedPath& path, std::uint64_t k) {
+RefineOutcome replaySearch(MeshState& m, const SearchPath& path, std::uint64_t k) {
   const double requested = m.options->minAngle;
   switch (path.branch) {
-    case StagedPath::AsAsked:
+    case SearchPath::AsAsked:
       return Refiner(m, RefinePlan::direct(requested, k)).run();
-    case StagedPath::Direct:
+    case SearchPath::Direct:
       return runLoop(m, directPlan(requested, path.base, path.attempt, k)).out;
-    case StagedPath::Push:
+    case SearchPath::Push:
       break;
   }
   // The 33-degree run again, judged by the requested bound where it is the result (stopped at k
@@ -192,7 +192,7 @@ RefineOutcome replayStaged(MeshState& m, const StagedPath& path, std::uint64_t k
 }  // namespace
 
 // With a budget k under the automatic one, the result is the first k steps of the automatic run's
-// (what maxSteiner gives below kStagedAboveDegrees by itself, and what the page's replay of a run
+// (what maxSteiner gives below kSearchAboveDegrees by itself, and what the page's replay of a run
 // step by step relies on): that run first, and where it took more than k steps, its way again from
 // the start, stopped at k. (Budgeting each stage instead would take another way: a 33-degree mesh
 // done within k steps and a direct attempt cut short by the budget lead to the push.)
@@ -200,15 +200,15 @@ RefineOutcome searchBound(MeshState& m) {
   const double demand = areaDemand(m);
   const std::uint64_t automatic = automaticSteinerBudget(m, demand);
   const std::uint64_t k = std::min(m.options->maxSteiner, automatic);
-  StagedPath path;
-  if (k == automatic) return refineStaged(m, m.options->maxSteiner, path);  // automatic: guarded
+  SearchPath path;
+  if (k == automatic) return searchOnce(m, m.options->maxSteiner, path);  // automatic: guarded
   // A budget of 0 inserts nothing, on every way: no need to know which.
   if (k == 0) return Refiner(m, RefinePlan::direct(m.options->minAngle, 0)).run();
   MeshState start = m;
-  RefineOutcome out = refineStaged(m, kAutoSteinerBudget, path);
+  RefineOutcome out = searchOnce(m, kAutoSteinerBudget, path);
   if (path.steps <= k) return out;
   m = std::move(start);
-  return replayStaged(m, path, k);
+  return replaySearch(m, path, k);
 }
 
 RUPPERT_COLD_END

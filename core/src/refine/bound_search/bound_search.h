@@ -1,4 +1,4 @@
-// The search for a minimum-angle bound above kStagedAboveDegrees (refine_plan.h), which may be out
+// The search for a minimum-angle bound above kSearchAboveDegrees (refine_plan.h), which may be out
 // of reach (§6.8): a strategy around the refinement loop (bound_push.h says how it goes).
 #pragma once
 
@@ -7,7 +7,7 @@
 
 namespace ruppert::detail {
 
-// m refined toward Options::minAngle (above kStagedAboveDegrees), within Options::maxSteiner.
+// m refined toward Options::minAngle (above kSearchAboveDegrees), within Options::maxSteiner.
 RefineOutcome searchBound(MeshState& m);
 
 }  // namespace ruppert::detail
