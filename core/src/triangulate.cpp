@@ -122,6 +122,7 @@ Mesh triangulate(const Plc& userPlc, const Options& options) {
   if (box) removeOutside(m);
   // After the box's outside is gone: only the domain's vertices move, within its triangles.
   if (options.smooth > 0) smoothMesh(m, options.smooth);
+  if (box || options.smooth > 0) outcome.angles.reset();  // the census saw another mesh
   if (options.sizeMeasure) outcome.lfsIntegral = estimateLfsIntegral(m);
 
   Mesh mesh = assembleOutput(m, std::move(outcome));

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "output/angle_stats.h"
+#include "mesh/angle_stats.h"
 #include "ruppert/ruppert.h"
 #include "io/text_out.h"
 

@@ -6,6 +6,8 @@
 
 namespace ruppert::detail {
 
+inline constexpr double kPi = 3.14159265358979323846;
+
 // Which edge is shortest (numbered by its opposite corner) and how long. The smallest angle lies
 // opposite the shortest edge, so shortestEdge is also the corner with the smallest angle.
 struct TriangleShape {

@@ -5,10 +5,11 @@
 #include "output/assemble_output.h"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <utility>
 
-#include "output/angle_stats.h"
+#include "mesh/angle_stats.h"
 #include "output/boundary_markers.h"
 #include "mesh/huge_pages.h"
 #include "output/jettison.h"
@@ -82,17 +83,20 @@ void writeVertices(const MeshState& m, std::uint32_t outVertices, Mesh& mesh) {
 
 }
 
-// mesh.segments, segmentIds and the angle statistics, in one pass over the slots while the
-// triangulation is whole. Labels each slot with its output triangle (kNone for a free slot).
-// boundary[s]: whether subsegment s has a triangle on one side only (for the markers).
-void scanTriangles(MeshState& m, Mesh& mesh, std::vector<std::uint8_t>& boundary) {
+// mesh.segments, segmentIds and the angle statistics (unless refinement's census has them), in one
+// pass over the slots while the triangulation is whole. Labels each slot with its output triangle
+// (kNone for a free slot). boundary[s]: whether subsegment s has a triangle on one side only (for
+// the markers).
+void scanTriangles(MeshState& m, std::optional<AngleStats>& census, Mesh& mesh, std::vector<std::uint8_t>& boundary) {
   Triangulation& t = m.tri;
   auto outIndex = [&](std::uint32_t v) { return m.outputMap[v]; };
   // The subsegments number at least the input's segments: room for those and some splits, so that
   // small meshes do not grow these lists from empty (their count is known only after this pass).
   mesh.segments.reserve(m.plc->segments.size() + 64), mesh.segmentIds.reserve(m.plc->segments.size() / 2 + 32);
   boundary.reserve(mesh.segmentIds.capacity());
-  AngleStats angles;
+  const bool measure = !census;
+  if (measure) census.emplace();
+  AngleStats& angles = *census;
   std::uint32_t count = 0;
   for (std::uint32_t s = 0; s < t.slotCount(); ++s) {
     t.prefetchCorners(s + Triangulation::kScanAhead);
@@ -110,7 +114,7 @@ void scanTriangles(MeshState& m, Mesh& mesh, std::vector<std::uint8_t>& boundary
         boundary.push_back(g == kNone || !t.alive(g / 3));  // as mesh.neighbors will say
       }
     }
-    angles.add(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2]));
+    if (measure) angles.add(t.pt(t.tv[3 * s]), t.pt(t.tv[3 * s + 1]), t.pt(t.tv[3 * s + 2]));
   }
   Stats& st = mesh.stats;
   st.angleHistogram = angles.takeHistogram();
@@ -134,8 +138,9 @@ RUPPERT_COLD_END
 
 // mesh.triangles, neighbors and triangleAttributes. The output's corners are written over the
 // triangulation's slots in place (a triangle's output index is never above its slot) and copied
-// out of the slot records, which then go; each array goes as soon as it is read.
-void writeTriangleArrays(MeshState& m, Mesh& mesh) {
+// out of the slot records, which then go; each array goes as soon as it is read. steinerShift:
+// where every Steiner vertex is in the output, the amount each one's index moves by (else kNone).
+void writeTriangleArrays(MeshState& m, std::uint32_t steinerShift, Mesh& mesh) {
   Triangulation& t = m.tri;
   const std::uint32_t slots = t.slotCount(), count = mesh.stats.triangles;
   // Regions' attributes need the labels, which go with the slots; zeros are written after them.
@@ -148,15 +153,24 @@ void writeTriangleArrays(MeshState& m, Mesh& mesh) {
   }
   reserveHuge(mesh.neighbors, 3 * std::size_t(count));
   mesh.neighbors.resize(3 * std::size_t(count));
+  // On large meshes, reading a neighbor's label or a corner's entry in the map is a cache miss
+  // apiece. Where every slot holds a triangle (refinement reuses the slots it frees: the common
+  // case) each slot is the output triangle of its own index, and where every Steiner vertex is
+  // kept (numbered in creation order after the input's points) each one's index is its own shifted:
+  // neither is read then.
+  const bool dense = count == slots;
+  const bool shifted = steinerShift != kNone;
+  const std::uint32_t firstSteiner = m.inputCount;
   // Slot o's corners are written after slot s's (o <= s) are read, and the labels are left alone.
   for (std::uint32_t s = 0; s < slots; ++s) {
-    t.prefetchNeighbors(s + Triangulation::kScanAhead);
+    if (!dense) t.prefetchNeighbors(s + Triangulation::kScanAhead);
     const std::uint32_t o = t.label(s);
     if (o == kNone) continue;
     for (std::uint32_t i = 0; i < 3; ++i) {
       const std::uint32_t g = t.twin[3 * s + i];
-      mesh.neighbors[3 * o + i] = g == kNone ? kNoNeighbor : static_cast<std::int32_t>(t.label(g / 3));
-      t.tv[3 * o + i] = m.outputMap[t.tv[3 * s + i]];
+      mesh.neighbors[3 * o + i] = g == kNone ? kNoNeighbor : static_cast<std::int32_t>(dense ? g / 3 : t.label(g / 3));
+      const std::uint32_t v = t.tv[3 * s + i];
+      t.tv[3 * o + i] = shifted && v >= firstSteiner ? v + steinerShift : m.outputMap[v];
     }
   }
   mesh.triangles = t.takeCorners(count);
@@ -184,21 +198,24 @@ void countVertexKinds(Mesh& mesh) {
 }
 
 // The public Mesh from the state, which it takes apart: vertices, attributes, triangles, counts,
-// markers and notices.
-Mesh assembleMesh(MeshState& m) {
+// markers and notices. census: the angle statistics, if refinement gathered them.
+Mesh assembleMesh(MeshState& m, std::optional<AngleStats>& census) {
   Mesh mesh;
   const Plc& plc = *m.plc;
   const std::uint32_t outVertices = numberVertices(m);
+  const std::uint32_t inputPoints = static_cast<std::uint32_t>(plc.points.size() / 2);
+  const bool everySteinerKept = outVertices - inputPoints == m.tri.vertexCount() - m.inputCount;
+  const std::uint32_t steinerShift = everySteinerKept ? inputPoints - m.inputCount : kNone;
   // Each part of the state goes once read (see writeTriangleArrays).
   std::vector<std::uint8_t> boundarySubsegment;
-  scanTriangles(m, mesh, boundarySubsegment);
+  scanTriangles(m, census, mesh, boundarySubsegment);
   if (m.options->exemptions) markExemptions(m, mesh);
   release(m.maxArea), release(m.inDomain);
   m.tri.releaseScratch();
   writeVertices(m, outVertices, mesh);
   copyAttributes(m, mesh);
   release(m.tri.xy), release(m.tri.vtri), release(m.kind), release(m.onSegment), release(m.attributes);
-  writeTriangleArrays(m, mesh);
+  writeTriangleArrays(m, steinerShift, mesh);
   countVertexKinds(mesh);
   mesh.indexBase = plc.indexBase;
   mesh.notices = std::move(m.notices);
@@ -250,7 +267,7 @@ void applyOutputOptions(const MeshState& m, Mesh& mesh) {
 }  // namespace
 
 Mesh assembleOutput(MeshState& m, RefineOutcome outcome) {
-  Mesh mesh = assembleMesh(m);
+  Mesh mesh = assembleMesh(m, outcome.angles);
   addOutcome(m, std::move(outcome), mesh);
   applyOutputOptions(m, mesh);
   return mesh;

@@ -9,7 +9,12 @@
 namespace ruppert::detail {
 
 RefineOutcome refine(MeshState& m) {
-  if (m.options->minAngle > kSearchAboveDegrees) return searchBound(m);
+  if (m.options->minAngle > kSearchAboveDegrees) {
+    // The search may put back an earlier mesh after its last census.
+    RefineOutcome outcome = searchBound(m);
+    outcome.angles.reset();
+    return outcome;
+  }
   return Refiner(m, RefinePlan::direct(m.options->minAngle, m.options->maxSteiner)).run();
 }
 

@@ -2,8 +2,10 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "mesh/angle_stats.h"
 #include "mesh_state.h"
 
 namespace ruppert::detail {
@@ -14,6 +16,10 @@ struct RefineOutcome {
   std::uint64_t rejected = 0;        // rejected circumcenters / off-centers
   double lfsIntegral = 0;
   double reachedAngle = -1;          // degrees: smallest angle the bound applies to; -1: not refined
+  // The angle statistics of the mesh as refinement left it, gathered by the last census of its
+  // triangles (which reads every corner anyway) so that output assembly need not read them all
+  // again; empty where something may change the mesh afterwards.
+  std::optional<AngleStats> angles;
 };
 
 // True when the options ask for any refinement (angle, area or size function).

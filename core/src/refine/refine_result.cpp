@@ -15,7 +15,7 @@ RUPPERT_COLD_BEGIN
 
 namespace ruppert::detail {
 
-Refiner::Unmet Refiner::countUnmet() const {
+Refiner::Unmet Refiner::countUnmet(AngleStats& angles) const {
   Unmet u;
   for (std::uint32_t s = 0; s < t_.slotCount(); ++s) {
     t_.prefetchCorners(s + Triangulation::kScanAhead);
@@ -24,6 +24,7 @@ Refiner::Unmet Refiner::countUnmet() const {
     const double bound = maxAreaAt(s);
     if (bound > 0 && q.area > bound * (1 + 1e-9)) ++u.large;
     const double* p[3] = {t_.pt(t_.tv[3 * s]), t_.pt(t_.tv[3 * s + 1]), t_.pt(t_.tv[3 * s + 2])};
+    angles.add(p[0], p[1], p[2]);
     const bool skinny = isSkinny(q);
     if (!skinny) u.minSin2 = std::min(u.minSin2, q.sin2MinAngle);
     if (!skinny && !isWide(p[0], p[1], p[2])) continue;
@@ -48,7 +49,9 @@ std::string Refiner::guardMessage(std::uint64_t unmet) const {
 
 void Refiner::finish() {
   if (stageDegrees_ != plan_.requested) setBound(plan_.requested);  // judge by the bound asked for
-  const Unmet u = countUnmet();
+  AngleStats angles;
+  const Unmet u = countUnmet(angles);
+  out_.angles = std::move(angles);
   out_.reachedAngle = std::asin(std::sqrt(u.minSin2)) * 180 / kPi;
   auto add = [&](ReasonKind k, std::uint64_t n, const std::string& msg) {
     out_.reasons.push_back(Reason{k, n, msg});

@@ -243,7 +243,8 @@ class Refiner {
     std::uint64_t nestled = 0, sedition = 0, otherSkinny = 0, large = 0, wide = 0;
     double minSin2 = 1;  // over the triangles the bound applies to
   };
-  Unmet countUnmet() const;
+  // Every triangle once: what stays unmet, and the angle statistics.
+  Unmet countUnmet(AngleStats& angles) const;
   void finish();
 };
 

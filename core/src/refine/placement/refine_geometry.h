@@ -6,9 +6,9 @@
 #include <cmath>
 #include <limits>
 
-namespace ruppert::detail {
+#include "mesh/triangle_shape.h"  // kPi
 
-inline constexpr double kPi = 3.14159265358979323846;
+namespace ruppert::detail {
 
 // Plain sqrt(x^2 + y^2) rather than hypot (several times slower, and a library call in WebAssembly):
 // internal coordinates lie within (-2, 2), so no square overflows, and every length refinement

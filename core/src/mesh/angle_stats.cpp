@@ -1,11 +1,11 @@
-#include "output/angle_stats.h"
+#include "mesh/angle_stats.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 
-#include "refine/placement/refine_geometry.h"  // kPi
+#include "mesh/triangle_shape.h"  // kPi
 
 namespace ruppert::detail {
 
