@@ -135,7 +135,7 @@ function readArrays(m, address, { fields, packedSlot }, options) {
       const address = heap[table + slot];
       // The block starts with the first packed array, empty or not.
       if (buffer === null) start = address, buffer = m.HEAPU8.slice(start, start + packedBytes).buffer;
-      if (onlyWith === null || options[onlyWith]) arrays[i] = new Type(buffer, address - start, heap[table + slot + 1]);
+      if (onlyWith === null || options[onlyWith]) arrays[i] = viewOn(Type, buffer, address - start, heap[table + slot + 1]);
     }
     return arrays;
   }
@@ -216,6 +216,17 @@ function readDerived(m, layout, mesh, options) {
   const arrays = readArrays(m, address, table, options);
   if (options.order === 2) mesh.triangles6 = arrays[table.at.triangles6];
   if (options.voronoi) mesh.voronoi = groupOf(m, table, address, arrays, 'voronoi');
+}
+
+// A typed array of `Type` over `buffer`, made by a constructor named at each site: one `new Type()`
+// seeing four constructors took a third longer for a mesh's eleven views.
+function viewOn(Type, buffer, offset, length) {
+  switch (Type) {
+    case Float64Array: return new Float64Array(buffer, offset, length);
+    case Uint32Array: return new Uint32Array(buffer, offset, length);
+    case Int32Array: return new Int32Array(buffer, offset, length);
+    default: return new Uint8Array(buffer, offset, length);
+  }
 }
 
 // The module's view of the heap for an element type (fetched after every call that may grow it).
