@@ -40,9 +40,9 @@ function nearestKey(key, known) {
  * Throws makeError(message) for the first own key of `object` not in `known`.
  * @param {string} what how the message names the object, e.g. "the input" or "regions[2]"
  */
-export function rejectUnknownKeys(object, known, what, makeError) {
+export function rejectUnknownKeys(object, known, what, makeError, knownSet = null) {
   for (const key of Object.keys(object)) {
-    if (known.includes(key)) continue;
+    if (knownSet !== null ? knownSet.has(key) : known.includes(key)) continue;
     const near = nearestKey(key, known);
     throw makeError(`${what} has an unknown key '${key}'${near ? ` (did you mean '${near}'?)` : ''}; ` +
       `the keys are ${known.join(', ')}`);
@@ -52,6 +52,7 @@ export function rejectUnknownKeys(object, known, what, makeError) {
 const MAX_UINT32 = 0xffffffff;
 const PLC_KEYS = ['points', 'segments', 'holes', 'regions', 'pointMarkers', 'segmentMarkers', 'indexBase',
   'triangles', 'triangleMaxArea', 'pointAttributes', 'attributesPerPoint', 'curves'];
+const PLC_KEY_SET = new Set(PLC_KEYS);
 const REGION_KEYS = ['x', 'y', 'attribute', 'maxArea'];
 const CURVE_KEYS = ['type', 'from', 'to', 'center', 'controls', 'marker'];
 
@@ -97,8 +98,9 @@ function tupleName(name, value, i, stride) {
 }
 
 // Any array-like of numbers -> Float64Array (a copy only when the input is not one already).
-function toFloat64(value, name, { pairs }) {
-  const at = (i) => (pairs ? coordinateName(name, i) : `${name}[${i}]`);
+// `pairs`: x, y coordinates. Messages are built only on failure (here and in toIndices), so that a
+// call's checks allocate nothing they do not return.
+function toFloat64(value, name, pairs) {
   let out;
   if (value instanceof Float64Array) {
     out = value;
@@ -108,13 +110,7 @@ function toFloat64(value, name, { pairs }) {
     out = new Float64Array(value.length);
     for (let i = 0; i < value.length; i++) {
       const v = value[i];
-      if (typeof v !== 'number') {
-        if (v === undefined && !(i in value)) throw invalid(`${at(i)} is missing (sparse array)`);
-        if (Array.isArray(v) && pairs) {
-          throw invalid(`${at(i)} is an array: ${name} must be flat [x0, y0, x1, y1, ...]`);
-        }
-        throw invalid(`${at(i)} = ${describe(v)} is not a number`);
-      }
+      if (typeof v !== 'number') throw notANumber(value, name, pairs, i);
       out[i] = v;
     }
   } else {
@@ -126,14 +122,17 @@ function toFloat64(value, name, { pairs }) {
   return out;
 }
 
+function notANumber(value, name, pairs, i) {
+  const v = value[i], at = pairs ? coordinateName(name, i) : `${name}[${i}]`;
+  if (v === undefined && !(i in value)) return invalid(`${at} is missing (sparse array)`);
+  if (Array.isArray(v) && pairs) return invalid(`${at} is an array: ${name} must be flat [x0, y0, x1, y1, ...]`);
+  return invalid(`${at} = ${describe(v)} is not a number`);
+}
+
 // Array-like of indices -> Uint32Array, each an integer in [0, limit); `stride` indices an item.
 function toIndices(value, name, limit, what, stride) {
-  const item = (i) => tupleName(name, value, i, stride);
-  const outOfRange = (i, v) => new MeshError('INDEX_OUT_OF_RANGE',
-    v < 0 ? `${item(i)}: ${v} is negative`
-      : `${item(i)}: ${v} refers to ${what} ${v}, but there are only ${limit}`);
   if (value instanceof Uint32Array) {
-    for (let i = 0; i < value.length; i++) if (value[i] >= limit) throw outOfRange(i, value[i]);
+    for (let i = 0; i < value.length; i++) if (value[i] >= limit) throw badIndex(value, name, limit, what, stride, i);
     return value;
   }
   const isTyped = isNumericTypedArray(value);
@@ -143,15 +142,24 @@ function toIndices(value, name, limit, what, stride) {
   const out = new Uint32Array(value.length);
   for (let i = 0; i < value.length; i++) {
     const v = value[i];
-    if (typeof v !== 'number') {
-      if (v === undefined && !(i in value)) throw invalid(`${item(i)}: an index is missing (sparse array)`);
-      throw invalid(`${item(i)}: ${describe(v)} is not a number`);
+    if (typeof v !== 'number' || !Number.isInteger(v) || v < 0 || v >= limit || v > MAX_UINT32) {
+      throw badIndex(value, name, limit, what, stride, i);
     }
-    if (!Number.isInteger(v)) throw invalid(`${item(i)}: ${v} is not an integer`);
-    if (v < 0 || v >= limit || v > MAX_UINT32) throw outOfRange(i, v);
     out[i] = v;
   }
   return out;
+}
+
+// Why value[i] is not an index below `limit`, naming its item ("segments[4] = (1, 2.5)").
+function badIndex(value, name, limit, what, stride, i) {
+  const v = value[i], item = tupleName(name, value, i, stride);
+  if (typeof v !== 'number') {
+    if (v === undefined && !(i in value)) return invalid(`${item}: an index is missing (sparse array)`);
+    return invalid(`${item}: ${describe(v)} is not a number`);
+  }
+  if (!Number.isInteger(v)) return invalid(`${item}: ${v} is not an integer`);
+  return new MeshError('INDEX_OUT_OF_RANGE',
+    v < 0 ? `${item}: ${v} is negative` : `${item}: ${v} refers to ${what} ${v}, but there are only ${limit}`);
 }
 
 function toMarkers(value, name) {
@@ -186,7 +194,7 @@ function oldMesh(plc, pointCount) {
     throw invalid(`triangles has length ${triangles.length}: a triangle is three point indices`);
   }
   const triangleMaxArea = plc.triangleMaxArea == null ? NO_NUMBERS
-    : toFloat64(plc.triangleMaxArea, 'triangleMaxArea', { pairs: false });
+    : toFloat64(plc.triangleMaxArea, 'triangleMaxArea', false);
   if (triangleMaxArea.length !== 0 && triangleMaxArea.length !== triangles.length / 3) {
     throw invalid(`triangleMaxArea has ${triangleMaxArea.length} entries for ${triangles.length / 3} triangles`);
   }
@@ -208,7 +216,7 @@ function checkCurves(plc) {
     const type = NAMES.curveTypes.indexOf(c.type);
     if (type < 0) throw invalid(`${at}.type = ${describe(c.type)} must be one of ${NAMES.curveTypes.map((n) => `'${n}'`).join(', ')}`);
     const key = type === 0 ? 'center' : 'controls', count = type === 0 ? 2 : 4;
-    const values = c[key] == null ? [] : toFloat64(c[key], `${at}.${key}`, { pairs: false });
+    const values = c[key] == null ? [] : toFloat64(c[key], `${at}.${key}`, false);
     if (values.length !== count) throw invalid(`${at} needs ${key}: ${count} numbers, got ${describe(c[key])}`);
     const ends = [c.from, c.to];
     ['from', 'to'].forEach((name, k) => {
@@ -229,23 +237,23 @@ export function checkPlc(plc) {
   if (plc === null || typeof plc !== 'object' || Array.isArray(plc) || ArrayBuffer.isView(plc)) {
     throw invalid(`the input must be an object { points, segments, holes, regions }, got ${describe(plc)}`);
   }
-  rejectUnknownKeys(plc, PLC_KEYS, 'the input', invalid);
+  rejectUnknownKeys(plc, PLC_KEYS, 'the input', invalid, PLC_KEY_SET);
   if (plc.points === undefined) throw invalid('the input has no "points" array');
-  const points = toFloat64(plc.points, 'points', { pairs: true });
+  const points = toFloat64(plc.points, 'points', true);
   const pointCount = points.length / 2;
   const segments = plc.segments == null ? NO_INDICES
     : toIndices(plc.segments, 'segments', pointCount, 'point', 2);
   if (segments.length % 2 !== 0) {
     throw invalid(`segments has odd length ${segments.length}: a segment is a pair of point indices`);
   }
-  const holes = plc.holes == null ? NO_NUMBERS : toFloat64(plc.holes, 'holes', { pairs: true });
+  const holes = plc.holes == null ? NO_NUMBERS : toFloat64(plc.holes, 'holes', true);
 
   let regions = NO_NUMBERS;
   if (plc.regions != null) {
     if (!Array.isArray(plc.regions)) {
       throw invalid(`regions must be an array of { x, y, attribute, maxArea }, got ${describe(plc.regions)}`);
     }
-    regions = new Float64Array(4 * plc.regions.length);
+    if (plc.regions.length > 0) regions = new Float64Array(4 * plc.regions.length);
     for (let i = 0; i < plc.regions.length; i++) {
       const r = plc.regions[i];
       if (r === null || typeof r !== 'object') {
@@ -280,7 +288,7 @@ export function checkPlc(plc) {
 // the length divided by the number of points (which must divide it).
 function checkAttributes(plc, pointCount) {
   const pointAttributes = plc.pointAttributes == null ? NO_NUMBERS
-    : toFloat64(plc.pointAttributes, 'pointAttributes', { pairs: false });
+    : toFloat64(plc.pointAttributes, 'pointAttributes', false);
   let attributesPerPoint = plc.attributesPerPoint;
   if (attributesPerPoint !== undefined &&
       (!Number.isInteger(attributesPerPoint) || attributesPerPoint < 0 || attributesPerPoint > 0xffff)) {
@@ -308,32 +316,38 @@ function badOption(message) {
   return new MeshError('INVALID_OPTION', message);
 }
 
-// A number-valued option: the wrong type (or NaN) is named as such before any range check.
-function numberOf(options, name, fallback, meaning) {
-  const v = options[name] ?? fallback;
+// A number-valued option: the wrong type (or NaN) is named as such before any range check;
+// meaning(option) says what is expected (called only for the message).
+function numberOf(options, option, fallback, meaning) {
+  const v = options[option.name] ?? fallback;
   if (typeof v !== 'number' || Number.isNaN(v)) {
-    throw badOption(`${name} = ${describe(v)} is not a number (${meaning})`);
+    throw badOption(`${option.name} = ${describe(v)} is not a number (${meaning(option)})`);
   }
   return v;
 }
 
+const boundedMeaning = ({ min, max, unit }) => `${unit} in [${min}, ${max}]`;
+const openMeaning = ({ default: fallback, min, unit }) => `an ${unit} >= ${min}; ${fallback}: no bound`;
+const countMeaning = ({ unit }) => `a count of ${unit}, or Infinity`;
+
 // A number in [min, max]; with no upper end (max null), Infinity is the default, "no bound".
-function numberOption(options, { name, default: fallback, min, max, unit }) {
+function numberOption(options, option) {
+  const { name, default: fallback, min, max, unit } = option;
   if (max !== null) {
-    const v = numberOf(options, name, fallback, `${unit} in [${min}, ${max}]`);
+    const v = numberOf(options, option, fallback, boundedMeaning);
     if (!(v >= min && v <= max)) throw badOption(`${name} = ${describe(v)} is outside [${min}, ${max}] ${unit}`);
     return v;
   }
-  const v = numberOf(options, name, fallback, `an ${unit} >= ${min}; ${fallback}: no bound`);
+  const v = numberOf(options, option, fallback, openMeaning);
   if (!(v >= min)) throw badOption(`${name} = ${describe(v)} must be >= ${min} (${fallback}: no bound)`);
   return v === Infinity ? fallback : v;
 }
 
 // A count, or Infinity (the default, null in the table) for automatic: -1 for the binding.
-function countOption(options, { name, unit }) {
-  const v = numberOf(options, name, Infinity, `a count of ${unit}, or Infinity`);
+function countOption(options, option) {
+  const v = numberOf(options, option, Infinity, countMeaning);
   if (!(v >= 0) || (v !== Infinity && (!Number.isInteger(v) || v > Number.MAX_SAFE_INTEGER))) {
-    throw badOption(`${name} = ${describe(v)} must be a non-negative integer or Infinity`);
+    throw badOption(`${option.name} = ${describe(v)} must be a non-negative integer or Infinity`);
   }
   return v === Infinity ? -1 : v;
 }
@@ -382,7 +396,9 @@ const CHECK_BY_TYPE = {
 // Every option at its default, as the checks give it: a call checks only the options it names and
 // copies the rest from here. Reading all of them from the caller's object, each by a name unknown
 // until run time, was most of the cost of this check, itself a tenth of a small mesh's call.
-const DEFAULTS = Object.freeze(Object.fromEntries(OPTIONS.map((option) => [option.name, CHECK_BY_TYPE[option.type]({}, option)])));
+// Not frozen: spreading a frozen object takes V8's slow path, about nine times the cost of the
+// fast one for these 22 keys; nothing outside this module sees DEFAULTS.
+const DEFAULTS = Object.fromEntries(OPTIONS.map((option) => [option.name, CHECK_BY_TYPE[option.type]({}, option)]));
 const OPTION_BY_NAME = new Map(OPTIONS.map((option) => [option.name, option]));
 
 /**
@@ -413,7 +429,7 @@ export function checkMesh(mesh) {
   if (mesh === null || typeof mesh !== 'object') {
     throw invalid(`expected a mesh returned by triangulate(), got ${describe(mesh)}`);
   }
-  const points = toFloat64(mesh.points ?? [], 'mesh.points', { pairs: true });
+  const points = toFloat64(mesh.points ?? [], 'mesh.points', true);
   const n = points.length / 2;
   const triangles = toIndices(mesh.triangles ?? [], 'mesh.triangles', n, 'point', 3);
   if (triangles.length % 3 !== 0) throw invalid(`mesh.triangles has length ${triangles.length}, not a multiple of 3`);
@@ -424,7 +440,7 @@ export function checkMesh(mesh) {
   const pointMarkers = toMarkers(mesh.pointMarkers, 'mesh.pointMarkers');
   const vertexKinds = mesh.vertexKinds == null ? new Uint8Array(0) : Uint8Array.from(mesh.vertexKinds);
   const triangleAttributes = mesh.triangleAttributes == null ? new Float64Array(0)
-    : toFloat64(mesh.triangleAttributes, 'mesh.triangleAttributes', { pairs: false });
+    : toFloat64(mesh.triangleAttributes, 'mesh.triangleAttributes', false);
   const indexBase = mesh.indexBase ?? 0;
   if (indexBase !== 0 && indexBase !== 1) throw invalid(`mesh.indexBase = ${describe(indexBase)} must be 0 or 1`);
   const triangles6 = mesh.triangles6 == null ? new Uint32Array(0) : toIndices(mesh.triangles6, 'mesh.triangles6', n, 'point', 6);
