@@ -22,7 +22,8 @@ void triangleAngles(const double* const* p, double angle[3]);
 class AngleStats {
  public:
   AngleStats();
-  void add(const double* p0, const double* p1, const double* p2);
+  // One copy for its two callers (refinement's census, output assembly): the module stays small.
+  [[gnu::noinline]] void add(const double* p0, const double* p1, const double* p2);
   // 180 counts; an angle of exactly 180 degrees counts in the last bin.
   const std::vector<std::uint64_t>& histogram() const { return histogram_; }
   // The histogram moved out (no copy), once every angle is in.

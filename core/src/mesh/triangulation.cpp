@@ -20,13 +20,7 @@ void Triangulation::adoptVertices(std::vector<double>&& coordinates, std::size_t
   vtri.assign(xy.size() / 2, kNone);
 }
 
-std::vector<std::uint32_t> Triangulation::takeCorners(std::uint32_t count) {
-  // Slot t's corners go to words 3t..3t+2, never past its own record's corners (from word
-  // 10t + 1), so ascending order overwrites only records already read.
-  for (std::uint32_t t = 0; t < count; ++t) {
-    const std::uint32_t a = slots_[t].tv[0], b = slots_[t].tv[1], c = slots_[t].tv[2];
-    words_[3 * std::size_t(t)] = a, words_[3 * std::size_t(t) + 1] = b, words_[3 * std::size_t(t) + 2] = c;
-  }
+std::vector<std::uint32_t> Triangulation::takeCompactCorners(std::uint32_t count) {
   words_.resize(3 * std::size_t(count));
   // The rest of the records' pages would stay the corners' capacity, unused: they go back now.
   releasePages(words_.data() + words_.size(), (words_.capacity() - words_.size()) * sizeof(std::uint32_t));

@@ -205,9 +205,20 @@ class Triangulation : public SlotRecords {
     map.reserve(vertexCount());
     return map;
   }
-  // The corners of slots 0..count-1 (3 per slot) in the records' own memory, which is handed over:
-  // every slot is gone afterwards.
-  std::vector<std::uint32_t> takeCorners(std::uint32_t count);
+  // Output's corners in the records' own memory, for a scan over the slots that compacts as it
+  // reads: it copies slot s's record out before storing output triangle o's corners (o <= s) at
+  // words 3o..3o+2, which lie in records already read; releaseReadRecords(end, count) hands back the
+  // pages of records [0, end) beyond the corners' room (3 words for each of count triangles);
+  // takeCompactCorners(count) hands the corners over, and every slot is gone afterwards.
+  void writeCompactCorners(std::uint32_t o, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    std::uint32_t* w = words_.data() + 3 * std::size_t(o);
+    w[0] = a, w[1] = b, w[2] = c;
+  }
+  void releaseReadRecords(std::uint32_t end, std::uint32_t count) {
+    const std::size_t from = 3 * std::size_t(count), to = kSlotWords * std::size_t(end);
+    if (to > from) releasePages(words_.data() + from, (to - from) * sizeof(std::uint32_t));
+  }
+  std::vector<std::uint32_t> takeCompactCorners(std::uint32_t count);
   void killTriangle(std::uint32_t t) {
     TriangleSlot& r = slots_[t];
     r.tv[0] = r.tv[1] = r.tv[2] = kNone;

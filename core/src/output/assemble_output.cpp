@@ -29,7 +29,7 @@ void copyAttributes(const MeshState& m, Mesh& mesh) {
   mesh.pointAttributes.assign(k * (mesh.points.size() / 2), 0.0);
   std::copy(plc.pointAttributes.begin(), plc.pointAttributes.begin() + k * (plc.points.size() / 2),
             mesh.pointAttributes.begin());
-  for (std::uint32_t v = m.inputCount; v < m.tri.vertexCount(); ++v) {
+  for (std::uint32_t v = m.inputCount; v < m.outputMap.size(); ++v) {  // (the coordinates may be gone)
     const std::uint32_t o = m.outputMap[v];
     if (o == kNone) continue;
     std::copy_n(m.attributes.begin() + k * v, k, mesh.pointAttributes.begin() + k * o);
@@ -39,29 +39,67 @@ void copyAttributes(const MeshState& m, Mesh& mesh) {
 // Output numbering (MeshState::outputMap): input points keep their indices (internal vertices of
 // input points are numbered in insertion order, see PreparedInput); Steiner vertices that some
 // triangle uses follow in creation order; box corners and Steiner vertices in no triangle (refused
-// insertions, or outside the domain in the bounding-box variant) are left out. Returns the count.
-std::uint32_t numberVertices(MeshState& m) {
+// insertions, or outside the domain in the bounding-box variant) are left out.
+//
+// Where the kept Steiner vertices are all those from the first kept one on (the usual case: at
+// most the box's corners, made first, are left out), a kept Steiner vertex's output index is its
+// own plus `shift` (mod 2^32), and no entry of the map need be read: on large meshes each read is a
+// cache miss.
+struct VertexNumbering {
+  std::uint32_t count = 0;      // output vertices
+  std::uint32_t firstKept = 0;  // the first kept Steiner vertex (the vertex count if none is)
+  bool shifted = false;
+  std::uint32_t shift = 0;
+  std::uint32_t of(const MeshState& m, std::uint32_t v) const {
+    return shifted && v >= m.inputCount ? v + shift : m.outputMap[v];
+  }
+};
+
+VertexNumbering numberVertices(MeshState& m) {
   const Triangulation& t = m.tri;
   const std::uint32_t inputPoints = static_cast<std::uint32_t>(m.plc->points.size() / 2);
   m.outputMap = m.tri.takeVertexScratch();
   m.outputMap.assign(t.vertexCount(), kNone);
-  std::uint32_t outVertices = inputPoints;
+  VertexNumbering n;
+  n.count = inputPoints, n.firstKept = t.vertexCount();
   for (std::uint32_t v = 0; v < t.vertexCount(); ++v) {
-    if (v < m.inputCount) m.outputMap[v] = m.input.inputIndex[v];
-    else if (t.vtri[v] != kNone && m.kind[v] != VertexKind::Unused) m.outputMap[v] = outVertices++;
+    if (v < m.inputCount) {
+      m.outputMap[v] = m.input.inputIndex[v];
+    } else if (t.vtri[v] != kNone && m.kind[v] != VertexKind::Unused) {
+      if (n.count == inputPoints) n.firstKept = v;
+      m.outputMap[v] = n.count++;
+    }
   }
-  return outVertices;
+  n.shifted = n.count - inputPoints == t.vertexCount() - n.firstKept;
+  n.shift = inputPoints - n.firstKept;
+  return n;
 }
 
-// mesh.points and vertexKinds.
-void writeVertices(const MeshState& m, std::uint32_t outVertices, Mesh& mesh) {
-  const Triangulation& t = m.tri;
+// mesh.points and vertexKinds. Where every kept Steiner vertex's output index is at or below its
+// own and above every input point's (no duplicate points beyond the left-out vertices before the
+// first kept one), the triangulation's coordinates become the points in place, rewritten in
+// ascending order: the two arrays are never held at once.
+void writeVertices(MeshState& m, const VertexNumbering& numbering, Mesh& mesh) {
+  Triangulation& t = m.tri;
   const Plc& plc = *m.plc;
   const std::uint32_t inputPoints = static_cast<std::uint32_t>(plc.points.size() / 2);
-  auto outIndex = [&](std::uint32_t v) { return m.outputMap[v]; };
-  reserveHuge(mesh.points, 2 * std::size_t(outVertices));
-  mesh.points.resize(2 * std::size_t(outVertices));
+  const std::uint32_t vertices = t.vertexCount(), outVertices = numbering.count;
+  const bool inPlace = numbering.shifted && numbering.firstKept >= inputPoints;
+  if (inPlace) {
+    mesh.points = std::move(t.xy);
+  } else {
+    reserveHuge(mesh.points, 2 * std::size_t(outVertices));
+    mesh.points.resize(2 * std::size_t(outVertices));
+  }
+  const double* xy = inPlace ? mesh.points.data() : t.xy.data();
   mesh.vertexKinds.resize(outVertices);
+  for (std::uint32_t v = numbering.shifted ? numbering.firstKept : m.inputCount; v < vertices; ++v) {
+    const std::uint32_t o = numbering.of(m, v);
+    if (o == kNone) continue;
+    mesh.points[2 * std::size_t(o)] = m.input.toUser(xy[2 * std::size_t(v)]);  // a power of two: exact
+    mesh.points[2 * std::size_t(o) + 1] = m.input.toUser(xy[2 * std::size_t(v) + 1]);
+    mesh.vertexKinds[o] = static_cast<std::uint8_t>(m.kind[v]);
+  }
   // Every input point, duplicates included, keeps its coordinates bit-identical; only the lowest index
   // of a set of identical points is an Input vertex of the mesh (if a triangle still uses it).
   for (std::uint32_t i = 0; i < inputPoints; ++i) {
@@ -73,21 +111,15 @@ void writeVertices(const MeshState& m, std::uint32_t outVertices, Mesh& mesh) {
     const VertexKind own = i >= m.curves->firstPoint ? VertexKind::SegmentSplit : VertexKind::Input;
     mesh.vertexKinds[i] = static_cast<std::uint8_t>(used ? own : VertexKind::Unused);
   }
-  for (std::uint32_t v = m.inputCount; v < t.vertexCount(); ++v) {
-    const std::uint32_t o = outIndex(v);
-    if (o == kNone) continue;
-    mesh.points[2 * std::size_t(o)] = m.input.toUser(t.xy[2 * v]);  // a power of two: exact
-    mesh.points[2 * std::size_t(o) + 1] = m.input.toUser(t.xy[2 * v + 1]);
-    mesh.vertexKinds[o] = static_cast<std::uint8_t>(m.kind[v]);
-  }
-
+  mesh.points.resize(2 * std::size_t(outVertices));  // in place: the left-out vertices' room goes
 }
 
 // mesh.segments, segmentIds and the angle statistics (unless refinement's census has them), in one
 // pass over the slots while the triangulation is whole. Labels each slot with its output triangle
 // (kNone for a free slot). boundary[s]: whether subsegment s has a triangle on one side only (for
-// the markers).
-void scanTriangles(MeshState& m, std::optional<AngleStats>& census, Mesh& mesh, std::vector<std::uint8_t>& boundary) {
+// the markers). freeSlots: the free slots, in order.
+void scanTriangles(MeshState& m, std::optional<AngleStats>& census, Mesh& mesh, std::vector<std::uint8_t>& boundary,
+                   std::vector<std::uint32_t>& freeSlots) {
   Triangulation& t = m.tri;
   auto outIndex = [&](std::uint32_t v) { return m.outputMap[v]; };
   // The subsegments number at least the input's segments: room for those and some splits, so that
@@ -99,9 +131,10 @@ void scanTriangles(MeshState& m, std::optional<AngleStats>& census, Mesh& mesh, 
   AngleStats& angles = *census;
   std::uint32_t count = 0;
   for (std::uint32_t s = 0; s < t.slotCount(); ++s) {
-    t.prefetchCorners(s + Triangulation::kScanAhead);
+    if (measure) t.prefetchCorners(s + Triangulation::kScanAhead);
     if (!t.alive(s)) {
       t.setLabel(s, kNone);
+      freeSlots.push_back(s);
       continue;
     }
     t.setLabel(s, count++);
@@ -136,11 +169,46 @@ void markExemptions(const MeshState& m, Mesh& mesh) {
 }
 RUPPERT_COLD_END
 
-// mesh.triangles, neighbors and triangleAttributes. The output's corners are written over the
-// triangulation's slots in place (a triangle's output index is never above its slot) and copied
-// out of the slot records, which then go; each array goes as soon as it is read. steinerShift:
-// where every Steiner vertex is in the output, the amount each one's index moves by (else kNone).
-void writeTriangleArrays(MeshState& m, std::uint32_t steinerShift, Mesh& mesh) {
+// Output index of slot n's triangle, or kNoNeighbor for a free slot: n less the free slots before it.
+std::int32_t triangleAfterFreeSlots(const std::vector<std::uint32_t>& freeSlots, std::uint32_t n) {
+  const auto after = std::upper_bound(freeSlots.begin(), freeSlots.end(), n);
+  if (after != freeSlots.begin() && after[-1] == n) return kNoNeighbor;
+  return static_cast<std::int32_t>(n - static_cast<std::uint32_t>(after - freeSlots.begin()));
+}
+
+// mesh.neighbors and the corners. A neighbor's index comes from the list of free slots (few: refinement
+// reuses the slots it frees, a triangulation of points leaves a handful) rather than from its
+// record, a cache miss apiece on large meshes; so the scan reads each record once, in order, and
+// can compact the corners into the records' memory and hand back the pages it leaves behind as it
+// goes: the records and the neighbors are never all held at once.
+void writeArraysCompacting(MeshState& m, const std::vector<std::uint32_t>& freeSlots, const VertexNumbering& numbering,
+                           Mesh& mesh) {
+  Triangulation& t = m.tri;
+  const std::uint32_t slots = t.slotCount(), count = mesh.stats.triangles;
+  const bool dense = freeSlots.empty();
+  auto outputVertex = [&](std::uint32_t v) { return numbering.of(m, v); };
+  constexpr std::uint32_t kReleaseEvery = 1u << 14;  // slots: 640 KB of records
+  for (std::uint32_t s = 0; s < slots; ++s) {
+    const TriangleSlot r = t.slot(s);  // a copy: writeCompactCorners may overwrite the record
+    if (r.mark != kNone) {
+      const std::uint32_t o = r.mark;
+      for (std::uint32_t i = 0; i < 3; ++i) {
+        const std::uint32_t g = r.twin[i];
+        mesh.neighbors.push_back(g == kNone ? kNoNeighbor
+                                 : dense   ? static_cast<std::int32_t>(g / 3)
+                                           : triangleAfterFreeSlots(freeSlots, g / 3));
+      }
+      t.writeCompactCorners(o, outputVertex(r.tv[0]), outputVertex(r.tv[1]), outputVertex(r.tv[2]));
+    }
+    if ((s + 1) % kReleaseEvery == 0) t.releaseReadRecords(s + 1, count);
+  }
+  mesh.triangles = t.takeCompactCorners(count);
+}
+
+// mesh.triangles, neighbors and triangleAttributes, each array of the state going as soon as it is
+// read.
+void writeTriangleArrays(MeshState& m, const std::vector<std::uint32_t>& freeSlots, const VertexNumbering& numbering,
+                         Mesh& mesh) {
   Triangulation& t = m.tri;
   const std::uint32_t slots = t.slotCount(), count = mesh.stats.triangles;
   // Regions' attributes need the labels, which go with the slots; zeros are written after them.
@@ -151,29 +219,10 @@ void writeTriangleArrays(MeshState& m, std::uint32_t steinerShift, Mesh& mesh) {
       if (t.label(s) != kNone) mesh.triangleAttributes[t.label(s)] = m.attribute[s];
     release(m.attribute);
   }
+  // Filled in order (output indices follow the slots'), not zeroed first: that would touch all
+  // of its pages while the records still hold theirs.
   reserveHuge(mesh.neighbors, 3 * std::size_t(count));
-  mesh.neighbors.resize(3 * std::size_t(count));
-  // On large meshes, reading a neighbor's label or a corner's entry in the map is a cache miss
-  // apiece. Where every slot holds a triangle (refinement reuses the slots it frees: the common
-  // case) each slot is the output triangle of its own index, and where every Steiner vertex is
-  // kept (numbered in creation order after the input's points) each one's index is its own shifted:
-  // neither is read then.
-  const bool dense = count == slots;
-  const bool shifted = steinerShift != kNone;
-  const std::uint32_t firstSteiner = m.inputCount;
-  // Slot o's corners are written after slot s's (o <= s) are read, and the labels are left alone.
-  for (std::uint32_t s = 0; s < slots; ++s) {
-    if (!dense) t.prefetchNeighbors(s + Triangulation::kScanAhead);
-    const std::uint32_t o = t.label(s);
-    if (o == kNone) continue;
-    for (std::uint32_t i = 0; i < 3; ++i) {
-      const std::uint32_t g = t.twin[3 * s + i];
-      mesh.neighbors[3 * o + i] = g == kNone ? kNoNeighbor : static_cast<std::int32_t>(dense ? g / 3 : t.label(g / 3));
-      const std::uint32_t v = t.tv[3 * s + i];
-      t.tv[3 * o + i] = shifted && v >= firstSteiner ? v + steinerShift : m.outputMap[v];
-    }
-  }
-  mesh.triangles = t.takeCorners(count);
+  writeArraysCompacting(m, freeSlots, numbering, mesh);
   if (mesh.triangleAttributes.empty()) {
     reserveHuge(mesh.triangleAttributes, count);
     mesh.triangleAttributes.assign(count, 0.0);
@@ -202,20 +251,18 @@ void countVertexKinds(Mesh& mesh) {
 Mesh assembleMesh(MeshState& m, std::optional<AngleStats>& census) {
   Mesh mesh;
   const Plc& plc = *m.plc;
-  const std::uint32_t outVertices = numberVertices(m);
-  const std::uint32_t inputPoints = static_cast<std::uint32_t>(plc.points.size() / 2);
-  const bool everySteinerKept = outVertices - inputPoints == m.tri.vertexCount() - m.inputCount;
-  const std::uint32_t steinerShift = everySteinerKept ? inputPoints - m.inputCount : kNone;
+  const VertexNumbering numbering = numberVertices(m);
   // Each part of the state goes once read (see writeTriangleArrays).
   std::vector<std::uint8_t> boundarySubsegment;
-  scanTriangles(m, census, mesh, boundarySubsegment);
+  std::vector<std::uint32_t> freeSlots;
+  scanTriangles(m, census, mesh, boundarySubsegment, freeSlots);
   if (m.options->exemptions) markExemptions(m, mesh);
   release(m.maxArea), release(m.inDomain);
   m.tri.releaseScratch();
-  writeVertices(m, outVertices, mesh);
+  writeVertices(m, numbering, mesh);
   copyAttributes(m, mesh);
   release(m.tri.xy), release(m.tri.vtri), release(m.kind), release(m.onSegment), release(m.attributes);
-  writeTriangleArrays(m, steinerShift, mesh);
+  writeTriangleArrays(m, freeSlots, numbering, mesh);
   countVertexKinds(mesh);
   mesh.indexBase = plc.indexBase;
   mesh.notices = std::move(m.notices);
