@@ -168,18 +168,6 @@ constexpr PackedSlots<N> packedSlots(const char* const (&fields)[N]) {
   return out;
 }
 
-// memcpy in pieces under 512 bytes for a small array: this Emscripten's memcpy hands a copy of 512
-// bytes or more to JavaScript (emscripten_memcpy_big, a call out of the module and back), which cost
-// more than a small mesh's whole block (the angle histogram alone is 1440 bytes). Large arrays still
-// go out in one piece, where one call costs less than many.
-void copyBytes(unsigned char* out, const unsigned char* in, std::size_t size) {
-  constexpr std::size_t kPiece = 256, kPiecewiseUpTo = 8192;
-  if (size <= kPiecewiseUpTo) {
-    for (; size > kPiece; size -= kPiece, in += kPiece, out += kPiece) std::memcpy(out, in, kPiece);
-  }
-  std::memcpy(out, in, size);
-}
-
 template <std::size_t N>
 void packTable(double* table, const PackedSlots<N>& packed, std::vector<std::uint64_t>& block) {
   const auto aligned = [](std::size_t bytes) { return (bytes + 7) & ~std::size_t(7); };
@@ -193,7 +181,7 @@ void packTable(double* table, const PackedSlots<N>& packed, std::vector<std::uin
   for (std::size_t i = 0; i < packed.count; ++i) {
     double* slot = table + packed.slot[i];
     const std::size_t size = packed.elementBytes[i] * static_cast<std::size_t>(slot[1]);
-    if (size > 0) copyBytes(out, reinterpret_cast<const unsigned char*>(static_cast<std::uintptr_t>(slot[0])), size);
+    if (size > 0) std::memcpy(out, reinterpret_cast<const void*>(static_cast<std::uintptr_t>(slot[0])), size);
     slot[0] = static_cast<double>(reinterpret_cast<std::uintptr_t>(out));
     out += aligned(size);
   }
