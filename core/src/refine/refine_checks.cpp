@@ -119,7 +119,9 @@ RUPPERT_COLD_BEGIN
 bool Refiner::extendBudget() {
   if (!guarded_ || guardStopped_) return false;
   const std::uint64_t steps = plan_.used + inserted_;
-  const std::uint64_t next = nextGuardCheckpoint(m_, guardBase_, steps, guardIntegral_);
+  measureCorners();
+  const double base = guardBase_ + kGuardStepsPerInverseRadian * inverseGaps_;
+  const std::uint64_t next = nextGuardCheckpoint(m_, base, steps, guardIntegral_);
   if (next == 0) {
     guardStopped_ = true;
     return false;

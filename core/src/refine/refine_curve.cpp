@@ -64,7 +64,7 @@ bool Refiner::splitCurvePiece(std::uint32_t h, const BadTriangle* bt, const doub
     const std::uint32_t u = side > 0 ? a : b, w = side > 0 ? b : a;
     const std::uint32_t hs = side > 0 ? h : t_.twin[h], ho = side > 0 ? t_.twin[h] : h;
     v = m_.addVertex(p[0], p[1], VertexKind::SegmentSplit, k);
-    corner_.push_back(0);
+    cornerForNewVertex();
     if (!insertBesideChord(v, u, w, hs, ho)) {
       m_.kind[v] = VertexKind::Unused;
       ++floorHits_;

@@ -128,7 +128,7 @@ void Refiner::mendDelaunay() {
 void Refiner::insertSteiner(const BadTriangle& bt, const double* target, const Location& loc, VertexKind kind, const CavityRef& known, std::optional<EventKind> placed) {
   if (!mayInsert()) return;
   const std::uint32_t v = m_.addVertex(target[0], target[1], kind, -1);
-  corner_.push_back(0);
+  cornerForNewVertex();
   if (!insertAt(v, loc, known)) {
     m_.kind[v] = VertexKind::Unused;
     ++floorHits_;

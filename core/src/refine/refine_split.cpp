@@ -45,6 +45,12 @@ bool Refiner::placeAwayFromForbidden(const BadTriangle& bt, const double* const*
   return false;
 }
 
+void Refiner::measureCorners() const {
+  if (cornersMeasured_) return;
+  corner_ = acuteCorners(m_, &inverseGaps_);
+  cornersMeasured_ = true;
+}
+
 // Where along subsegment a-b of length len it is split, as a fraction from a (§6.2, §6.6).
 double Refiner::splitFraction(std::uint32_t a, std::uint32_t b, double len) const {
   // Concentric shells: measured from an acute corner, the piece next to it gets a power-of-two
@@ -56,10 +62,11 @@ double Refiner::splitFraction(std::uint32_t a, std::uint32_t b, double len) cons
   // and a cascade of splits towards the corner (the spikes of stars: 15% fewer triangles, 0.86x;
   // shape families 0.99x, corpus triangles 0.99x in sum).
   double f = 0.5;
-  const bool ca = corner_[a] != 0, cb = corner_[b] != 0;
-  if (ca && cb && corner_[a] != corner_[b] && std::max(corner_[a], corner_[b]) >= kSeditiousCorner) {
+  const std::uint8_t corA = cornerOf(a), corB = cornerOf(b);
+  const bool ca = corA != 0, cb = corB != 0;
+  if (ca && cb && corA != corB && std::max(corA, corB) >= kSeditiousCorner) {
     const double d = std::exp2(std::round(std::log2(len / 2)));
-    f = corner_[a] > corner_[b] ? d / len : 1.0 - d / len;
+    f = corA > corB ? d / len : 1.0 - d / len;
   } else if (ca != cb) {
     const double d = std::exp2(std::floor(std::log2(2.0 * len / 3.0)));
     f = ca ? d / len : 1.0 - d / len;
@@ -150,7 +157,7 @@ std::uint32_t Refiner::insertOnSubsegment(std::uint32_t h, const double* split, 
   if (!mayInsert()) return kNone;
   const double x = split[0], y = split[1];
   const std::uint32_t v = m_.addVertex(x, y, VertexKind::SegmentSplit, segment);
-  corner_.push_back(0);
+  cornerForNewVertex();
   if ((x == pa[0] && y == pa[1]) || (x == pb[0] && y == pb[1]) || !insertAt(v, loc, {&splitTris_, &splitBoundary_})) {
     // Not placeable: the new vertex stays unused (kind Unused) so output stays consistent.
     m_.kind[v] = VertexKind::Unused;

@@ -57,13 +57,11 @@ Refiner::Refiner(MeshState& m, const RefinePlan& plan, LoopControl* control)
 // control (loop_control.h) may raise the bound when the queues run dry, stop the loop, and put an
 // earlier mesh of the run in place of the last.
 RefineOutcome Refiner::run() {
-  double inverseGaps = 0;
-  corner_ = acuteCorners(m_, &inverseGaps);
   const double demand = areaDemand(m_);
   const std::uint64_t budget = plan_.budget != kAutoSteinerBudget ? plan_.budget : automaticSteinerBudget(m_, demand);
   budget_ = budget > plan_.used ? budget - plan_.used : 0;
   guarded_ = plan_.budget == kAutoSteinerBudget;
-  guardBase_ = static_cast<double>(budget) + kGuardStepsPerInverseRadian * inverseGaps;
+  guardBase_ = static_cast<double>(budget);
   reserveForAreaBounds(m_, budget_, demand);
   queueEverything();
   bool stop = false;

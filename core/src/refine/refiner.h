@@ -57,14 +57,28 @@ class Refiner {
   // The automatic budget's checkpoints (nextGuardCheckpoint): whether this run has them, their base
   // allowance, and the size measure the last one estimated.
   bool guarded_ = false, guardStopped_ = false;
-  double guardBase_ = 0, guardIntegral_ = 0;
+  double guardBase_ = 0, guardIntegral_ = 0;  // guardBase_: before the corners' term (cornerOf)
   std::uint64_t steps_ = 0;  // steps (insertions, moves) in the mesh run() returns
   bool cancelled_ = false, budgetHit_ = false, scratchReserved_ = false;
   std::uint64_t floorHits_ = 0, forbiddenHits_ = 0;  // refused at the precision limit; by splitForbidden()
   bool refusedSplit_ = false;        // the current bad triangle's point asked for a refused split
   std::vector<EdgeRef> encroached_;
   BadTriangleQueue bad_;
-  std::vector<std::uint8_t> corner_;  // per vertex: acute input corner (concentric shells apply)
+  // Per vertex: acute input corner (concentric shells apply), and the guard's allowance for them.
+  // Measured when first needed, at the first split of a subsegment or guard checkpoint (a mesh that
+  // needs neither, small or already fine, skips the arctangents); until then no split has moved a
+  // constrained edge, so the measure is the one the loop started with.
+  mutable std::vector<std::uint8_t> corner_;
+  mutable double inverseGaps_ = 0;
+  mutable bool cornersMeasured_ = false;
+  void measureCorners() const;
+  std::uint8_t cornerOf(std::uint32_t v) const {
+    measureCorners();
+    return corner_[v];
+  }
+  void cornerForNewVertex() {
+    if (cornersMeasured_) corner_.push_back(0);
+  }
   std::vector<std::uint32_t> newTris_, parents_, flipped_, mendStack_;
   std::vector<Inherited> inherit_;
   std::vector<std::uint32_t> cavityTris_, cavityBoundary_, splitTris_, splitBoundary_;
