@@ -30,7 +30,9 @@ namespace {
 // current mark) with `value`; returns how many.
 template <class Mark>
 std::size_t flood(Triangulation& t, std::uint32_t seed, std::vector<Mark>& out, typename std::vector<Mark>::value_type value) {
-  std::vector<std::uint32_t> stack{seed};
+  std::vector<std::uint32_t> stack;
+  stack.reserve(kScratchReserve);
+  stack.push_back(seed);
   const Mark before = out[seed];
   out[seed] = value;
   std::size_t count = 1;
@@ -265,6 +267,7 @@ void removeOutside(MeshState& m) {
   // boundary edge of what remains is a constrained edge.
   Triangulation& t = m.tri;
   const std::uint32_t slots = t.slotCount();
+  t.freeSlots.reserve(kScratchReserve);  // the killed slots' list, not grown from empty by a small mesh
   for (std::uint32_t s = 0; s < slots; ++s) {
     if (!t.alive(s) || m.inDomain[s]) continue;
     for (std::uint32_t i = 0; i < 3; ++i) {

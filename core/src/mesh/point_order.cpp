@@ -29,6 +29,7 @@ constexpr std::size_t kComparisonSortBelow = 64;
 void keyedPoints(const std::vector<std::uint64_t>& keyed, std::size_t from, std::size_t to,
                  const std::vector<double>& xy, std::vector<KeyedPoint>& out) {
   out.clear();
+  out.reserve(to - from);
   for (std::size_t i = from; i < to; ++i) {
     const std::uint32_t index = static_cast<std::uint32_t>(keyed[i]);
     out.push_back({static_cast<std::uint32_t>(keyed[i] >> 32), index, xy[2 * std::size_t(index)],

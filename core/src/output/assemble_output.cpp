@@ -126,6 +126,7 @@ void scanTriangles(MeshState& m, std::optional<AngleStats>& census, Mesh& mesh, 
   // small meshes do not grow these lists from empty (their count is known only after this pass).
   mesh.segments.reserve(m.plc->segments.size() + 64), mesh.segmentIds.reserve(m.plc->segments.size() / 2 + 32);
   boundary.reserve(mesh.segmentIds.capacity());
+  freeSlots.reserve(t.freeSlots.size());  // the dead slots (a hint: the list is not grown from empty)
   const bool measure = !census;
   if (measure) census.emplace();
   AngleStats& angles = *census;
