@@ -57,7 +57,7 @@ class Refiner {
   // The automatic budget's checkpoints (nextGuardCheckpoint): whether this run has them, their base
   // allowance, and the size measure the last one estimated.
   bool guarded_ = false, guardStopped_ = false;
-  double guardBase_ = 0, guardIntegral_ = 0;  // guardBase_: before the corners' term (cornerOf)
+  double guardBase_ = 0, guardIntegral_ = 0;  // guardBase_: before the corners' term (measureCorners)
   std::uint64_t steps_ = 0;  // steps (insertions, moves) in the mesh run() returns
   bool cancelled_ = false, budgetHit_ = false, scratchReserved_ = false;
   std::uint64_t floorHits_ = 0, forbiddenHits_ = 0;  // refused at the precision limit; by splitForbidden()
